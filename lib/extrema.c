@@ -1,0 +1,202 @@
+/*
+ * Extrema of symmetry on the exact energies, with the plateau rule.
+ *
+ * Along a row the runs are found in one pass. Down the columns a small
+ * per-column state (E of the row above, where the run began, and how the
+ * run was entered) follows every column at once, so the frame is processed
+ * row by row without ever holding more than one row of energies.
+ */
+#include "symline/extrema.h"
+
+#include "symline/symmetry.h"
+#include "internal.h"
+
+symline_status symline_extrema_row(const uint32_t *E, uint32_t n, uint8_t *map)
+{
+    uint32_t a = 0u, i;
+    if (E == NULL || map == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (n == 0u || n > SYMLINE_MAX_DIM) {
+        return SYMLINE_ERR_SIZE;
+    }
+    for (i = 0; i < n; i++) {
+        map[i] = SYMLINE_MAP_NONE;
+    }
+    /* Run [a, i-1] ends where E changes; the last run touches n-1 and is never marked. */
+    for (i = 1u; i < n; i++) {
+        if (E[i] == E[a]) {
+            continue;
+        }
+        if (a >= 1u) {
+            const uint32_t mid = (a + i - 1u) / 2u;
+            if (E[a - 1u] > E[a] && E[i] > E[i - 1u]) {
+                map[mid] = SYMLINE_MAP_S;
+            } else if (E[a - 1u] < E[a] && E[i] < E[i - 1u]) {
+                map[mid] = SYMLINE_MAP_A;
+            }
+        }
+        a = i;
+    }
+    return SYMLINE_OK;
+}
+
+size_t symline_colrun_buffer_size(uint32_t width)
+{
+    if (width == 0u || width > SYMLINE_MAX_DIM) {
+        return 0u;
+    }
+    return sl_align_up((size_t)width * sizeof(uint32_t)) +
+           sl_align_up((size_t)width * sizeof(uint16_t)) + sl_align_up((size_t)width) + SL_ALIGN;
+}
+
+symline_status symline_colrun_init(symline_colrun *cr, uint32_t width, void *buf, size_t buf_size)
+{
+    uint8_t *cur, *end;
+    if (cr == NULL || buf == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (width == 0u || width > SYMLINE_MAX_DIM) {
+        return SYMLINE_ERR_SIZE;
+    }
+    cur = (uint8_t *)buf;
+    end = cur + buf_size;
+    cr->prev_e = (uint32_t *)sl_carve(&cur, end, (size_t)width * sizeof(uint32_t));
+    cr->run_start = (uint16_t *)sl_carve(&cur, end, (size_t)width * sizeof(uint16_t));
+    cr->left = (int8_t *)sl_carve(&cur, end, (size_t)width);
+    if (cr->prev_e == NULL || cr->run_start == NULL || cr->left == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    cr->width = width;
+    cr->next_y = 0u;
+    return SYMLINE_OK;
+}
+
+symline_status symline_colrun_push(symline_colrun *cr, const uint32_t *E,
+                                   symline_extremum *events, uint32_t events_cap,
+                                   uint32_t *count)
+{
+    uint32_t x, n = 0u, y;
+    if (cr == NULL || E == NULL || events == NULL || count == NULL || cr->prev_e == NULL ||
+        cr->run_start == NULL || cr->left == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (events_cap < cr->width) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    y = cr->next_y;
+    if (y >= SYMLINE_MAX_DIM) {
+        return SYMLINE_ERR_RANGE;
+    }
+    if (y == 0u) {
+        for (x = 0; x < cr->width; x++) {
+            cr->prev_e[x] = E[x];
+            cr->run_start[x] = 0u;
+            cr->left[x] = 0;
+        }
+    } else {
+        for (x = 0; x < cr->width; x++) {
+            const uint32_t e = E[x];
+            const uint32_t p = cr->prev_e[x];
+            int8_t right;
+            if (e == p) {
+                continue;
+            }
+            /* The run [run_start, y-1] ends here; right = +1 when the row below is larger. */
+            right = (e > p) ? 1 : -1;
+            if (cr->left[x] == right) {
+                events[n].x = (uint16_t)x;
+                events[n].y = (uint16_t)(((uint32_t)cr->run_start[x] + y - 1u) / 2u);
+                events[n].kind = (uint8_t)((right > 0) ? SYMLINE_MAP_S : SYMLINE_MAP_A);
+                n++;
+            }
+            /* The new run starts at y; the row above it (p) is larger when p > e. */
+            cr->left[x] = (int8_t)-right;
+            cr->run_start[x] = (uint16_t)y;
+            cr->prev_e[x] = e;
+        }
+    }
+    cr->next_y = y + 1u;
+    *count = n;
+    return SYMLINE_OK;
+}
+
+size_t symline_extrema_workspace_size(uint32_t width, uint32_t height, symline_axis axis,
+                                      uint32_t m)
+{
+    size_t n;
+    if (width == 0u || width > SYMLINE_MAX_DIM || height == 0u || height > SYMLINE_MAX_DIM ||
+        sl_check_axis(axis) != SYMLINE_OK || sl_check_radius(m) != SYMLINE_OK) {
+        return 0u;
+    }
+    n = sl_align_up((size_t)width * sizeof(uint32_t)) + SL_ALIGN;
+    if (axis == SYMLINE_AXIS_HORIZONTAL) {
+        n += symline_colrun_buffer_size(width) +
+             sl_align_up((size_t)width * sizeof(symline_extremum)) + SL_ALIGN;
+    }
+    return n;
+}
+
+symline_status symline_extrema(const symline_image *img, symline_axis axis, uint32_t m,
+                               uint8_t *map, uint32_t map_stride, size_t map_len, void *ws,
+                               size_t ws_size)
+{
+    uint8_t *cur, *end;
+    uint32_t *E, y, x;
+    symline_colrun cr;
+    symline_extremum *ev = NULL;
+    symline_status st = symline_image_check(img);
+    if (st == SYMLINE_OK) {
+        st = sl_check_axis(axis);
+    }
+    if (st == SYMLINE_OK) {
+        st = sl_check_radius(m);
+    }
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (map == NULL || ws == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    st = sl_check_plane(img->width, img->height, map_stride, map_len);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    cur = (uint8_t *)ws;
+    end = cur + ws_size;
+    E = (uint32_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint32_t));
+    if (E == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    if (axis == SYMLINE_AXIS_VERTICAL) {
+        for (y = 0; y < img->height; y++) {
+            (void)symline_energy_row(img->data + (size_t)y * img->stride, img->width, m, E);
+            (void)symline_extrema_row(E, img->width, map + (size_t)y * map_stride);
+        }
+        return SYMLINE_OK;
+    }
+    {
+        const size_t cr_bytes = symline_colrun_buffer_size(img->width);
+        void *cr_buf = sl_carve(&cur, end, cr_bytes);
+        ev = (symline_extremum *)sl_carve(&cur, end,
+                                          (size_t)img->width * sizeof(symline_extremum));
+        if (cr_buf == NULL || ev == NULL) {
+            return SYMLINE_ERR_BUFFER;
+        }
+        (void)symline_colrun_init(&cr, img->width, cr_buf, cr_bytes);
+    }
+    for (y = 0; y < img->height; y++) {
+        uint32_t count = 0u, k;
+        uint8_t *row = map + (size_t)y * map_stride;
+        (void)symline_energy_across_image(img, y, m, E);
+        for (x = 0; x < img->width; x++) {
+            row[x] = SYMLINE_MAP_NONE;
+        }
+        (void)symline_colrun_push(&cr, E, ev, img->width, &count);
+        /* Events always lie in rows already written (y-1 and above). */
+        for (k = 0; k < count; k++) {
+            map[(size_t)ev[k].y * map_stride + ev[k].x] = ev[k].kind;
+        }
+    }
+    return SYMLINE_OK;
+}

@@ -1,0 +1,260 @@
+/*
+ * The reflective symmetry operator: exact energies E and the 8-bit image S8.
+ *
+ * Loops run over whole rows with the pair offset j outside, so the inner
+ * loop is a plain lane-wise multiply-accumulate the compiler vectorises
+ * (uint8 loads widened to 32-bit lanes).
+ */
+#include "symline/symmetry.h"
+
+#include "internal.h"
+
+uint32_t symline_emax(uint32_t m)
+{
+    if (sl_check_radius(m) != SYMLINE_OK) {
+        return 0u;
+    }
+    return SL_DMAX2 * (m * (m + 1u) / 2u);
+}
+
+/* sum_{j=k+1..m} (m+1-j) * 255^2: what the pairs beyond the border add. */
+static uint32_t border_energy(uint32_t m, uint32_t k)
+{
+    uint32_t t;
+    if (k >= m) {
+        return 0u;
+    }
+    t = m - k;
+    return SL_DMAX2 * (t * (t + 1u) / 2u);
+}
+
+/* E[x] += w * (a[x] - b[x])^2 over a row; the vectorised hot loop. */
+static void add_pair(const uint8_t *a, const uint8_t *b, uint32_t w, uint32_t count,
+                     uint32_t *E)
+{
+    uint32_t x;
+    for (x = 0; x < count; x++) {
+        int32_t d = (int32_t)a[x] - (int32_t)b[x];
+        E[x] += w * (uint32_t)(d * d);
+    }
+}
+
+static void fill(uint32_t *E, uint32_t count, uint32_t value)
+{
+    uint32_t x;
+    for (x = 0; x < count; x++) {
+        E[x] = value;
+    }
+}
+
+symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
+{
+    uint32_t i, j;
+    if (q == NULL || E == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (n == 0u || n > SYMLINE_MAX_DIM) {
+        return SYMLINE_ERR_SIZE;
+    }
+    if (sl_check_radius(m) != SYMLINE_OK) {
+        return SYMLINE_ERR_RADIUS;
+    }
+    /* Border term: pairs j > min(i, n-1-i) leave the row. Nonzero only within m of a border. */
+    for (i = 0; i < n; i++) {
+        const uint32_t k = (i < n - 1u - i) ? i : n - 1u - i;
+        E[i] = border_energy(m, k);
+    }
+    /* In-image pairs: for offset j, indices j .. n-1-j have both partners. */
+    for (j = 1u; j <= m && 2u * j < n; j++) {
+        add_pair(q, q + 2u * j, m + 1u - j, n - 2u * j, E + j);
+    }
+    return SYMLINE_OK;
+}
+
+symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width,
+                                     uint32_t *E)
+{
+    uint32_t j, border = 0u;
+    if (rows == NULL || E == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (sl_check_radius(m) != SYMLINE_OK) {
+        return SYMLINE_ERR_RADIUS;
+    }
+    if (rows[m] == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (width == 0u || width > SYMLINE_MAX_DIM) {
+        return SYMLINE_ERR_SIZE;
+    }
+    /* A pair with a partner outside the image adds the same 255^2 to every column. */
+    for (j = 1u; j <= m; j++) {
+        if (rows[m - j] == NULL || rows[m + j] == NULL) {
+            border += (m + 1u - j) * SL_DMAX2;
+        }
+    }
+    fill(E, width, border);
+    for (j = 1u; j <= m; j++) {
+        if (rows[m - j] != NULL && rows[m + j] != NULL) {
+            add_pair(rows[m - j], rows[m + j], m + 1u - j, width, E);
+        }
+    }
+    return SYMLINE_OK;
+}
+
+symline_status symline_energy_across_image(const symline_image *img, uint32_t y, uint32_t m,
+                                           uint32_t *E)
+{
+    uint32_t j, border = 0u;
+    symline_status st = symline_image_check(img);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (E == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (sl_check_radius(m) != SYMLINE_OK) {
+        return SYMLINE_ERR_RADIUS;
+    }
+    if (y >= img->height) {
+        return SYMLINE_ERR_RANGE;
+    }
+    /* Same sum as symline_energy_across(), with the rows taken from the frame
+     * directly so no pointer window (up to 511 entries) has to live on the stack. */
+    for (j = 1u; j <= m; j++) {
+        if (j > y || y + j >= img->height) {
+            border += (m + 1u - j) * SL_DMAX2;
+        }
+    }
+    fill(E, img->width, border);
+    for (j = 1u; j <= m && j <= y && y + j < img->height; j++) {
+        add_pair(img->data + (size_t)(y - j) * img->stride,
+                 img->data + (size_t)(y + j) * img->stride, m + 1u - j, img->width, E);
+    }
+    return SYMLINE_OK;
+}
+
+symline_status symline_s8_row(const uint32_t *E, uint32_t n, uint32_t m, uint8_t *out)
+{
+    uint32_t i;
+    const uint32_t emax = symline_emax(m);
+    if (E == NULL || out == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (emax == 0u) {
+        return SYMLINE_ERR_RADIUS;
+    }
+    if (n == 0u || n > SYMLINE_MAX_DIM) {
+        return SYMLINE_ERR_SIZE;
+    }
+    for (i = 0; i < n; i++) {
+        if (E[i] > emax) {
+            return SYMLINE_ERR_RANGE;
+        }
+    }
+    if (emax <= UINT32_MAX / 511u) {
+        /* m <= 15: 511*Emax fits 32 bits, no 64-bit division needed. */
+        const uint32_t den = 2u * emax;
+        for (i = 0; i < n; i++) {
+            out[i] = (uint8_t)((510u * (emax - E[i]) + emax) / den);
+        }
+    } else {
+        const uint64_t den = 2u * (uint64_t)emax;
+        for (i = 0; i < n; i++) {
+            out[i] = (uint8_t)((510u * (uint64_t)(emax - E[i]) + emax) / den);
+        }
+    }
+    return SYMLINE_OK;
+}
+
+/* Energies of row y for either axis into E (width elements). */
+static symline_status energy_of_row(const symline_image *img, symline_axis axis, uint32_t m,
+                                    uint32_t y, uint32_t *E)
+{
+    if (axis == SYMLINE_AXIS_VERTICAL) {
+        return symline_energy_row(img->data + (size_t)y * img->stride, img->width, m, E);
+    }
+    return symline_energy_across_image(img, y, m, E);
+}
+
+static symline_status check_frame_args(const symline_image *img, symline_axis axis, uint32_t m)
+{
+    symline_status st = symline_image_check(img);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    st = sl_check_axis(axis);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    return sl_check_radius(m);
+}
+
+symline_status symline_energy_frame(const symline_image *img, symline_axis axis, uint32_t m,
+                                    uint32_t *E, uint32_t e_stride, size_t e_len)
+{
+    uint32_t y;
+    symline_status st = check_frame_args(img, axis, m);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (E == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    st = sl_check_plane(img->width, img->height, e_stride, e_len);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    for (y = 0; y < img->height; y++) {
+        st = energy_of_row(img, axis, m, y, E + (size_t)y * e_stride);
+        if (st != SYMLINE_OK) {
+            return st;
+        }
+    }
+    return SYMLINE_OK;
+}
+
+size_t symline_symmetry_workspace_size(uint32_t width, uint32_t height, symline_axis axis,
+                                       uint32_t m)
+{
+    if (width == 0u || width > SYMLINE_MAX_DIM || height == 0u || height > SYMLINE_MAX_DIM ||
+        sl_check_axis(axis) != SYMLINE_OK || sl_check_radius(m) != SYMLINE_OK) {
+        return 0u;
+    }
+    return sl_align_up((size_t)width * sizeof(uint32_t)) + SL_ALIGN;
+}
+
+symline_status symline_symmetry(const symline_image *img, symline_axis axis, uint32_t m,
+                                uint8_t *out, uint32_t out_stride, size_t out_len, void *ws,
+                                size_t ws_size)
+{
+    uint8_t *cur, *end;
+    uint32_t *E, y;
+    symline_status st = check_frame_args(img, axis, m);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (out == NULL || ws == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    st = sl_check_plane(img->width, img->height, out_stride, out_len);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    cur = (uint8_t *)ws;
+    end = cur + ws_size;
+    E = (uint32_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint32_t));
+    if (E == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    for (y = 0; y < img->height; y++) {
+        st = energy_of_row(img, axis, m, y, E);
+        if (st == SYMLINE_OK) {
+            st = symline_s8_row(E, img->width, m, out + (size_t)y * out_stride);
+        }
+        if (st != SYMLINE_OK) {
+            return st;
+        }
+    }
+    return SYMLINE_OK;
+}

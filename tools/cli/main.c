@@ -1,0 +1,109 @@
+/*
+ * symline — host command line tool.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+int cli_error(const char *fmt, ...)
+{
+    va_list ap;
+    fputs("symline: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return CLI_USAGE;
+}
+
+int cli_parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out)
+{
+    char *end;
+    unsigned long v;
+    if (s == NULL || *s < '0' || *s > '9') {
+        return -1;
+    }
+    v = strtoul(s, &end, 10);
+    if (*end != '\0' || v < lo || v > hi) {
+        return -1;
+    }
+    *out = (uint32_t)v;
+    return 0;
+}
+
+int cli_parse_axis(const char *s, symline_axis *axis)
+{
+    if (s != NULL && strcmp(s, "horizontal") == 0) {
+        *axis = SYMLINE_AXIS_HORIZONTAL;
+        return 0;
+    }
+    if (s != NULL && strcmp(s, "vertical") == 0) {
+        *axis = SYMLINE_AXIS_VERTICAL;
+        return 0;
+    }
+    return -1;
+}
+
+const char *cli_axis_name(symline_axis axis)
+{
+    return axis == SYMLINE_AXIS_VERTICAL ? "vertical" : "horizontal";
+}
+
+static void usage(FILE *f)
+{
+    fputs("usage: symline COMMAND [options] ...\n"
+          "\n"
+          "Commands:\n"
+          "  symmetry --axis horizontal|vertical --radius M IN OUT\n"
+          "      write the 8-bit symmetry image S8 (255 = perfect mirror symmetry)\n"
+          "  extrema  --axis horizontal|vertical --radius M IN OUT\n"
+          "      write the extrema map: 0 nothing, 128 A point (asymmetry), 255 S point\n"
+#ifdef SYMLINE_CLI_LINES
+          "  lines    [--axis horizontal|vertical|both] [--radius M] [options] IN\n"
+          "      print the detected line segments as JSON on stdout\n"
+          "  overlay  [same options as lines] IN OUT.png\n"
+          "      draw lines (solid) and curves (dotted) over the frame\n"
+#endif
+          "\n"
+          "Axis: 'horizontal' = symmetry about a horizontal axis, computed along columns\n"
+          "(finds near-horizontal lines); 'vertical' = about a vertical axis, along rows.\n"
+          "Radius M: 1..255. Images: binary PGM (P5, maxval 255); PNG when built with\n"
+          "libpng (colour is converted to luma Y = (299R + 587G + 114B + 500) / 1000).\n"
+          "OUT is written as PNG when its name ends in .png, otherwise as PGM.\n"
+          "Run 'symline COMMAND --help' for a command's options.\n"
+          "\n"
+          "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n",
+          f);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return CLI_USAGE;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
+        strcmp(argv[1], "help") == 0) {
+        usage(stdout);
+        return CLI_OK;
+    }
+    if (strcmp(argv[1], "symmetry") == 0) {
+        return cmd_symmetry(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "extrema") == 0) {
+        return cmd_extrema(argc - 1, argv + 1);
+    }
+#ifdef SYMLINE_CLI_LINES
+    if (strcmp(argv[1], "lines") == 0) {
+        return cmd_lines(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "overlay") == 0) {
+        return cmd_overlay(argc - 1, argv + 1);
+    }
+#endif
+    cli_error("unknown command '%s' (try 'symline --help')", argv[1]);
+    return CLI_USAGE;
+}

@@ -1,0 +1,424 @@
+/*
+ * PGM and PNG reading and writing for the host tools.
+ */
+#include "imgio.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef SYMLINE_HAVE_PNG
+#include <png.h>
+#endif
+
+static int fail(char *err, size_t errlen, const char *fmt, ...)
+{
+    va_list ap;
+    if (err != NULL && errlen > 0) {
+        va_start(ap, fmt);
+        vsnprintf(err, errlen, fmt, ap);
+        va_end(ap);
+    }
+    return -1;
+}
+
+int imgio_have_png(void)
+{
+#ifdef SYMLINE_HAVE_PNG
+    return 1;
+#else
+    return 0;
+#endif
+}
+
+int imgio_is_png_name(const char *path)
+{
+    size_t n = strlen(path);
+    const char *ext = ".png";
+    size_t i;
+    if (n < 4) {
+        return 0;
+    }
+    for (i = 0; i < 4; i++) {
+        char c = path[n - 4 + i];
+        if (c >= 'A' && c <= 'Z') {
+            c = (char)(c - 'A' + 'a');
+        }
+        if (c != ext[i]) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+void imgio_free(imgio_gray *img)
+{
+    if (img != NULL) {
+        free(img->px);
+        img->px = NULL;
+    }
+}
+
+void imgio_free_rgb(imgio_rgb *img)
+{
+    if (img != NULL) {
+        free(img->px);
+        img->px = NULL;
+    }
+}
+
+/* Skips white space and '#' comments in a PNM header. */
+static size_t skip_space(const uint8_t *buf, size_t len, size_t i)
+{
+    while (i < len) {
+        if (buf[i] == '#') {
+            while (i < len && buf[i] != '\n' && buf[i] != '\r') {
+                i++;
+            }
+        } else if (buf[i] == ' ' || buf[i] == '\t' || buf[i] == '\n' || buf[i] == '\r' ||
+                   buf[i] == '\v' || buf[i] == '\f') {
+            i++;
+        } else {
+            break;
+        }
+    }
+    return i;
+}
+
+static int read_uint(const uint8_t *buf, size_t len, size_t *pos, unsigned long *out)
+{
+    size_t i = skip_space(buf, len, *pos);
+    unsigned long v = 0;
+    int digits = 0;
+    while (i < len && buf[i] >= '0' && buf[i] <= '9') {
+        if (v > 100000000ul) {
+            return -1;
+        }
+        v = v * 10ul + (unsigned long)(buf[i] - '0');
+        i++;
+        digits++;
+    }
+    if (digits == 0) {
+        return -1;
+    }
+    *pos = i;
+    *out = v;
+    return 0;
+}
+
+int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray *img, char *err,
+                    size_t errlen)
+{
+    size_t pos = 2;
+    unsigned long w, h, maxval;
+    size_t need;
+    if (len < 2 || buf[0] != 'P') {
+        return fail(err, errlen, "%s: not a PGM or PNG file", name);
+    }
+    switch (buf[1]) {
+    case '5': break;
+    case '2': return fail(err, errlen, "%s: ASCII PGM (P2) is not supported; use binary PGM (P5)", name);
+    case '6':
+    case '3': return fail(err, errlen, "%s: colour PPM (P%c) is not supported; use 8-bit gray PGM (P5) or PNG", name, buf[1]);
+    case '1':
+    case '4': return fail(err, errlen, "%s: bitmap PBM (P%c) is not supported; use 8-bit gray PGM (P5)", name, buf[1]);
+    default: return fail(err, errlen, "%s: not a PGM file (magic P%c)", name, buf[1]);
+    }
+    if (read_uint(buf, len, &pos, &w) != 0 || read_uint(buf, len, &pos, &h) != 0 ||
+        read_uint(buf, len, &pos, &maxval) != 0) {
+        return fail(err, errlen, "%s: malformed PGM header", name);
+    }
+    if (maxval != 255ul) {
+        return fail(err, errlen, "%s: PGM maxval is %lu; only 8-bit PGM (maxval 255) is supported",
+                    name, maxval);
+    }
+    if (w == 0 || h == 0 || w > 65535ul || h > 65535ul) {
+        return fail(err, errlen, "%s: image size %lux%lu outside 1..65535", name, w, h);
+    }
+    /* Exactly one white-space byte separates the header from the pixels. */
+    if (pos >= len || !(buf[pos] == ' ' || buf[pos] == '\t' || buf[pos] == '\n' ||
+                        buf[pos] == '\r')) {
+        return fail(err, errlen, "%s: malformed PGM header", name);
+    }
+    pos++;
+    need = (size_t)w * (size_t)h;
+    if (len - pos < need) {
+        return fail(err, errlen, "%s: truncated PGM data (%zu of %zu pixel bytes)", name,
+                    len - pos, need);
+    }
+    img->px = (uint8_t *)malloc(need);
+    if (img->px == NULL) {
+        return fail(err, errlen, "%s: out of memory", name);
+    }
+    memcpy(img->px, buf + pos, need);
+    img->width = (uint32_t)w;
+    img->height = (uint32_t)h;
+    return 0;
+}
+
+static int slurp(const char *path, uint8_t **out, size_t *outlen, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    uint8_t *buf = NULL;
+    size_t len = 0, cap = 0;
+    if (f == NULL) {
+        return fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+    }
+    for (;;) {
+        size_t got;
+        if (cap - len < 65536) {
+            size_t ncap = cap ? cap * 2 : 1u << 20;
+            uint8_t *nb = (uint8_t *)realloc(buf, ncap);
+            if (nb == NULL) {
+                free(buf);
+                fclose(f);
+                return fail(err, errlen, "%s: out of memory", path);
+            }
+            buf = nb;
+            cap = ncap;
+        }
+        got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        if (got == 0) {
+            break;
+        }
+    }
+    if (ferror(f)) {
+        int e = errno;
+        free(buf);
+        fclose(f);
+        return fail(err, errlen, "%s: read error: %s", path, strerror(e));
+    }
+    fclose(f);
+    *out = buf;
+    *outlen = len;
+    return 0;
+}
+
+#ifdef SYMLINE_HAVE_PNG
+typedef struct png_mem {
+    const uint8_t *buf;
+    size_t len, pos;
+} png_mem;
+
+static void png_mem_read(png_structp png, png_bytep out, png_size_t n)
+{
+    png_mem *m = (png_mem *)png_get_io_ptr(png);
+    if (m->len - m->pos < n) {
+        png_error(png, "truncated PNG data");
+    }
+    memcpy(out, m->buf + m->pos, n);
+    m->pos += n;
+}
+
+static char png_msg[200];
+
+static void png_on_error(png_structp png, png_const_charp msg)
+{
+    snprintf(png_msg, sizeof png_msg, "%s", msg);
+    png_longjmp(png, 1);
+}
+
+static void png_on_warning(png_structp png, png_const_charp msg)
+{
+    (void)png;
+    (void)msg;
+}
+
+static int parse_png(const uint8_t *buf, size_t len, const char *name, imgio_gray *img, char *err,
+                     size_t errlen)
+{
+    png_structp png;
+    png_infop info;
+    png_mem mem = {buf, len, 0};
+    uint8_t *rgb = NULL;
+    png_bytep *rows = NULL;
+    uint32_t w, h, x, y;
+    int channels, ctype;
+    volatile int ok = -1;
+
+    png = png_create_read_struct(PNG_LIBPNG_VER_STRING, NULL, png_on_error, png_on_warning);
+    if (png == NULL) {
+        return fail(err, errlen, "%s: out of memory", name);
+    }
+    info = png_create_info_struct(png);
+    if (info == NULL) {
+        png_destroy_read_struct(&png, NULL, NULL);
+        return fail(err, errlen, "%s: out of memory", name);
+    }
+    img->px = NULL;
+    if (setjmp(png_jmpbuf(png))) {
+        free(rows);
+        free(rgb);
+        imgio_free(img);
+        png_destroy_read_struct(&png, &info, NULL);
+        return fail(err, errlen, "%s: unsupported or damaged PNG: %s", name, png_msg);
+    }
+    png_set_read_fn(png, &mem, png_mem_read);
+    png_read_info(png, info);
+    w = png_get_image_width(png, info);
+    h = png_get_image_height(png, info);
+    if (w == 0 || h == 0 || w > 65535u || h > 65535u) {
+        png_destroy_read_struct(&png, &info, NULL);
+        return fail(err, errlen, "%s: image size %ux%u outside 1..65535", name, w, h);
+    }
+    ctype = png_get_color_type(png, info);
+    png_set_strip_16(png);
+    png_set_strip_alpha(png);
+    png_set_packing(png);
+    if (ctype == PNG_COLOR_TYPE_PALETTE) {
+        png_set_palette_to_rgb(png);
+    }
+    if (ctype == PNG_COLOR_TYPE_GRAY && png_get_bit_depth(png, info) < 8) {
+        png_set_expand_gray_1_2_4_to_8(png);
+    }
+    (void)png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    channels = png_get_channels(png, info);
+    if (channels != 1 && channels != 3) {
+        png_error(png, "unexpected channel count");
+    }
+    rgb = (uint8_t *)malloc((size_t)w * h * (size_t)channels);
+    rows = (png_bytep *)malloc(sizeof(png_bytep) * h);
+    img->px = (uint8_t *)malloc((size_t)w * h);
+    if (rgb == NULL || rows == NULL || img->px == NULL) {
+        png_error(png, "out of memory");
+    }
+    for (y = 0; y < h; y++) {
+        rows[y] = rgb + (size_t)y * w * (size_t)channels;
+    }
+    png_read_image(png, rows);
+    for (y = 0; y < h; y++) {
+        const uint8_t *s = rows[y];
+        uint8_t *d = img->px + (size_t)y * w;
+        for (x = 0; x < w; x++) {
+            if (channels == 1) {
+                d[x] = s[x];
+            } else {
+                const uint32_t r = s[3 * x], g = s[3 * x + 1], b = s[3 * x + 2];
+                d[x] = (uint8_t)((299u * r + 587u * g + 114u * b + 500u) / 1000u);
+            }
+        }
+    }
+    img->width = w;
+    img->height = h;
+    ok = 0;
+    free(rows);
+    free(rgb);
+    png_destroy_read_struct(&png, &info, NULL);
+    return ok;
+}
+#endif
+
+int imgio_read_gray(const char *path, imgio_gray *img, char *err, size_t errlen)
+{
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    int rc;
+    static const uint8_t sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    img->px = NULL;
+    if (slurp(path, &buf, &len, err, errlen) != 0) {
+        return -1;
+    }
+    if (len >= 8 && memcmp(buf, sig, 8) == 0) {
+#ifdef SYMLINE_HAVE_PNG
+        rc = parse_png(buf, len, path, img, err, errlen);
+#else
+        rc = fail(err, errlen, "%s: PNG input needs a build with libpng; use PGM (P5)", path);
+#endif
+    } else if (len == 0) {
+        rc = fail(err, errlen, "%s: empty file", path);
+    } else {
+        rc = imgio_parse_pgm(buf, len, path, img, err, errlen);
+    }
+    free(buf);
+    return rc;
+}
+
+#ifdef SYMLINE_HAVE_PNG
+static int write_png(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
+                     size_t stride, int color, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "wb");
+    png_structp png;
+    png_infop info;
+    uint32_t y;
+    if (f == NULL) {
+        return fail(err, errlen, "%s: cannot create: %s", path, strerror(errno));
+    }
+    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, png_on_error, png_on_warning);
+    info = png ? png_create_info_struct(png) : NULL;
+    if (png == NULL || info == NULL) {
+        png_destroy_write_struct(&png, NULL);
+        fclose(f);
+        return fail(err, errlen, "%s: out of memory", path);
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        fclose(f);
+        return fail(err, errlen, "%s: cannot write PNG: %s", path, png_msg);
+    }
+    png_init_io(png, f);
+    png_set_IHDR(png, info, width, height, 8, color ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_GRAY,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    for (y = 0; y < height; y++) {
+        png_write_row(png, (png_const_bytep)(px + (size_t)y * stride));
+    }
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    if (fclose(f) != 0) {
+        return fail(err, errlen, "%s: write error: %s", path, strerror(errno));
+    }
+    return 0;
+}
+#endif
+
+static int write_pnm(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
+                     size_t stride, int color, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "wb");
+    const size_t row = (size_t)width * (color ? 3u : 1u);
+    uint32_t y;
+    if (f == NULL) {
+        return fail(err, errlen, "%s: cannot create: %s", path, strerror(errno));
+    }
+    fprintf(f, "P%c\n%u %u\n255\n", color ? '6' : '5', width, height);
+    for (y = 0; y < height; y++) {
+        if (fwrite(px + (size_t)y * stride, 1, row, f) != row) {
+            fclose(f);
+            return fail(err, errlen, "%s: write error: %s", path, strerror(errno));
+        }
+    }
+    if (fclose(f) != 0) {
+        return fail(err, errlen, "%s: write error: %s", path, strerror(errno));
+    }
+    return 0;
+}
+
+static int write_any(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
+                     size_t stride, int color, char *err, size_t errlen)
+{
+    if (imgio_is_png_name(path)) {
+#ifdef SYMLINE_HAVE_PNG
+        return write_png(path, px, width, height, stride, color, err, errlen);
+#else
+        return fail(err, errlen, "%s: PNG output needs a build with libpng", path);
+#endif
+    }
+    return write_pnm(path, px, width, height, stride, color, err, errlen);
+}
+
+int imgio_write_gray(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
+                     uint32_t stride, char *err, size_t errlen)
+{
+    return write_any(path, px, width, height, stride, 0, err, errlen);
+}
+
+int imgio_write_rgb(const char *path, const imgio_rgb *img, char *err, size_t errlen)
+{
+    return write_any(path, img->px, img->width, img->height, (size_t)img->width * 3u, 1, err,
+                     errlen);
+}

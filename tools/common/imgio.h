@@ -1,0 +1,53 @@
+/*
+ * Image files for the host tools: binary PGM always, PNG when built with libpng.
+ * Host-only code (allocates, does I/O); the core library never includes it.
+ */
+#ifndef SYMLINE_TOOLS_IMGIO_H
+#define SYMLINE_TOOLS_IMGIO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct imgio_gray {
+    uint32_t width;
+    uint32_t height;
+    uint8_t *px; /* width*height bytes, stride = width; free with imgio_free() */
+} imgio_gray;
+
+typedef struct imgio_rgb {
+    uint32_t width;
+    uint32_t height;
+    uint8_t *px; /* width*height*3 bytes, RGB interleaved */
+} imgio_rgb;
+
+/* 1 when this build reads and writes PNG. */
+int imgio_have_png(void);
+
+/*
+ * Reads an 8-bit gray image from a binary PGM (P5, maxval 255) or a PNG (by
+ * its signature, not its name). Colour PNGs are converted to luma with
+ * Y = (299 R + 587 G + 114 B + 500) / 1000 (ITU-R BT.601 weights); alpha is
+ * ignored; 16-bit samples are reduced to 8; palettes and low bit depths are
+ * expanded. Returns 0, or -1 with a message naming the file and the problem in
+ * err (errlen bytes).
+ */
+int imgio_read_gray(const char *path, imgio_gray *img, char *err, size_t errlen);
+
+/* Reads a P5 PGM from memory (for tests): same rules as imgio_read_gray(). */
+int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray *img, char *err,
+                    size_t errlen);
+
+/* Writes gray pixels (given stride) as PNG when path ends in ".png", else as P5 PGM. */
+int imgio_write_gray(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
+                     uint32_t stride, char *err, size_t errlen);
+
+/* Writes RGB pixels as PNG when path ends in ".png", else as P6 PPM. */
+int imgio_write_rgb(const char *path, const imgio_rgb *img, char *err, size_t errlen);
+
+/* 1 when path ends in ".png" (any case). */
+int imgio_is_png_name(const char *path);
+
+void imgio_free(imgio_gray *img);
+void imgio_free_rgb(imgio_rgb *img);
+
+#endif
