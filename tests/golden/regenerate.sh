@@ -1,0 +1,26 @@
+#!/bin/sh
+# Regenerates the golden operator and extrema images from the plain reference
+# (tools/reference/symref.c). Usage: tests/golden/regenerate.sh [BUILD_DIR]
+# (also: cmake --build BUILD_DIR --target golden). Review the diff before committing:
+# a change here means the contract's outputs changed.
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+build=${1:-$here/../../build}
+ref="$build/bin/symline-ref"
+[ -x "$ref" ] || { echo "regenerate.sh: $ref not built (cmake --build $build --target symline_ref)" >&2; exit 2; }
+out="$here/core"
+rm -rf "$out"
+mkdir -p "$out"
+n=0
+for src in "$here"/../data/cases/*.pgm "$here"/../data/crops/*.pgm; do
+    base=$(basename "$src" .pgm)
+    set_name=$(basename "$(dirname "$src")")
+    for axis in horizontal vertical; do
+        for m in 1 2 3 5 10 50; do
+            "$ref" symmetry "$axis" "$m" "$src" "$out/${set_name}_$base.$axis.m$m.s8.pgm"
+            "$ref" extrema "$axis" "$m" "$src" "$out/${set_name}_$base.$axis.m$m.ext.pgm"
+            n=$((n + 2))
+        done
+    done
+done
+echo "wrote $n golden images to $out"
