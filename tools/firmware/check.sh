@@ -1,0 +1,208 @@
+#!/bin/sh
+# Firmware readiness of the core (lib/), as CI runs it:
+#   1. cross builds of libsymline.a: Cortex-M0+ (soft float), M4 and M7 (hard
+#      float), RV32IMAC (freestanding compile-and-link check);
+#   2. the M0+ symbol table: no floating-point helper, no malloc/free, no
+#      stdio, nothing from libc at all; the M4/M7 code: no FPU instruction;
+#   3. worst-case stack of every public entry point (call graph + -fstack-usage)
+#      <= 512 bytes, on M0+ -Os and M4 -O3;
+#   4. code size (.text + .rodata) on Cortex-M4 -Os <= 12 KiB;
+#   5. cppcheck and clang-tidy (tools/firmware/clang-tidy.yaml) clean on lib/;
+#   6. the golden/argument tests on an emulated Cortex-M4 (qemu mps2-an386),
+#      a deliberately failing variant and a crashing program that must fail,
+#      the firmware example, and instructions per pixel (qemu -icount).
+# Prints one line per check, continues after a failure and exits 1 if any
+# check failed. Installs its Debian packages when missing (apt-get, as root).
+#
+#   tools/firmware/check.sh            build dirs ./build-fw-*
+#   SYMLINE_FW_BUILD=/tmp/fw tools/firmware/check.sh   build dirs /tmp/fw-*
+set -u
+cd "$(dirname "$0")/../.."
+root=$(pwd)
+prefix=${SYMLINE_FW_BUILD:-$root/build-fw}
+jobs=2
+stack_budget=512
+size_budget=12288
+qemu_timeout=120
+failed=0
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+
+ok() { printf '  [ok]   %s\n' "$*"; }
+bad() { printf '  [FAIL] %s\n' "$*"; failed=1; }
+step() { printf '\n== %s\n' "$*"; }
+# run DESCRIPTION CMD...: quiet on success, the command's output on failure.
+run() {
+    d=$1; shift
+    if "$@" >"$log" 2>&1; then return 0; fi
+    bad "$d"; sed 's/^/         /' "$log" | tail -40; return 1
+}
+
+step "packages"
+need=""
+for p in cmake make gcc libc6-dev binutils gcc-arm-none-eabi libnewlib-arm-none-eabi \
+         qemu-system-arm gcc-riscv64-unknown-elf cppcheck clang-tidy; do
+    dpkg -s "$p" >/dev/null 2>&1 || need="$need $p"
+done
+if [ -n "$need" ]; then
+    echo "  installing:$need"
+    if [ "$(id -u)" -ne 0 ]; then
+        echo "  missing packages:$need (run as root or: sudo apt-get install$need)"; exit 1
+    fi
+    export DEBIAN_FRONTEND=noninteractive
+    # shellcheck disable=SC2086
+    apt-get install -y -q $need >/dev/null 2>&1 ||
+        { apt-get update -q >/dev/null && apt-get install -y -q $need >/dev/null; } ||
+        { echo "  apt-get install$need failed"; exit 1; }
+fi
+ok "toolchains: $(arm-none-eabi-gcc -dumpversion) (arm-none-eabi), $(riscv64-unknown-elf-gcc -dumpversion) (riscv64-unknown-elf), $(qemu-system-arm --version | head -1)"
+
+# cross NAME TOOLCHAIN BUILD_TYPE [cmake args...]: configure and build libsymline.a
+cross() {
+    name=$1 tc=$2 bt=$3; shift 3
+    dir=$prefix-$name
+    # CFLAGS adds to the toolchain's flags (-DCMAKE_C_FLAGS would replace them).
+    run "configure $name" env CFLAGS="-fcallgraph-info=su" cmake -S "$root" -B "$dir" \
+        -DCMAKE_TOOLCHAIN_FILE="$root/port/toolchains/$tc" -DCMAKE_BUILD_TYPE="$bt" "$@" || return 1
+    run "build $name" cmake --build "$dir" --target symline -j "$jobs" || return 1
+    ok "$name: $(basename "$dir")/lib/libsymline.a ($bt)"
+}
+
+step "cross builds of libsymline.a"
+cross m0plus-os arm-none-eabi.cmake MinSizeRel -DSYMLINE_CPU=cortex-m0plus
+cross m4-os arm-none-eabi.cmake MinSizeRel -DSYMLINE_CPU=cortex-m4
+cross m7 arm-none-eabi.cmake Release -DSYMLINE_CPU=cortex-m7
+cross rv32 riscv32.cmake MinSizeRel
+cross m4 arm-none-eabi.cmake Release -DSYMLINE_CPU=cortex-m4 -DSYMLINE_BUILD_FIRMWARE=ON
+
+step "RV32IMAC: the freestanding core links with -nostdlib -lgcc"
+lib=$prefix-rv32/lib/libsymline.a
+if [ -f "$lib" ] && run "rv32 link" riscv64-unknown-elf-gcc -march=rv32imac -mabi=ilp32 -nostdlib \
+        -Wl,--entry=symline_status_str -Wl,--whole-archive "$lib" -Wl,--no-whole-archive -lgcc \
+        -o "$prefix-rv32/linkcheck.elf"; then
+    ok "every object of libsymline.a resolved ($(riscv64-unknown-elf-size "$prefix-rv32/linkcheck.elf" | awk 'NR==2{print $1 " bytes text"}'))"
+fi
+
+step "Cortex-M0+ symbol table: no float, no allocation, no stdio, no libc"
+# Every undefined symbol must be defined in the archive itself or be one of
+# libgcc's integer helpers; anything else is named and classified.
+lib=$prefix-m0plus-os/lib/libsymline.a
+if [ -f "$lib" ]; then
+    arm-none-eabi-nm --defined-only "$lib" | awk 'NF==3{print $3}' | sort -u >"$log.def"
+    arm-none-eabi-nm -u "$lib" | awk 'NF==2{print $2}' | sort -u | comm -23 - "$log.def" >"$log.undef"
+    outside=$(grep -Ev '^__(aeabi_(uidiv|uidivmod|idiv|idivmod|ldivmod|uldivmod|lmul|llsl|llsr|lasr|lcmp|ulcmp)|(u?(div|mod|divmod)di[34])|muldi3|clz[sd]i2|ctz[sd]i2)$' "$log.undef")
+    helpers=$(grep -Ev "^($(echo "$outside" | paste -sd'|' -))\$" "$log.undef" | paste -sd' ' -)
+    if [ -z "$outside" ]; then
+        ok "undefined symbols outside the core: only libgcc integer helpers (${helpers:-none})"
+    else
+        for s in $outside; do
+            case $s in
+            __aeabi_f* | __aeabi_d* | __aeabi_*2f | __aeabi_*2d | __*sf* | __*df* | __*tf*)
+                bad "floating-point helper referenced: $s" ;;
+            malloc | calloc | realloc | free | _malloc_r | _free_r | _calloc_r | _realloc_r | aligned_alloc)
+                bad "allocation referenced: $s" ;;
+            *printf* | puts | putchar | fputs | fputc | fwrite | fopen | fclose | fread | stdin | stdout | stderr | _impure_ptr)
+                bad "stdio referenced: $s" ;;
+            *) bad "libc/other symbol referenced: $s" ;;
+            esac
+        done
+    fi
+    rm -f "$log.def" "$log.undef"
+fi
+for c in m4-os m7; do
+    lib=$prefix-$c/lib/libsymline.a
+    [ -f "$lib" ] || continue
+    n=$(arm-none-eabi-objdump -d "$lib" | grep -cE '^ +[0-9a-f]+:	[0-9a-f ]+	v[a-z0-9.]+	' )
+    if [ "$n" -eq 0 ]; then ok "$c: no FPU instruction in libsymline.a (hard-float build)"
+    else bad "$c: $n FPU instructions in libsymline.a:"; arm-none-eabi-objdump -d "$lib" | grep -E '	v[a-z0-9.]+	' | head -5; fi
+done
+
+step "worst-case stack per public entry point (budget $stack_budget B, libgcc helper calls charged 128 B)"
+for c in m0plus-os m4; do
+    cis=$(find "$prefix-$c/lib" -name '*.ci' 2>/dev/null | sort)
+    if [ -z "$cis" ]; then bad "$c: no call-graph files (-fcallgraph-info)"; continue; fi
+    echo "  $c:"
+    # shellcheck disable=SC2086
+    if awk -v budget="$stack_budget" -v helper=128 -f tools/firmware/stack.awk $cis; then
+        ok "$c: every entry point within $stack_budget B"
+    else
+        bad "$c: stack check"
+    fi
+done
+
+step "code size on Cortex-M4 -Os (.text + .rodata, target <= $size_budget B)"
+objs=$(find "$prefix-m4-os/lib" -name '*.obj' | sort)
+if [ -n "$objs" ]; then
+    for o in $objs; do
+        arm-none-eabi-size -A "$o" | awk -v f="$(basename "$o" .c.obj)" \
+            '$1 ~ /^\.(text|rodata)/ { s += $2 } END { printf "%s %d\n", f, s }'
+    done >"$log"
+    awk '{ printf "    %-14s %6d B\n", $1, $2 }' "$log"
+    total=$(awk '{ t += $2 } END { print t + 0 }' "$log")
+    if [ "$total" -le "$size_budget" ]; then ok "core: $total B (.text + .rodata) <= $size_budget B"
+    else bad "core: $total B (.text + .rodata) > $size_budget B"; fi
+else
+    bad "no Cortex-M4 -Os objects"
+fi
+
+step "static analysis of lib/"
+# shellcheck disable=SC2046
+if run "cppcheck" cppcheck --enable=warning,style,performance,portability --std=c99 \
+        --error-exitcode=1 --inline-suppr --quiet -I include -I lib $(ls lib/*.c); then
+    ok "cppcheck $(cppcheck --version | cut -d' ' -f2): clean (warning, style, performance, portability)"
+fi
+# shellcheck disable=SC2046
+if clang-tidy --config-file=tools/firmware/clang-tidy.yaml --quiet $(ls lib/*.c) \
+        -- -std=c99 -Iinclude -Ilib >"$log" 2>&1; then
+    ok "clang-tidy $(clang-tidy --version | sed -n 's/.*version \([0-9.]*\).*/\1/p' | head -1): clean (tools/firmware/clang-tidy.yaml)"
+else
+    bad "clang-tidy (tools/firmware/clang-tidy.yaml): $(grep -c ': error:' "$log") findings"
+    grep ': error:' "$log" | sed "s|$root/||; s/^/         /" | sort -u | head -30
+fi
+
+step "on an emulated Cortex-M4 (qemu-system-arm -M mps2-an386, semihosting)"
+dir=$prefix-m4
+qemu() {
+    timeout "$qemu_timeout" qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
+        -semihosting-config enable=on,target=native "$@"
+}
+if run "build target programs" cmake --build "$dir" -j "$jobs"; then
+    if qemu -kernel "$dir/bin/symline_fw_tests.elf" >"$log" 2>&1; then
+        ok "$(tail -1 "$log")"
+    else
+        bad "target tests (exit $?):"; sed 's/^/         /' "$log" | tail -20
+    fi
+    qemu -kernel "$dir/bin/symline_fw_tests_fail.elf" >"$log" 2>&1
+    rc=$?
+    if [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] && grep -q '^FAIL' "$log"; then
+        ok "a corrupted output byte fails the target run (exit $rc): $(grep -m1 '^FAIL' "$log" | cut -c1-90)"
+    else
+        bad "the deliberately failing variant did not fail (exit $rc)"
+    fi
+    qemu -kernel "$dir/bin/symline_fw_fault.elf" >"$log" 2>&1
+    rc=$?
+    if [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ]; then
+        ok "a crash on the target fails the run instead of hanging (exit $rc)"
+    else
+        bad "the crashing program did not fail (exit $rc)"
+    fi
+    if [ -f "$dir/bin/symline_fw_example.elf" ]; then
+        if qemu -kernel "$dir/bin/symline_fw_example.elf" >"$log" 2>&1; then
+            ok "example: $(grep -m1 -i 'segments' "$log")"
+            sed 's/^/         /' "$log" | head -12
+        else
+            bad "example (exit $?):"; sed 's/^/         /' "$log" | tail -20
+        fi
+    fi
+    echo "  instructions per pixel (qemu -icount shift=0, SysTick):"
+    if qemu -icount shift=0 -kernel "$dir/bin/symline_fw_bench.elf" >"$log" 2>&1; then
+        sed 's/^/    /' "$log"
+        ok "benchmark ran"
+    else
+        bad "benchmark (exit $?):"; sed 's/^/         /' "$log" | tail -20
+    fi
+fi
+
+echo
+if [ "$failed" -eq 0 ]; then echo "firmware checks: all passed"; else echo "firmware checks: FAILED"; fi
+exit "$failed"
