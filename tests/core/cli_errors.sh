@@ -48,5 +48,7 @@ expect 1 "cannot create" -- symmetry --axis vertical --radius 3 "$good" "$tmp/no
 expect 0 "" -- extrema --axis horizontal --radius 3 "$good" "$tmp/o.png"
 expect 0 "" -- symmetry --axis horizontal --radius 3 "$tmp/o.png" "$tmp/o2.pgm"
 
+expect 0 "" -- convert "$good" "$tmp/c.png"
+expect 2 "convert" -- convert "$good"
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -129,3 +129,28 @@ int cmd_extrema(int argc, char **argv)
 {
     return run_op(argc, argv, 1);
 }
+
+/* `symline convert IN OUT`: PGM <-> PNG (colour PNG input becomes luma). */
+int cmd_convert(int argc, char **argv)
+{
+    imgio_gray in;
+    char err[512];
+    int rc = CLI_OK;
+    if (argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
+        printf("usage: symline convert IN OUT\n"
+               "  reads a PGM (P5) or PNG, writes 8-bit gray PNG (OUT ends in .png) or PGM\n");
+        return CLI_OK;
+    }
+    if (argc != 3) {
+        return cli_error("convert: usage: symline convert IN OUT");
+    }
+    if (imgio_read_gray(argv[1], &in, err, sizeof err) != 0) {
+        return cli_error("%s", err);
+    }
+    if (imgio_write_gray(argv[2], in.px, in.width, in.height, in.width, err, sizeof err) != 0) {
+        cli_error("%s", err);
+        rc = CLI_FAIL;
+    }
+    imgio_free(&in);
+    return rc;
+}

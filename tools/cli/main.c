@@ -61,6 +61,8 @@ static void usage(FILE *f)
           "      write the 8-bit symmetry image S8 (255 = perfect mirror symmetry)\n"
           "  extrema  --axis horizontal|vertical --radius M IN OUT\n"
           "      write the extrema map: 0 nothing, 128 A point (asymmetry), 255 S point\n"
+          "  convert  IN OUT\n"
+          "      convert between PGM and PNG (8-bit gray; colour input becomes luma)\n"
 #ifdef SYMLINE_CLI_LINES
           "  lines    [--axis horizontal|vertical|both] [--radius M] [options] IN\n"
           "      print the detected line segments as JSON on stdout\n"
@@ -95,6 +97,9 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "extrema") == 0) {
         return cmd_extrema(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "convert") == 0) {
+        return cmd_convert(argc - 1, argv + 1);
     }
 #ifdef SYMLINE_CLI_LINES
     if (strcmp(argv[1], "lines") == 0) {
