@@ -1,0 +1,115 @@
+/*
+ * Precision, recall, F1 and classification counts for one image.
+ */
+#include "score.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+double ev_tolerance(int width)
+{
+    double t = 3.0 * (double)width / 640.0;
+    return t > 2.0 ? t : 2.0;
+}
+
+static void finish(ev_score *s)
+{
+    /* Nothing claimed is nothing wrong; nothing to find is nothing missed. */
+    s->p = s->det_counted ? (double)s->det_hits / (double)s->det_counted : 1.0;
+    s->r = s->gt_samples ? (double)s->gt_hits / (double)s->gt_samples : 1.0;
+    s->f1 = (s->p + s->r) > 0.0 ? 2.0 * s->p * s->r / (s->p + s->r) : 0.0;
+}
+
+void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
+                    double tol, ev_score *out)
+{
+    ev_index gix, dcix, dix;
+    ev_pt *ds = NULL, *gs = NULL;
+    size_t *dpiece = NULL, nd, ng, i;
+    size_t *near_line = calloc(det->npieces + 1, sizeof(size_t));
+    size_t *near_curve = calloc(det->npieces + 1, sizeof(size_t));
+    size_t *nsamp = calloc(det->npieces + 1, sizeof(size_t));
+
+    memset(out, 0, sizeof(*out));
+    ev_index_build(&gix, gt, tol);
+    memset(&dcix, 0, sizeof(dcix));
+    if (dontcare != NULL && dontcare->npts > 0) {
+        ev_index_build(&dcix, dontcare, tol);
+    }
+    ev_index_build(&dix, det, tol);
+
+    nd = ev_sample(det, EV_SAMPLE_STEP, &ds, &dpiece);
+    out->det_samples = nd;
+    for (i = 0; i < nd; i++) {
+        int tag = -1;
+        int near_gt = ev_index_near(&gix, ds[i], &tag);
+        nsamp[dpiece[i]]++;
+        if (near_gt) {
+            if (tag == EV_TAG_CURVE) {
+                near_curve[dpiece[i]]++;
+            } else {
+                near_line[dpiece[i]]++;
+            }
+        }
+        if (dcix.paths != NULL && ev_index_near(&dcix, ds[i], NULL)) {
+            continue; /* near a don't-care part: neither right nor wrong */
+        }
+        out->det_counted++;
+        out->det_hits += (size_t)near_gt;
+    }
+
+    ng = ev_sample(gt, EV_SAMPLE_STEP, &gs, NULL);
+    out->gt_samples = ng;
+    for (i = 0; i < ng; i++) {
+        out->gt_hits += (size_t)ev_index_near(&dix, gs[i], NULL);
+    }
+
+    /* A piece is matched when at least half its samples lie near ground truth;
+       its class is the kind of ground truth most of those samples are near. */
+    for (i = 0; i < det->npieces; i++) {
+        size_t near = near_line[i] + near_curve[i];
+        if (nsamp[i] == 0 || 2 * near < nsamp[i]) {
+            continue;
+        }
+        if (near_line[i] >= near_curve[i]) {
+            out->line_matched++;
+            out->line_ok += (size_t)(det->tag[i] == EV_TAG_LINE);
+        } else {
+            out->curve_matched++;
+            out->curve_ok += (size_t)(det->tag[i] == EV_TAG_CURVE);
+        }
+    }
+    finish(out);
+
+    free(ds);
+    free(gs);
+    free(dpiece);
+    free(near_line);
+    free(near_curve);
+    free(nsamp);
+    ev_index_free(&gix);
+    if (dcix.paths != NULL) {
+        ev_index_free(&dcix);
+    }
+    ev_index_free(&dix);
+}
+
+void ev_score_mask(const unsigned char *mask, int width, int height, const ev_paths *det,
+                   double tol, ev_score *out)
+{
+    ev_paths pix;
+    int x, y;
+    ev_paths_init(&pix);
+    for (y = 0; y < height; y++) {
+        for (x = 0; x < width; x++) {
+            if (mask[(size_t)y * (size_t)width + (size_t)x]) {
+                ev_paths_begin(&pix, EV_TAG_LINE);
+                ev_paths_add(&pix, (double)x, (double)y);
+            }
+        }
+    }
+    ev_score_paths(&pix, NULL, det, tol, out);
+    /* A mask says nothing about line or curve. */
+    out->line_matched = out->line_ok = out->curve_matched = out->curve_ok = 0;
+    ev_paths_free(&pix);
+}

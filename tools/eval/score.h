@@ -1,0 +1,45 @@
+/*
+ * The scorer of SPEC section 7: samples every 0.5 px along detections and ground
+ * truth, tolerance max(2, 3*width/640) px, precision, recall and F1 per image,
+ * plus the line/curve classification counts defined in docs/evaluation.md.
+ */
+#ifndef SYMLINE_EVAL_SCORE_H
+#define SYMLINE_EVAL_SCORE_H
+
+#include <stddef.h>
+
+#include "paths.h"
+
+#define EV_SAMPLE_STEP 0.5
+
+typedef struct ev_score {
+    double p, r, f1;
+    size_t det_samples;  /* all samples of the detections */
+    size_t det_counted;  /* those not ignored (not within tol of a don't-care part) */
+    size_t det_hits;     /* counted samples within tol of ground truth */
+    size_t gt_samples;   /* samples of the ground truth */
+    size_t gt_hits;      /* ground-truth samples within tol of a detection */
+    size_t line_matched, line_ok;   /* detected pieces matched to straight GT; of those, kind "line" */
+    size_t curve_matched, curve_ok; /* detected pieces matched to circle GT; of those, kind "curve" */
+} ev_score;
+
+/* max(2, 3*width/640) pixels. */
+double ev_tolerance(int width);
+
+/*
+ * Scores detections against ground truth. gt pieces are tagged EV_TAG_LINE
+ * (straight) or EV_TAG_CURVE (circle); dontcare may be NULL; det pieces carry
+ * the tag of their kind.
+ */
+void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
+                    double tol, ev_score *out);
+
+/*
+ * Binary line mask (nonzero = line pixel, width*height bytes, stride = width):
+ * precision = share of detected samples within tol of a mask pixel centre,
+ * recall = share of mask pixels within tol of a detection.
+ */
+void ev_score_mask(const unsigned char *mask, int width, int height, const ev_paths *det,
+                   double tol, ev_score *out);
+
+#endif
