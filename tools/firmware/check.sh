@@ -69,7 +69,7 @@ cross() {
 }
 
 step "cross builds of libsymline.a"
-cross m0plus-os arm-none-eabi.cmake MinSizeRel -DSYMLINE_CPU=cortex-m0plus
+cross m0plus-os arm-none-eabi.cmake MinSizeRel -DSYMLINE_CPU=cortex-m0plus -DSYMLINE_BUILD_FIRMWARE=ON
 cross m4-os arm-none-eabi.cmake MinSizeRel -DSYMLINE_CPU=cortex-m4
 cross m7 arm-none-eabi.cmake Release -DSYMLINE_CPU=cortex-m7
 cross rv32 riscv32.cmake MinSizeRel
@@ -171,6 +171,14 @@ if run "build target programs" cmake --build "$dir" -j "$jobs"; then
         ok "$(tail -1 "$log")"
     else
         bad "target tests (exit $?):"; sed 's/^/         /' "$log" | tail -20
+    fi
+    # ARMv6-M is a subset of ARMv7E-M: the M0+ build's code runs on the M4 model too.
+    if run "build Cortex-M0+ target tests" cmake --build "$prefix-m0plus-os" --target symline_fw_tests -j "$jobs"; then
+        if qemu -kernel "$prefix-m0plus-os/bin/symline_fw_tests.elf" >"$log" 2>&1; then
+            ok "Cortex-M0+ -Os build (ARMv6-M code, soft float) on the same model: $(tail -1 "$log")"
+        else
+            bad "Cortex-M0+ target tests (exit $?):"; sed 's/^/         /' "$log" | tail -20
+        fi
     fi
     qemu -kernel "$dir/bin/symline_fw_tests_fail.elf" >"$log" 2>&1
     rc=$?
