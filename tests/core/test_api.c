@@ -213,6 +213,20 @@ static void test_extreme_sizes(void **state)
     }
 }
 
+/* The documented in-place case: vertical axis, output over the input, same stride. */
+static void test_symmetry_in_place_vertical(void **state)
+{
+    static uint8_t buf[W * H], ref[W * H];
+    symline_image img = make_image();
+    const size_t ws = symline_symmetry_workspace_size(W, H, SYMLINE_AXIS_VERTICAL, 5);
+    (void)state;
+    assert_int_equal(symline_symmetry(&img, SYMLINE_AXIS_VERTICAL, 5, ref, W, sizeof ref, ws_static, ws), SYMLINE_OK);
+    memcpy(buf, pixels, sizeof buf);
+    img.data = buf;
+    assert_int_equal(symline_symmetry(&img, SYMLINE_AXIS_VERTICAL, 5, buf, W, sizeof buf, ws_static, ws), SYMLINE_OK);
+    assert_memory_equal(buf, ref, sizeof buf);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -222,6 +236,7 @@ int main(void)
         cmocka_unit_test(test_row_primitives_errors),
         cmocka_unit_test(test_status_strings),
         cmocka_unit_test(test_extreme_sizes),
+        cmocka_unit_test(test_symmetry_in_place_vertical),
     };
     return cmocka_run_group_tests_name("core_api", tests, NULL, NULL);
 }
