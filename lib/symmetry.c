@@ -153,10 +153,20 @@ symline_status symline_s8_row(const uint32_t *E, uint32_t n, uint32_t m, uint8_t
         }
     }
     if (emax <= UINT32_MAX / 511u) {
-        /* m <= 15: 511*Emax fits 32 bits, no 64-bit division needed. */
+        /*
+         * m <= 15: the numerator fits 32 bits. Divide by multiplying with
+         * R = floor(2^48 / den): the estimate is low by at most one (the
+         * error is below N / 2^48 < 2^-16), fixed by one compare, so the
+         * result is the exact quotient without a division per pixel (there
+         * is no divide instruction on Cortex-M0+).
+         */
         const uint32_t den = 2u * emax;
+        const uint64_t r = ((uint64_t)1 << 48) / den;
         for (i = 0; i < n; i++) {
-            out[i] = (uint8_t)((510u * (emax - E[i]) + emax) / den);
+            const uint32_t num = 510u * (emax - E[i]) + emax;
+            uint32_t q = (uint32_t)(((uint64_t)num * r) >> 48);
+            q += (uint32_t)(num - q * den >= den);
+            out[i] = (uint8_t)q;
         }
     } else {
         const uint64_t den = 2u * (uint64_t)emax;
