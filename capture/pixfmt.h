@@ -1,0 +1,59 @@
+/*
+ * Pixel formats the capture sources accept, and how to get 8-bit luma out of
+ * them. Host/Linux code; the core library never includes it.
+ *
+ * Planar and gray formats (GREY, NV12, NV21, YU12, YV12, NV16, NV61, YU16,
+ * and the multi-planar NM12, NM21, YM12, YM21, NM16, NM61) start with a full-resolution luma plane: the detector reads it in place,
+ * honouring the driver's bytesperline. Packed 4:2:2 formats (YUYV, YVYU,
+ * UYVY, VYUY) interleave luma with chroma and are deinterleaved into a
+ * caller-owned buffer.
+ */
+#ifndef SYMLINE_CAPTURE_PIXFMT_H
+#define SYMLINE_CAPTURE_PIXFMT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define PIXFMT_FOURCC(a, b, c, d) \
+    ((uint32_t)(a) | ((uint32_t)(b) << 8) | ((uint32_t)(c) << 16) | ((uint32_t)(d) << 24))
+
+typedef enum pixfmt_layout {
+    PIXFMT_LUMA_PLANE = 0, /* luma is the first plane: width bytes per row, no copy */
+    PIXFMT_PACKED_422 = 1  /* 2 bytes per pixel, luma at byte offset luma_offset of each pair */
+} pixfmt_layout;
+
+typedef struct pixfmt_info {
+    uint32_t fourcc;
+    const char *name;     /* the fourcc as text, e.g. "YUYV" */
+    pixfmt_layout layout;
+    uint32_t luma_offset; /* packed: 0 for Y first (YUYV, YVYU), 1 for chroma first (UYVY, VYUY) */
+    unsigned preference;  /* lower = preferred when the user names no format (no-copy first) */
+} pixfmt_info;
+
+/* The table entry of a fourcc, or NULL when the format is not supported. */
+const pixfmt_info *pixfmt_find(uint32_t fourcc);
+
+/* The entry named by text ("GREY", "yuyv", "YU12", "I420" ...), or NULL. */
+const pixfmt_info *pixfmt_by_name(const char *name);
+
+/* Number of supported formats and the i-th entry (0 <= i < count). */
+size_t pixfmt_count(void);
+const pixfmt_info *pixfmt_at(size_t i);
+
+/* Writes the four characters of a fourcc (unprintable bytes as '?') + NUL into out[5]. */
+void pixfmt_fourcc_str(uint32_t fourcc, char out[5]);
+
+/*
+ * Bytes of one row of the format's first plane for a width, used to check a
+ * driver's bytesperline: width for luma-plane formats, 2*width for packed.
+ */
+uint64_t pixfmt_min_stride(const pixfmt_info *fmt, uint32_t width);
+
+/*
+ * Copies the luma of a packed 4:2:2 frame into dst (dst_stride bytes per row).
+ * src_stride is the driver's bytesperline (>= 2*width). width must be even.
+ */
+void pixfmt_unpack_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src_stride,
+                        uint32_t width, uint32_t height, uint8_t *dst, uint32_t dst_stride);
+
+#endif

@@ -1,0 +1,276 @@
+/*
+ * Replay source: reads one file per frame with imgio, on demand, so a long
+ * recording needs the memory of one frame.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "replay_source.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "imgio.h"
+
+typedef struct replay {
+    char **files;
+    size_t count;
+    size_t next;        /* index of the next file to read */
+    int loop;
+    int64_t period_ns;  /* 0 = unpaced */
+    int64_t due_ns;     /* when the next frame may be delivered */
+    imgio_gray img;     /* the frame currently handed out */
+    int holding;
+    uint64_t number;
+} replay;
+
+static int has_image_suffix(const char *name)
+{
+    size_t n = strlen(name);
+    return (n > 4 && (strcasecmp(name + n - 4, ".pgm") == 0 || strcasecmp(name + n - 4, ".png") == 0));
+}
+
+static int add_file(replay *r, size_t *cap, const char *dir, const char *name)
+{
+    size_t len;
+    char *p;
+    if (r->count == *cap) {
+        size_t ncap = *cap ? 2 * *cap : 64;
+        char **nf = realloc(r->files, ncap * sizeof *nf);
+        if (nf == NULL) {
+            return -1;
+        }
+        r->files = nf;
+        *cap = ncap;
+    }
+    len = (dir ? strlen(dir) + 1 : 0) + strlen(name) + 1;
+    p = malloc(len);
+    if (p == NULL) {
+        return -1;
+    }
+    if (dir != NULL) {
+        snprintf(p, len, "%s/%s", dir, name);
+    } else {
+        snprintf(p, len, "%s", name);
+    }
+    r->files[r->count++] = p;
+    return 0;
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static int scan_dir(replay *r, const char *path, char *err, size_t errlen)
+{
+    size_t cap = 0;
+    struct dirent *e;
+    DIR *d = opendir(path);
+    if (d == NULL) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    while ((e = readdir(d)) != NULL) {
+        if (e->d_name[0] != '.' && has_image_suffix(e->d_name)) {
+            if (add_file(r, &cap, path, e->d_name) != 0) {
+                closedir(d);
+                snprintf(err, errlen, "out of memory");
+                return -1;
+            }
+        }
+    }
+    closedir(d);
+    if (r->count > 1) {
+        qsort(r->files, r->count, sizeof r->files[0], cmp_str);
+    }
+    return 0;
+}
+
+static int read_list(replay *r, const char *path, char *err, size_t errlen)
+{
+    size_t cap = 0;
+    char line[4096];
+    char dir[4096];
+    const char *slash = strrchr(path, '/');
+    FILE *f = fopen(path, "r");
+    if (f == NULL) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    if (slash != NULL && (size_t)(slash - path) < sizeof dir) {
+        memcpy(dir, path, (size_t)(slash - path));
+        dir[slash - path] = '\0';
+    } else {
+        strcpy(dir, ".");
+    }
+    while (fgets(line, sizeof line, f) != NULL) {
+        char *s = line;
+        size_t n;
+        while (*s == ' ' || *s == '\t') {
+            s++;
+        }
+        n = strcspn(s, "\r\n");
+        s[n] = '\0';
+        while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t')) {
+            s[--n] = '\0';
+        }
+        if (n == 0 || s[0] == '#') {
+            continue;
+        }
+        if (add_file(r, &cap, s[0] == '/' ? NULL : dir, s) != 0) {
+            fclose(f);
+            snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+    }
+    fclose(f);
+    return 0;
+}
+
+static capsrc_result replay_start(capsrc *src)
+{
+    replay *r = src->impl;
+    r->next = 0;
+    r->due_ns = capsrc_now_ns();
+    return CAPSRC_OK;
+}
+
+static void replay_release(capsrc *src)
+{
+    replay *r = src->impl;
+    if (r->holding) {
+        imgio_free(&r->img);
+        r->holding = 0;
+    }
+}
+
+static capsrc_result replay_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
+{
+    replay *r = src->impl;
+    char err[512];
+    const char *file;
+    int64_t t0;
+    replay_release(src);
+    if (r->next >= r->count) {
+        if (!r->loop) {
+            return CAPSRC_END;
+        }
+        r->next = 0;
+    }
+    if (r->period_ns > 0) {
+        int64_t now = capsrc_now_ns();
+        int64_t wait = r->due_ns - now;
+        if (wait > 0) {
+            struct timespec ts;
+            if (timeout_ms >= 0 && wait > (int64_t)timeout_ms * 1000000) {
+                ts.tv_sec = timeout_ms / 1000;
+                ts.tv_nsec = (long)(timeout_ms % 1000) * 1000000L;
+                nanosleep(&ts, NULL);
+                return CAPSRC_TIMEOUT;
+            }
+            ts.tv_sec = (time_t)(wait / 1000000000);
+            ts.tv_nsec = (long)(wait % 1000000000);
+            if (nanosleep(&ts, NULL) != 0 && errno == EINTR) {
+                return CAPSRC_INTERRUPTED;
+            }
+        }
+        /* Fixed cadence; after a stall, restart it from now instead of bursting. */
+        r->due_ns += r->period_ns;
+        if (r->due_ns < capsrc_now_ns()) {
+            r->due_ns = capsrc_now_ns() + r->period_ns;
+        }
+    }
+    file = r->files[r->next];
+    t0 = capsrc_now_ns();
+    if (imgio_read_gray(file, &r->img, err, sizeof err) != 0) {
+        capsrc_set_error(src, "replay: %s", err);
+        return CAPSRC_ERROR;
+    }
+    r->holding = 1;
+    frame->luma = r->img.px;
+    frame->width = r->img.width;
+    frame->height = r->img.height;
+    frame->stride = r->img.width;
+    frame->number = r->number++;
+    frame->sequence = (uint32_t)r->next;
+    frame->timestamp_ns = t0; /* the file read stands for the exposure */
+    frame->skipped = 0;
+    r->next++;
+    src->stats.delivered++;
+    return CAPSRC_OK;
+}
+
+static void replay_free(replay *r)
+{
+    size_t i;
+    for (i = 0; i < r->count; i++) {
+        free(r->files[i]);
+    }
+    free(r->files);
+    free(r);
+}
+
+static void replay_close(capsrc *src)
+{
+    replay *r = src->impl;
+    replay_release(src);
+    replay_free(r);
+    src->impl = NULL;
+}
+
+static const capsrc_ops replay_ops = {replay_start, replay_next, replay_release, replay_close};
+
+capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen)
+{
+    struct stat st;
+    capsrc *src;
+    replay *r = calloc(1, sizeof *r);
+    if (r == NULL) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    if (opt->path == NULL || stat(opt->path, &st) != 0) {
+        snprintf(err, errlen, "%s: %s", opt->path ? opt->path : "(null)", strerror(errno));
+        replay_free(r);
+        return NULL;
+    }
+    if (S_ISDIR(st.st_mode)) {
+        if (scan_dir(r, opt->path, err, errlen) != 0) {
+            replay_free(r);
+            return NULL;
+        }
+    } else if (has_image_suffix(opt->path)) {
+        size_t cap = 0;
+        if (add_file(r, &cap, NULL, opt->path) != 0) {
+            snprintf(err, errlen, "out of memory");
+            replay_free(r);
+            return NULL;
+        }
+    } else if (read_list(r, opt->path, err, errlen) != 0) {
+        replay_free(r);
+        return NULL;
+    }
+    if (r->count == 0) {
+        snprintf(err, errlen, "%s: no .pgm or .png frames found", opt->path);
+        replay_free(r);
+        return NULL;
+    }
+    r->loop = opt->loop;
+    if (opt->fps_num > 0 && opt->fps_den > 0) {
+        r->period_ns = (int64_t)1000000000 * opt->fps_den / opt->fps_num;
+    }
+    src = capsrc_alloc(&replay_ops, r);
+    if (src == NULL) {
+        snprintf(err, errlen, "out of memory");
+        replay_free(r);
+        return NULL;
+    }
+    snprintf(src->description, sizeof src->description, "replay %s: %zu frame file%s%s", opt->path,
+             r->count, r->count == 1 ? "" : "s", r->loop ? ", looping" : "");
+    return src;
+}

@@ -1,0 +1,22 @@
+/*
+ * Replay source: frames from PGM/PNG files, for the demo and for machines
+ * without a camera.
+ */
+#ifndef SYMLINE_CAPTURE_REPLAY_SOURCE_H
+#define SYMLINE_CAPTURE_REPLAY_SOURCE_H
+
+#include "source.h"
+
+typedef struct replay_options {
+    const char *path; /* a directory (its *.pgm / *.png files in name order), one image
+                         file, or a text file listing one image path per line (relative
+                         paths are taken from the list's folder; '#' starts a comment) */
+    uint32_t fps_num; /* pace delivery at fps_num/fps_den frames per second; 0 = as fast as read */
+    uint32_t fps_den;
+    int loop;         /* 1 = start over after the last frame */
+} replay_options;
+
+/* Opens a replay source; NULL with a message in err when the path holds no frames. */
+capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen);
+
+#endif

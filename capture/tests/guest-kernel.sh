@@ -1,0 +1,39 @@
+#!/bin/sh
+# Fetches Debian's amd64 kernel package (the one linux-image-amd64 depends on
+# today), extracts it into CACHE/kernel-ABI and builds its modules.dep.
+# Prints the extracted tree's path. Reruns reuse the cache.
+# usage: guest-kernel.sh CACHE_DIR
+set -eu
+cache=${1:?usage: guest-kernel.sh CACHE_DIR}
+mkdir -p "$cache"
+
+need_pkg() {
+    for p in "$@"; do
+        if ! dpkg -s "$p" >/dev/null 2>&1; then
+            apt-get install -y "$@" >&2 || { apt-get update >&2 && apt-get install -y "$@" >&2; }
+            return
+        fi
+    done
+}
+need_pkg kmod
+
+# The ABI number changes with security updates: resolve it now.
+pkg=$(apt-cache depends linux-image-amd64 2>/dev/null | sed -n 's/^ *Depends: \(linux-image-[0-9].*-amd64\)$/\1/p' | head -n 1)
+if [ -z "$pkg" ]; then
+    apt-get update >&2
+    pkg=$(apt-cache depends linux-image-amd64 | sed -n 's/^ *Depends: \(linux-image-[0-9].*-amd64\)$/\1/p' | head -n 1)
+fi
+[ -n "$pkg" ] || { echo "guest-kernel: cannot resolve the kernel package of linux-image-amd64" >&2; exit 1; }
+kver=${pkg#linux-image-}
+tree=$cache/kernel-$kver
+if [ ! -f "$tree/.done" ]; then
+    rm -rf "$tree"
+    mkdir -p "$tree"
+    (cd "$cache" && rm -f "$pkg"_*.deb && apt-get download "$pkg" >&2)
+    dpkg-deb -x "$cache/$pkg"_*.deb "$tree"
+    rm -f "$cache/$pkg"_*.deb
+    # The package ships no modules.dep: build it for the extracted tree.
+    depmod -b "$tree" "$kver"
+    touch "$tree/.done"
+fi
+echo "$tree $kver"

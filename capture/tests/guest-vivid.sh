@@ -1,0 +1,153 @@
+#!/bin/sh
+# /init of the emulated machine: loads vivid with error injection enabled and
+# runs symline-capture against it. Every check prints one marker line,
+#   SYMLINE-CHECK <name> PASS|FAIL
+# and the run ends with SYMLINE-RESULT PASS|FAIL <passed>/<total>.
+export PATH=/bin
+mount -t proc proc /proc
+mount -t sysfs sysfs /sys
+mount -t devtmpfs devtmpfs /dev
+mount -t tmpfs tmpfs /tmp
+
+pass=0
+fail=0
+check() {
+    name=$1
+    shift
+    if "$@" >/tmp/check.log 2>&1; then
+        echo "SYMLINE-CHECK $name PASS"
+        pass=$((pass + 1))
+    else
+        echo "SYMLINE-CHECK $name FAIL"
+        sed 's/^/    | /' /tmp/check.log | head -n 20
+        fail=$((fail + 1))
+    fi
+}
+
+# Dependency order was resolved on the build machine (modprobe --show-depends).
+for m in $(cat /modules/order); do
+    insmod "/modules/$m" || echo "insmod $m failed"
+done
+# Two instances: video0 single-planar, video1 multi-planar; error injection controls on.
+insmod /modules/vivid.ko n_devs=2 multiplanar=1,2 node_types=0x1,0x1 vid_cap_nr=0,1 no_error_inj=0
+i=0
+while [ ! -e /dev/video1 ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+echo "guest: $(cat /sys/class/video4linux/video0/name) $(cat /sys/class/video4linux/video1/name)"
+
+cap() { symline-capture --summary-every 0 --timeout 3000 "$@"; }
+
+# One format: 5 frames arrive, JSON well-formed, luma shows the colour bars
+# and (for all but the reference) matches the GREY frame.
+format_check() {
+    dev=$1; fmt=$2; ref=$3
+    out=/tmp/$fmt-${dev#/dev/}
+    cap --device "$dev" --format "$fmt" --width 640 --height 360 --frames 5 --all-frames \
+        --record 4 "$out" >"$out.json" 2>"$out.err" || { cat "$out.err"; return 1; }
+    cat "$out.err"
+    grep -q " $fmt 640x360 " "$out.err" || { echo "format $fmt 640x360 not reported"; return 1; }
+    capture-check json "$out.json" 5 || return 1
+    capture-check bars "$out/frame000004.pgm" $ref
+}
+ref=/tmp/GREY-video0/frame000004.pgm
+check format-GREY format_check /dev/video0 GREY
+for f in NV12 NV21 YU12 YV12 NV16 NV61 YU16 YUYV YVYU UYVY VYUY; do
+    check format-$f format_check /dev/video0 $f $ref
+done
+for f in GREY NV12 NM12 NM21 YM12 YM21 NM16 NM61 YUYV UYVY; do
+    check mplane-$f format_check /dev/video1 $f $ref
+done
+
+# Size and frame interval requests: the granted values are reported.
+granted() {
+    cap --device /dev/video0 --format YUYV --width 1280 --height 720 --fps 10 --frames 3 >/tmp/g.json 2>/tmp/g.err
+    rc=$?; cat /tmp/g.err; [ $rc -eq 0 ] || return 1
+    grep -q " YUYV 1280x720 bytesperline 2560, 10/1 fps" /tmp/g.err && capture-check json /tmp/g.json 3
+}
+check size-and-rate granted
+
+# Default (freshest-frame) mode with a short queue: frames keep rising, none twice.
+freshest() {
+    cap --device /dev/video0 --format NV12 --width 640 --height 360 --buffers 3 --frames 20 >/tmp/f.json 2>/tmp/f.err
+    rc=$?; cat /tmp/f.err; [ $rc -eq 0 ] && capture-check json /tmp/f.json 20
+}
+check freshest-frames freshest
+
+# Runs symline-capture in the background, presses a vivid control after 1 s,
+# stops it with a signal after 2 s; the exit status is in $rc, stderr in /tmp/bg.err.
+background() {
+    dev=$1; control=$2; sig=$3
+    # Started directly (not through a shell function) so that $! is its own pid.
+    symline-capture --summary-every 0 --timeout 3000 --device "$dev" --format GREY --width 640 --height 360 \
+        --frames 0 --all-frames >/tmp/bg.json 2>/tmp/bg.err &
+    pid=$!
+    sleep 1
+    if [ -n "$control" ]; then capture-check press "$dev" "$control" || echo "press failed"; fi
+    sleep 1
+    kill -"$sig" $pid 2>/dev/null
+    wait $pid
+    rc=$?
+    cat /tmp/bg.err
+}
+sigterm() {
+    background /dev/video0 "" TERM
+    [ $rc -eq 0 ] && grep -q "stopped (SIGTERM)" /tmp/bg.err && ! grep -q "error" /tmp/bg.json
+}
+check sigterm-exit-0 sigterm
+sigint() {
+    background /dev/video0 "" INT
+    [ $rc -eq 0 ] && grep -q "stopped (SIGINT)" /tmp/bg.err
+}
+check sigint-exit-0 sigint
+buf_error() {
+    background /dev/video0 "Inject V4L2_BUF_FLAG_ERROR" TERM
+    [ $rc -eq 0 ] && grep -q "error_buffers=1 " /tmp/bg.err || return 1
+    n=$(wc -l </tmp/bg.json)
+    capture-check json /tmp/bg.json "$n"
+}
+check buffer-error-skipped buf_error
+qbuf_error() {
+    background /dev/video0 "Inject VIDIOC_QBUF Error" TERM
+    [ $rc -eq 0 ] && grep -q "requeue_errors=1 " /tmp/bg.err
+}
+check qbuf-error-recovered qbuf_error
+streamon_error() {
+    capture-check press /dev/video0 "Inject VIDIOC_STREAMON Error" || return 1
+    cap --device /dev/video0 --format GREY --frames 3 >/tmp/s.json 2>/tmp/s.err
+    rc=$?; cat /tmp/s.err
+    [ $rc -eq 1 ] && grep -q "VIDIOC_STREAMON failed: " /tmp/s.err
+}
+check streamon-error streamon_error
+reqbufs_error() {
+    capture-check press /dev/video0 "Inject VIDIOC_REQBUFS Error" || return 1
+    cap --device /dev/video0 --format GREY --frames 3 >/tmp/s.json 2>/tmp/s.err
+    rc=$?; cat /tmp/s.err
+    [ $rc -eq 1 ] && grep -q "VIDIOC_REQBUFS (4 mmap buffers) failed: " /tmp/s.err
+}
+check reqbufs-error reqbufs_error
+recovers() {
+    cap --device /dev/video0 --format GREY --frames 3 >/tmp/r.json 2>/tmp/r.err
+    rc=$?; cat /tmp/r.err; [ $rc -eq 0 ] && capture-check json /tmp/r.json 3
+}
+check after-errors-ok recovers
+fatal_error() {
+    background /dev/video1 "Inject Fatal Streaming Error" TERM
+    [ $rc -eq 1 ] && grep -q "device lost during VIDIOC_DQBUF" /tmp/bg.err
+}
+check fatal-streaming-error fatal_error
+disconnect() {
+    background /dev/video0 "Disconnect" TERM
+    [ $rc -eq 1 ] && grep -q "device lost" /tmp/bg.err && grep -q "stopped (device lost)" /tmp/bg.err
+}
+check disconnect disconnect
+
+if [ -x /bin/guest-libcamera.sh ]; then
+    . /bin/guest-libcamera.sh
+fi
+
+total=$((pass + fail))
+if [ $fail -eq 0 ] && [ $total -gt 0 ]; then
+    echo "SYMLINE-RESULT PASS $pass/$total"
+else
+    echo "SYMLINE-RESULT FAIL $pass/$total"
+fi
+poweroff -f

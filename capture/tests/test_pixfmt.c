@@ -1,0 +1,137 @@
+/*
+ * Format table and luma extraction of the capture layer.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "pixfmt.h"
+
+static void test_lookup(void **state)
+{
+    (void)state;
+    assert_non_null(pixfmt_by_name("GREY"));
+    assert_ptr_equal(pixfmt_by_name("yuyv"), pixfmt_find(PIXFMT_FOURCC('Y', 'U', 'Y', 'V')));
+    assert_ptr_equal(pixfmt_by_name("I420"), pixfmt_by_name("YU12"));
+    assert_null(pixfmt_by_name("RGB3"));
+    assert_null(pixfmt_by_name("YUYVX"));
+    assert_null(pixfmt_by_name(""));
+    assert_null(pixfmt_by_name(NULL));
+    assert_null(pixfmt_find(0));
+    assert_int_equal(pixfmt_by_name("UYVY")->luma_offset, 1);
+    assert_int_equal(pixfmt_by_name("YVYU")->luma_offset, 0);
+    assert_int_equal(pixfmt_by_name("NV12")->layout, PIXFMT_LUMA_PLANE);
+    assert_int_equal(pixfmt_by_name("VYUY")->layout, PIXFMT_PACKED_422);
+}
+
+static void test_table_names_match_fourcc(void **state)
+{
+    size_t i;
+    (void)state;
+    assert_true(pixfmt_count() >= 12);
+    for (i = 0; i < pixfmt_count(); i++) {
+        char cc[5];
+        const pixfmt_info *f = pixfmt_at(i);
+        pixfmt_fourcc_str(f->fourcc, cc);
+        assert_string_equal(cc, f->name);
+        assert_ptr_equal(pixfmt_by_name(f->name), f);
+    }
+    assert_null(pixfmt_at(pixfmt_count()));
+}
+
+static void test_gray_preferred(void **state)
+{
+    size_t i;
+    const pixfmt_info *grey = pixfmt_by_name("GREY");
+    (void)state;
+    /* Without a user choice the no-copy formats win over packed ones. */
+    for (i = 0; i < pixfmt_count(); i++) {
+        const pixfmt_info *f = pixfmt_at(i);
+        if (f != grey) {
+            assert_true(f->preference > grey->preference);
+        }
+        if (f->layout == PIXFMT_PACKED_422) {
+            assert_true(f->preference > pixfmt_by_name("YU16")->preference);
+        }
+    }
+}
+
+static void test_fourcc_str_unprintable(void **state)
+{
+    char cc[5];
+    (void)state;
+    pixfmt_fourcc_str(PIXFMT_FOURCC('A', 0x01, 'B', 0xff), cc);
+    assert_string_equal(cc, "A?B?");
+}
+
+static void test_min_stride(void **state)
+{
+    (void)state;
+    assert_int_equal(pixfmt_min_stride(pixfmt_by_name("GREY"), 641), 641);
+    assert_int_equal(pixfmt_min_stride(pixfmt_by_name("NV12"), 640), 640);
+    assert_int_equal(pixfmt_min_stride(pixfmt_by_name("YUYV"), 640), 1280);
+}
+
+/* A packed 4:2:2 frame with padding: luma = 10*y + x, chroma bytes 200+, padding 0xEE. */
+static void make_packed(const pixfmt_info *f, uint8_t *buf, uint32_t w, uint32_t h, uint32_t stride)
+{
+    uint32_t x, y;
+    memset(buf, 0xEE, (size_t)stride * h);
+    for (y = 0; y < h; y++) {
+        for (x = 0; x < w; x++) {
+            buf[y * stride + 2 * x + f->luma_offset] = (uint8_t)(10 * y + x);
+            buf[y * stride + 2 * x + (1 - f->luma_offset)] = (uint8_t)(200 + (x & 1));
+        }
+    }
+}
+
+static void check_unpack(const char *name)
+{
+    enum { W = 6, H = 4, SRC_STRIDE = 2 * W + 4, DST_STRIDE = W + 3 };
+    uint8_t src[SRC_STRIDE * H];
+    uint8_t dst[DST_STRIDE * H];
+    uint32_t x, y;
+    const pixfmt_info *f = pixfmt_by_name(name);
+    assert_non_null(f);
+    make_packed(f, src, W, H, SRC_STRIDE);
+    memset(dst, 0x55, sizeof dst);
+    pixfmt_unpack_luma(f, src, SRC_STRIDE, W, H, dst, DST_STRIDE);
+    for (y = 0; y < H; y++) {
+        for (x = 0; x < DST_STRIDE; x++) {
+            /* Luma where it belongs; the destination's padding untouched. */
+            assert_int_equal(dst[y * DST_STRIDE + x], x < W ? 10 * y + x : 0x55);
+        }
+    }
+}
+
+static void test_unpack_yuyv(void **state)
+{
+    (void)state;
+    check_unpack("YUYV");
+    check_unpack("YVYU");
+}
+
+static void test_unpack_uyvy(void **state)
+{
+    (void)state;
+    check_unpack("UYVY");
+    check_unpack("VYUY");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_lookup),
+        cmocka_unit_test(test_table_names_match_fourcc),
+        cmocka_unit_test(test_gray_preferred),
+        cmocka_unit_test(test_fourcc_str_unprintable),
+        cmocka_unit_test(test_min_stride),
+        cmocka_unit_test(test_unpack_yuyv),
+        cmocka_unit_test(test_unpack_uyvy),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

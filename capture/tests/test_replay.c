@@ -1,0 +1,211 @@
+/*
+ * Replay source: directories, lists, single files, looping, errors.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "imgio.h"
+#include "replay_source.h"
+
+static char dir[256];
+
+static void path_in(char *out, size_t n, const char *name)
+{
+    snprintf(out, n, "%s/%s", dir, name);
+}
+
+/* A w x h frame whose every pixel is `value`. */
+static void write_frame(const char *name, uint32_t w, uint32_t h, uint8_t value)
+{
+    uint8_t px[64 * 64];
+    char path[512], err[256];
+    memset(px, value, sizeof px);
+    path_in(path, sizeof path, name);
+    assert_int_equal(imgio_write_gray(path, px, w, h, w, err, sizeof err), 0);
+}
+
+static void write_text(const char *name, const char *text)
+{
+    char path[512];
+    FILE *f;
+    path_in(path, sizeof path, name);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+static int setup(void **state)
+{
+    (void)state;
+    snprintf(dir, sizeof dir, "/tmp/symline-replay-XXXXXX");
+    if (mkdtemp(dir) == NULL) {
+        return -1;
+    }
+    /* Written out of order: the source sorts by name. */
+    write_frame("b.pgm", 8, 6, 20);
+    write_frame("a.pgm", 8, 6, 10);
+    write_frame("c.pgm", 16, 4, 30);
+    write_text("notes.txt", "not a frame\n");
+    return 0;
+}
+
+static int teardown(void **state)
+{
+    const char *names[] = {"a.pgm", "b.pgm", "c.pgm", "notes.txt", "list.txt", "empty.txt"};
+    char path[512];
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof names / sizeof names[0]; i++) {
+        path_in(path, sizeof path, names[i]);
+        unlink(path);
+    }
+    path_in(path, sizeof path, "none");
+    rmdir(path);
+    rmdir(dir);
+    return 0;
+}
+
+static capsrc *open_replay(const char *path, int loop)
+{
+    replay_options o;
+    char err[256];
+    capsrc *src;
+    memset(&o, 0, sizeof o);
+    o.path = path;
+    o.loop = loop;
+    src = replay_source_open(&o, err, sizeof err);
+    assert_non_null(src);
+    assert_int_equal(capsrc_start(src), CAPSRC_OK);
+    return src;
+}
+
+static void expect_frame(capsrc *src, uint64_t number, uint32_t w, uint32_t h, uint8_t value)
+{
+    capsrc_frame f;
+    memset(&f, 0, sizeof f);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_OK);
+    assert_int_equal(f.number, number);
+    assert_int_equal(f.width, w);
+    assert_int_equal(f.height, h);
+    assert_true(f.stride >= w);
+    assert_int_equal(f.luma[0], value);
+    assert_int_equal(f.luma[(h - 1) * f.stride + w - 1], value);
+    assert_true(f.timestamp_ns > 0);
+}
+
+static void test_directory_in_name_order(void **state)
+{
+    capsrc_frame f;
+    capsrc *src;
+    (void)state;
+    src = open_replay(dir, 0);
+    expect_frame(src, 0, 8, 6, 10);
+    capsrc_release(src);
+    capsrc_release(src); /* a second release is harmless */
+    expect_frame(src, 1, 8, 6, 20);
+    /* No release: the next call gives the previous frame back itself. */
+    expect_frame(src, 2, 16, 4, 30);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_END);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_END);
+    assert_int_equal(src->stats.delivered, 3);
+    capsrc_close(src);
+}
+
+static void test_loop(void **state)
+{
+    capsrc *src;
+    (void)state;
+    src = open_replay(dir, 1);
+    expect_frame(src, 0, 8, 6, 10);
+    expect_frame(src, 1, 8, 6, 20);
+    expect_frame(src, 2, 16, 4, 30);
+    expect_frame(src, 3, 8, 6, 10);
+    capsrc_close(src);
+}
+
+static void test_list_file(void **state)
+{
+    char list[512];
+    capsrc_frame f;
+    capsrc *src;
+    (void)state;
+    write_text("list.txt", "# replay order\n  c.pgm  \n\nb.pgm\r\n");
+    path_in(list, sizeof list, "list.txt");
+    src = open_replay(list, 0);
+    expect_frame(src, 0, 16, 4, 30);
+    expect_frame(src, 1, 8, 6, 20);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_END);
+    capsrc_close(src);
+}
+
+static void test_single_file(void **state)
+{
+    char one[512];
+    capsrc_frame f;
+    capsrc *src;
+    (void)state;
+    path_in(one, sizeof one, "b.pgm");
+    src = open_replay(one, 0);
+    expect_frame(src, 0, 8, 6, 20);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_END);
+    capsrc_close(src);
+}
+
+static void test_errors(void **state)
+{
+    replay_options o;
+    char err[256], path[512];
+    capsrc_frame f;
+    capsrc *src;
+    (void)state;
+    memset(&o, 0, sizeof o);
+
+    path_in(path, sizeof path, "missing");
+    o.path = path;
+    err[0] = '\0';
+    assert_null(replay_source_open(&o, err, sizeof err));
+    assert_non_null(strstr(err, "missing"));
+
+    path_in(path, sizeof path, "none");
+    assert_int_equal(mkdir(path, 0700), 0);
+    err[0] = '\0';
+    assert_null(replay_source_open(&o, err, sizeof err));
+    assert_non_null(strstr(err, "no .pgm or .png frames"));
+
+    write_text("empty.txt", "# nothing\n");
+    path_in(path, sizeof path, "empty.txt");
+    assert_null(replay_source_open(&o, err, sizeof err));
+
+    /* A listed file that is not an image: an error naming it, at that frame. */
+    write_text("list.txt", "a.pgm\nnotes.txt\n");
+    path_in(path, sizeof path, "list.txt");
+    src = open_replay(path, 0);
+    expect_frame(src, 0, 8, 6, 10);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_ERROR);
+    assert_non_null(strstr(capsrc_error(src), "notes.txt"));
+    capsrc_close(src);
+    capsrc_close(NULL);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_directory_in_name_order),
+        cmocka_unit_test(test_loop),
+        cmocka_unit_test(test_list_file),
+        cmocka_unit_test(test_single_file),
+        cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
