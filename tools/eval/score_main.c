@@ -15,11 +15,14 @@ static void usage(FILE *f)
     fputs("usage: symline-score [--tol PX] gt NAME DET.json\n"
           "       symline-score [--tol PX] mask MASK.pgm DET.json\n"
           "       symline-score [--tol PX] pair REF.json DET.json\n"
+          "       symline-score gtjson NAME\n"
           "\n"
           "gt:   ground truth NAME.lines.txt, NAME.arcs.txt, NAME.dontcare.txt (missing\n"
           "      files count as empty); image width from NAME.pgm, else from DET.json.\n"
           "mask: binary line mask (nonzero = line pixel), PGM or PNG.\n"
           "pair: REF.json taken as the ground truth (stability between two runs).\n"
+          "gtjson: prints NAME's ground truth as detection JSON (lines as kind \"line\",\n"
+          "      circle pieces as kind \"curve\" with a polyline): a perfect detector.\n"
           "Samples every 0.5 px; tolerance max(2, 3*width/640) px unless --tol.\n"
           "Prints one line of key=value pairs: f1 p r, sample counts, and the\n"
           "classification counts line_matched line_ok curve_matched curve_ok.\n"
@@ -136,6 +139,50 @@ out:
     return rc;
 }
 
+static int mode_gtjson(const char *name)
+{
+    ev_paths gt;
+    char path[4096];
+    int w = 0, h = 0, rc = 1;
+    size_t i, k;
+    ev_paths_init(&gt);
+    snprintf(path, sizeof(path), "%s.lines.txt", name);
+    if (ev_read_segments(path, EV_TAG_LINE, 1, &gt) != 0) {
+        goto out;
+    }
+    snprintf(path, sizeof(path), "%s.arcs.txt", name);
+    if (ev_read_polylines(path, EV_TAG_CURVE, 1, &gt) != 0) {
+        goto out;
+    }
+    snprintf(path, sizeof(path), "%s.pgm", name);
+    if (ev_pgm_size(path, &w, &h) != 0) {
+        fprintf(stderr, "symline-score: cannot read the size of %s\n", path);
+        goto out;
+    }
+    printf("{\"width\": %d, \"height\": %d, \"segments\": [", w, h);
+    for (i = 0; i < gt.npieces; i++) {
+        const ev_pt *q = ev_piece_pts(&gt, i);
+        size_t n = ev_piece_len(&gt, i);
+        printf("%s\n  {\"x0\": %.3f, \"y0\": %.3f, \"x1\": %.3f, \"y1\": %.3f, \"points\": %zu, "
+               "\"kind\": \"%s\"",
+               i ? "," : "", q[0].x, q[0].y, q[n - 1].x, q[n - 1].y, n,
+               gt.tag[i] == EV_TAG_CURVE ? "curve" : "line");
+        if (gt.tag[i] == EV_TAG_CURVE) {
+            printf(", \"polyline\": [");
+            for (k = 0; k < n; k++) {
+                printf("%s[%.3f, %.3f]", k ? ", " : "", q[k].x, q[k].y);
+            }
+            printf("]");
+        }
+        printf("}");
+    }
+    printf("\n]}\n");
+    rc = 0;
+out:
+    ev_paths_free(&gt);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     double tol = 0.0;
@@ -152,6 +199,9 @@ int main(int argc, char **argv)
             return 2;
         }
         i += 2;
+    }
+    if (argc - i == 2 && strcmp(argv[i], "gtjson") == 0) {
+        return mode_gtjson(argv[i + 1]);
     }
     if (argc - i != 3) {
         usage(stderr);

@@ -1,0 +1,260 @@
+/*
+ * The scorer on hand-made ground truth and detections whose scores are known
+ * exactly (SPEC section 7: samples every 0.5 px, tolerance max(2, 3*W/640)).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <cmocka.h>
+
+#include "evio.h"
+#include "score.h"
+
+static void seg(ev_paths *p, int tag, double x0, double y0, double x1, double y1)
+{
+    ev_paths_begin(p, tag);
+    ev_paths_add(p, x0, y0);
+    ev_paths_add(p, x1, y1);
+}
+
+static ev_score score_json(const ev_paths *gt, const ev_paths *dc, const char *json, double tol)
+{
+    ev_paths det;
+    ev_score s;
+    int w, h;
+    ev_paths_init(&det);
+    assert_int_equal(ev_parse_detections(json, "test", &det, &w, &h), 0);
+    ev_score_paths(gt, dc, &det, tol, &s);
+    ev_paths_free(&det);
+    return s;
+}
+
+static void test_tolerance(void **state)
+{
+    (void)state;
+    assert_true(ev_tolerance(320) == 2.0);
+    assert_true(ev_tolerance(640) == 3.0);
+    assert_true(ev_tolerance(1280) == 6.0);
+}
+
+static void test_sampling(void **state)
+{
+    ev_paths p;
+    ev_pt *s;
+    size_t n;
+    (void)state;
+    ev_paths_init(&p);
+    seg(&p, EV_TAG_LINE, 10, 10, 110, 10);  /* 100 px: 201 samples */
+    seg(&p, EV_TAG_LINE, 5, 5, 5, 5);       /* a point: 1 sample */
+    seg(&p, EV_TAG_LINE, 0, 0, 0.3, 0.4);   /* 0.5 px: 2 samples */
+    n = ev_sample(&p, 0.5, &s, NULL);
+    assert_int_equal(n, 201 + 1 + 2);
+    assert_true(s[200].x == 110.0 && s[1].x == 10.5);
+    free(s);
+    ev_paths_free(&p);
+}
+
+static void test_perfect(void **state)
+{
+    ev_paths gt;
+    ev_score s;
+    (void)state;
+    ev_paths_init(&gt);
+    seg(&gt, EV_TAG_LINE, 10, 10, 110, 10);
+    s = score_json(&gt, NULL,
+                   "{\"width\": 320, \"height\": 240, \"segments\": [{\"x0\": 10, \"y0\": 10, "
+                   "\"x1\": 110, \"y1\": 10, \"kind\": \"line\"}]}",
+                   2.0);
+    assert_true(s.p == 1.0 && s.r == 1.0 && s.f1 == 1.0);
+    assert_int_equal(s.gt_samples, 201);
+    assert_int_equal(s.line_matched, 1);
+    assert_int_equal(s.line_ok, 1);
+    ev_paths_free(&gt);
+}
+
+static void test_shifted(void **state)
+{
+    ev_paths gt;
+    ev_score s;
+    (void)state;
+    ev_paths_init(&gt);
+    seg(&gt, EV_TAG_LINE, 10, 10, 110, 10);
+    /* Within tolerance: still perfect. */
+    s = score_json(&gt, NULL,
+                   "{\"segments\":[{\"x0\":10,\"y0\":12,\"x1\":110,\"y1\":12,\"kind\":\"line\"}]}",
+                   2.0);
+    assert_true(s.f1 == 1.0);
+    /* 3 px beyond the tolerance: nothing right, nothing found. */
+    s = score_json(&gt, NULL,
+                   "{\"segments\":[{\"x0\":10,\"y0\":15,\"x1\":110,\"y1\":15,\"kind\":\"line\"}]}",
+                   2.0);
+    assert_true(s.p == 0.0 && s.r == 0.0 && s.f1 == 0.0);
+    assert_int_equal(s.line_matched, 0);
+    ev_paths_free(&gt);
+}
+
+static void test_half_length(void **state)
+{
+    ev_paths gt;
+    ev_score s;
+    (void)state;
+    ev_paths_init(&gt);
+    seg(&gt, EV_TAG_LINE, 10, 10, 110, 10);
+    /* Detection covers x 10..60; GT samples up to x = 62 are within 2 px: 105 of 201. */
+    s = score_json(&gt, NULL,
+                   "{\"segments\":[{\"x0\":10,\"y0\":10,\"x1\":60,\"y1\":10,\"kind\":\"line\"}]}",
+                   2.0);
+    assert_true(s.p == 1.0);
+    assert_int_equal(s.gt_hits, 105);
+    assert_true(s.r == 105.0 / 201.0);
+    assert_true(s.f1 == 2.0 * (105.0 / 201.0) / (1.0 + 105.0 / 201.0));
+    ev_paths_free(&gt);
+}
+
+static void test_dontcare(void **state)
+{
+    ev_paths gt, dc;
+    ev_score s;
+    (void)state;
+    ev_paths_init(&gt);
+    ev_paths_init(&dc);
+    seg(&gt, EV_TAG_LINE, 10, 10, 110, 10);
+    seg(&dc, EV_TAG_LINE, 10, 100, 110, 100);
+    /* The second detection lies on a don't-care part: ignored, precision stays 1. */
+    s = score_json(&gt, &dc,
+                   "{\"segments\":[{\"x0\":10,\"y0\":10,\"x1\":110,\"y1\":10,\"kind\":\"line\"},"
+                   "{\"x0\":10,\"y0\":101,\"x1\":110,\"y1\":101,\"kind\":\"line\"}]}",
+                   2.0);
+    assert_true(s.f1 == 1.0);
+    assert_int_equal(s.det_samples, 402);
+    assert_int_equal(s.det_counted, 201);
+    /* Without the don't-care list the same detection halves the precision. */
+    s = score_json(&gt, NULL,
+                   "{\"segments\":[{\"x0\":10,\"y0\":10,\"x1\":110,\"y1\":10,\"kind\":\"line\"},"
+                   "{\"x0\":10,\"y0\":101,\"x1\":110,\"y1\":101,\"kind\":\"line\"}]}",
+                   2.0);
+    assert_true(s.p == 0.5 && s.r == 1.0);
+    ev_paths_free(&gt);
+    ev_paths_free(&dc);
+}
+
+static void test_curve_polyline(void **state)
+{
+    ev_paths gt;
+    ev_score s;
+    (void)state;
+    ev_paths_init(&gt);
+    /* A right-angle "arc" from (0,50) via (50,0) to (100,50). */
+    ev_paths_begin(&gt, EV_TAG_CURVE);
+    ev_paths_add(&gt, 0, 50);
+    ev_paths_add(&gt, 50, 0);
+    ev_paths_add(&gt, 100, 50);
+    s = score_json(&gt, NULL,
+                   "{\"segments\":[{\"x0\":0,\"y0\":50,\"x1\":100,\"y1\":50,\"kind\":\"curve\","
+                   "\"polyline\":[[0,50],[50,0],[100,50]]}]}",
+                   2.0);
+    assert_true(s.f1 == 1.0);
+    assert_int_equal(s.curve_matched, 1);
+    assert_int_equal(s.curve_ok, 1);
+    /* Without a polyline the chord is scored: only its ends touch the arc. */
+    s = score_json(&gt, NULL,
+                   "{\"segments\":[{\"x0\":0,\"y0\":50,\"x1\":100,\"y1\":50,\"kind\":\"line\"}]}",
+                   2.0);
+    assert_true(s.p < 0.1 && s.r < 0.1);
+    assert_int_equal(s.curve_matched, 0);
+    /* Matched to the arc but called a line: a classification error. */
+    s = score_json(&gt, NULL,
+                   "{\"segments\":[{\"x0\":0,\"y0\":50,\"x1\":100,\"y1\":50,\"kind\":\"line\","
+                   "\"polyline\":[[0,50],[50,0],[100,50]]}]}",
+                   2.0);
+    assert_int_equal(s.curve_matched, 1);
+    assert_int_equal(s.curve_ok, 0);
+    ev_paths_free(&gt);
+}
+
+static void test_empty(void **state)
+{
+    ev_paths gt;
+    ev_score s;
+    (void)state;
+    ev_paths_init(&gt);
+    s = score_json(&gt, NULL, "{\"width\":320,\"height\":240,\"segments\":[]}", 2.0);
+    assert_true(s.f1 == 1.0);
+    s = score_json(&gt, NULL, "{\"segments\":[{\"x0\":1,\"y0\":1,\"x1\":9,\"y1\":1}]}", 2.0);
+    assert_true(s.p == 0.0 && s.r == 1.0 && s.f1 == 0.0);
+    seg(&gt, EV_TAG_LINE, 10, 10, 110, 10);
+    s = score_json(&gt, NULL, "{\"segments\":[]}", 2.0);
+    assert_true(s.p == 1.0 && s.r == 0.0 && s.f1 == 0.0);
+    ev_paths_free(&gt);
+}
+
+static void test_json(void **state)
+{
+    ev_paths det;
+    int w, h;
+    (void)state;
+    ev_paths_init(&det);
+    assert_int_equal(ev_parse_detections(
+                         " {\n \"width\" : 640 , \"version\": {\"a\": [1, 2, {\"b\": null}]},"
+                         " \"height\":480, \"segments\" : [ {\"axis\":\"horizontal\", \"x0\":1.5e1,"
+                         " \"y0\":-2, \"x1\":3, \"y1\":4, \"points\": 7, \"max_dev\": 0.25,"
+                         " \"kind\":\"curve\", \"ok\": true, \"s\": \"a\\\"b\"} ] } \n",
+                         "t", &det, &w, &h),
+                     0);
+    assert_int_equal(w, 640);
+    assert_int_equal(h, 480);
+    assert_int_equal(det.npieces, 1);
+    assert_int_equal(det.tag[0], EV_TAG_CURVE);
+    assert_true(det.pts[0].x == 15.0 && det.pts[0].y == -2.0 && det.pts[1].y == 4.0);
+    ev_paths_free(&det);
+    ev_paths_init(&det);
+    assert_int_equal(ev_parse_detections("{\"segments\":[{\"x0\":1,\"y0\":2,\"x1\":3}]}", "t",
+                                         &det, &w, &h),
+                     -1);
+    assert_int_equal(ev_parse_detections("{\"segments\":[", "t", &det, &w, &h), -1);
+    assert_int_equal(ev_parse_detections("{\"segments\":[]} x", "t", &det, &w, &h), -1);
+    assert_int_equal(ev_parse_detections("[]", "t", &det, &w, &h), -1);
+    ev_paths_free(&det);
+}
+
+static void test_mask(void **state)
+{
+    unsigned char mask[40 * 30] = {0};
+    ev_paths det;
+    ev_score s;
+    int x, w, h;
+    (void)state;
+    for (x = 5; x <= 34; x++) {
+        mask[15 * 40 + x] = 255;
+    }
+    ev_paths_init(&det);
+    assert_int_equal(ev_parse_detections("{\"segments\":[{\"x0\":5,\"y0\":15,\"x1\":34,\"y1\":15}]}",
+                                         "t", &det, &w, &h),
+                     0);
+    ev_score_mask(mask, 40, 30, &det, 2.0, &s);
+    assert_true(s.f1 == 1.0);
+    assert_int_equal(s.gt_samples, 30);
+    ev_paths_free(&det);
+    ev_paths_init(&det);
+    assert_int_equal(ev_parse_detections("{\"segments\":[{\"x0\":5,\"y0\":20,\"x1\":34,\"y1\":20}]}",
+                                         "t", &det, &w, &h),
+                     0);
+    ev_score_mask(mask, 40, 30, &det, 2.0, &s);
+    assert_true(s.f1 == 0.0);
+    ev_paths_free(&det);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_tolerance),   cmocka_unit_test(test_sampling),
+        cmocka_unit_test(test_perfect),     cmocka_unit_test(test_shifted),
+        cmocka_unit_test(test_half_length), cmocka_unit_test(test_dontcare),
+        cmocka_unit_test(test_curve_polyline), cmocka_unit_test(test_empty),
+        cmocka_unit_test(test_json),        cmocka_unit_test(test_mask),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
