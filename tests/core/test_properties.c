@@ -341,6 +341,33 @@ static void test_row_window_matches_frame(void **state)
     }
 }
 
+/* S8 of every energy 0..Emax for every radius up to 20, against the 64-bit formula. */
+static void test_s8_exhaustive(void **state)
+{
+    static uint32_t E[4096];
+    static uint8_t out[4096];
+    uint32_t m;
+    (void)state;
+    for (m = 1; m <= 20; m++) {
+        const uint64_t emax = symline_emax(m);
+        uint64_t e0;
+        for (e0 = 0; e0 <= emax; e0 += 4096) {
+            const uint32_t n = (uint32_t)((emax - e0 + 1 < 4096) ? emax - e0 + 1 : 4096);
+            uint32_t i;
+            for (i = 0; i < n; i++) {
+                E[i] = (uint32_t)(e0 + i);
+            }
+            assert_int_equal(symline_s8_row(E, n, m, out), SYMLINE_OK);
+            for (i = 0; i < n; i++) {
+                const uint64_t want = (510u * (emax - E[i]) + emax) / (2u * emax);
+                if (out[i] != want) {
+                    fail_msg("m=%u E=%u: S8 %u, want %u", m, E[i], out[i], (unsigned)want);
+                }
+            }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -351,6 +378,7 @@ int main(void)
         cmocka_unit_test(test_differential_against_formulas),
         cmocka_unit_test(test_s_points_never_adjacent),
         cmocka_unit_test(test_row_window_matches_frame),
+        cmocka_unit_test(test_s8_exhaustive),
     };
     return cmocka_run_group_tests_name("core_properties", tests, NULL, NULL);
 }
