@@ -27,6 +27,8 @@ const char *cli_axis_name(symline_axis axis);
 /* Subcommands: argc/argv start at the subcommand name. */
 int cmd_symmetry(int argc, char **argv);
 int cmd_extrema(int argc, char **argv);
+int cmd_lines(int argc, char **argv);   /* symline lines */
+int cmd_overlay(int argc, char **argv); /* symline overlay */
 int cmd_convert(int argc, char **argv);
 
 #endif

@@ -1,0 +1,163 @@
+/*
+ * symline — the line detector: from a gray frame to field-line segments (SPEC §4).
+ *
+ * One call, caller-owned memory, no allocation, no floating point:
+ *
+ *     symline_config cfg;
+ *     symline_config_default(&cfg);
+ *     size_t need = symline_detect_workspace_size(w, h, &cfg);   // bytes
+ *     ... ws = a static or stack buffer of `need` bytes ...
+ *     symline_segment segs[64];
+ *     symline_point pts[8192];
+ *     symline_result res = { segs, 64, 0, pts, 8192, 0, 0 };
+ *     symline_status st = symline_detect(&img, &cfg, ws, need, &res);
+ *
+ * Pipeline, run once per axis and scale ("pass"), fine scale first:
+ *  1. operator + extrema over a ring of rows (the frame is processed in
+ *     horizontal strips; working memory grows with width * radius, not with
+ *     the frame height);
+ *  2. line filter: an S point (symmetry maximum) becomes a line point when it
+ *     is a bright ridge across the line (contrast filter, default) or, the
+ *     paper's A1-S filter, when an A point lies near it across the line and
+ *     its gray value reaches the illumination threshold;
+ *  3. line points are kept as a raster-ordered list in the caller's point
+ *     storage with a per-row index, and traced from their end points (paper's
+ *     search order: straight ahead, then 45-degree, then 90-degree turns),
+ *     closed loops included;
+ *  4. chains are cut at sharp corners, parts already found by an earlier pass
+ *     (other axis, finer scale) are removed, pieces are fitted, classified as
+ *     line or curve by their largest distance to the chord, short ones dropped;
+ *  5. collinear line pieces interrupted by occluders are merged.
+ *
+ * Coordinates: image pixels, x right, y down, integers at pixel centres.
+ * "Q8" values are fixed point with 8 fraction bits (256 = 1 px).
+ */
+#ifndef SYMLINE_DETECT_H
+#define SYMLINE_DETECT_H
+
+#include "symline/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Which axes a detection runs. */
+typedef enum symline_axes {
+    SYMLINE_AXES_HORIZONTAL = 0, /* near-horizontal lines only (symmetry along columns) */
+    SYMLINE_AXES_VERTICAL = 1,   /* near-vertical lines only (symmetry along rows) */
+    SYMLINE_AXES_BOTH = 2        /* both; a line seen by both is reported once */
+} symline_axes;
+
+/* Which line filter turns S points into line points. */
+typedef enum symline_filter {
+    /* Bright ridge test: the S point's gray value c and the gray values lo, hi
+     * at radius+1 pixels on either side across the line must satisfy
+     * c - max(lo, hi) >= max(contrast_min, c * contrast_pct / 100).
+     * Relative, so it keeps working when the illumination changes. */
+    SYMLINE_FILTER_CONTRAST = 0,
+    /* The paper's A1-S pattern: an A point within a_distance pixels across
+     * the line. Use with illumination = 100 for the paper's baseline. */
+    SYMLINE_FILTER_PAPER = 1
+} symline_filter;
+
+/* Kind of a segment. */
+typedef enum symline_kind {
+    SYMLINE_KIND_LINE = 0, /* max_dev <= the curve threshold */
+    SYMLINE_KIND_CURVE = 1 /* max_dev above it: follow its points, not its chord */
+} symline_kind;
+
+/*
+ * Detector settings. Always start from symline_config_default(); the ranges
+ * are checked by symline_detect() (SYMLINE_ERR_CONFIG when violated).
+ */
+typedef struct symline_config {
+    symline_axes axes;     /* default SYMLINE_AXES_BOTH */
+    uint32_t radius;       /* symmetry radius m, 1..32; default 3 */
+    uint32_t levels;       /* scales: 1 = full resolution only, L = also 2x, 4x ..
+                              2^(L-1)x box-downsampled; 0 = auto (enough scales
+                              for lines width/16 px wide); 0..5, default 0 */
+    symline_filter filter; /* default SYMLINE_FILTER_CONTRAST */
+    uint32_t illumination; /* minimum gray value of a line point, 0..255
+                              (0 disables); default 0, the paper used 100 */
+    uint32_t a_distance;   /* paper filter: largest distance (px, at the pass's
+                              scale) of the A point across the line, 1..32;
+                              default 0 = the radius */
+    uint32_t contrast_pct; /* contrast filter: relative ridge height, % of the
+                              centre gray value, 0..100; default 15 */
+    uint32_t contrast_min; /* contrast filter: smallest ridge height in gray
+                              levels, 0..255; default 6 */
+    uint32_t min_length;   /* shortest reported piece, px along its points;
+                              default 12 */
+    uint32_t curve_dev_q8; /* curve threshold on max_dev, Q8 px; default 512 (2 px) */
+    uint32_t merge_gap;    /* merge collinear lines whose ends are at most this
+                              far apart, px; 0 disables; default 0xFFFFFFFF =
+                              width / 8 */
+    uint32_t merge_dev_q8; /* ... and whose ends lie within this distance of the
+                              other's line, Q8 px; default 640 (2.5 px) */
+} symline_config;
+
+/* Fills *cfg with the defaults documented above (no-op on NULL). */
+void symline_config_default(symline_config *cfg);
+
+/* One traced point, in full-resolution pixels. */
+typedef struct symline_point {
+    uint16_t x;
+    uint16_t y;
+} symline_point;
+
+/* One detected segment. */
+typedef struct symline_segment {
+    int32_t x0, y0, x1, y1; /* end points, Q8 px (pixel centres are multiples of 256) */
+    uint32_t max_dev;       /* largest distance of its points to the chord, Q8 px */
+    uint32_t first;         /* its points are result.points[first .. first+count-1], */
+    uint32_t count;         /* in tracing order (for merged lines: piece after piece) */
+    uint8_t kind;           /* symline_kind */
+    uint8_t axis;           /* symline_axis of the pass that found it */
+    uint8_t level;          /* scale: 0 full resolution, l = 2^l x downsampled */
+    uint8_t reserved;
+} symline_segment;
+
+/*
+ * Output storage, owned by the caller. Set the four array fields before the
+ * call; symline_detect() writes the counts and the flag.
+ *
+ * The point storage also serves as scratch for the raster list of line
+ * points of the pass being traced: give it room for about twice the line
+ * points of one pass (a 320x240 field view has a few thousand). When either
+ * array runs out, the detection still finishes with what fits and sets
+ * `truncated`; nothing is ever written beyond the capacities.
+ */
+typedef struct symline_result {
+    symline_segment *segments;
+    uint32_t segment_cap;
+    uint32_t segment_count;
+    symline_point *points;
+    uint32_t point_cap;
+    uint32_t point_count; /* points referenced by the segments, [0, point_count) */
+    uint8_t truncated;    /* 1 when segments or points did not fit */
+} symline_result;
+
+/*
+ * Bytes of workspace symline_detect() needs for a width x height frame with
+ * this configuration (the largest of its passes), or 0 when the arguments
+ * are invalid. Grows with width * radius (plus 4 bytes per row for the row
+ * index), never with width * height.
+ */
+size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const symline_config *cfg);
+
+/*
+ * Detects line segments. ws: ws_size bytes (any alignment) of scratch the
+ * call may overwrite. out: caller storage as above; out->segments and
+ * out->points may be NULL only with a capacity of 0.
+ * Returns SYMLINE_OK (check out->truncated), ERR_NULL, ERR_SIZE, ERR_STRIDE,
+ * ERR_CONFIG (a field out of range, radius included), or ERR_BUFFER
+ * (ws_size too small). On an error nothing in *out is changed.
+ */
+symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
+                              size_t ws_size, symline_result *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SYMLINE_DETECT_H */

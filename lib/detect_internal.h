@@ -1,0 +1,105 @@
+/*
+ * Internal interfaces between the detector's modules (linefilter, linepoints,
+ * tracer, segments, detect). Not part of the public API; the tests use them
+ * to run the same stages over a full-frame path.
+ */
+#ifndef SYMLINE_DETECT_INTERNAL_H
+#define SYMLINE_DETECT_INTERNAL_H
+
+#include "symline/detect.h"
+#include "internal.h"
+
+/* Marks a point of the raster list as visited by the tracer (y is never 65535). */
+#define SL_VISITED 0xFFFFu
+
+/* One pass: an axis at one scale. Coordinates of a pass are on its grid. */
+typedef struct sl_pass {
+    symline_axis axis;
+    uint32_t level;   /* grid = frame box-downsampled by 2^level */
+    uint32_t w, h;    /* grid size: width >> level, height >> level */
+    uint32_t m;       /* radius */
+    uint32_t k;       /* contrast sample offset across the line: m + 1 */
+    uint32_t a_dist;  /* A point search distance; 0 for the contrast filter */
+    uint32_t lag;     /* longest accepted plateau: end - marked index <= lag (= m) */
+    symline_filter filter;
+    uint32_t illum, pct, cmin;
+} sl_pass;
+
+/* linefilter.c: fills a pass from the configuration (no range checks). */
+void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
+                   uint32_t width, uint32_t height);
+
+/* linefilter.c: the gray-value part of the line filter for an S point with
+ * centre value c and values lo, hi at k pixels before and after it across the
+ * line (clamped at the border). 1 = line point (the paper filter's A point
+ * test is done by the caller). */
+int sl_filter_gray(const sl_pass *p, uint32_t c, uint32_t lo, uint32_t hi);
+
+/* linepoints.c: box-downsampled row y of the pass grid into out (p->w bytes);
+ * acc: scratch of img->width uint16_t. Level 0 copies the row. */
+void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_t *acc,
+                 uint8_t *out);
+
+/* linepoints.c: workspace bytes of sl_collect() (row index excluded). */
+size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width);
+
+/*
+ * linepoints.c: the line points of one pass, in raster order, grid
+ * coordinates, written to pts[0 .. *n-1] (at most cap); row_start[y] is the
+ * index of the first point of grid row y, row_start[h] = *n (h+1 entries).
+ * Sets *truncated when cap was too small. Strip processing: only a ring of
+ * rows is held.
+ */
+symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
+                          symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
+                          uint8_t *truncated);
+
+/* tracer.c: iterator over the chains of a raster list. */
+typedef struct sl_tracer {
+    symline_point *pts; /* raster list; visited entries get y = SL_VISITED */
+    uint32_t n;
+    const uint32_t *row_start;
+    uint32_t h;
+    uint32_t scan;  /* next raster index to try as a start */
+    uint32_t phase; /* 0: starts at B points, 1: everything left (loops) */
+} sl_tracer;
+
+void sl_tracer_init(sl_tracer *t, symline_point *pts, uint32_t n, const uint32_t *row_start,
+                    uint32_t h);
+
+/* Number of line points among the 8 neighbours of (x, y) (visited or not). */
+uint32_t sl_neighbours(const sl_tracer *t, uint32_t x, uint32_t y);
+
+/*
+ * Next chain, written to dst[0 .. *count-1] in tracing order (grid
+ * coordinates). Returns 1 for a chain, 0 when none is left. A chain longer
+ * than cap is cut at cap points and *cut is set.
+ */
+int sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count,
+                   uint8_t *cut);
+
+/* segments.c */
+uint64_t sl_isqrt64(uint64_t v);
+
+/* Q8 full-resolution coordinate of grid coordinate v at a level (block centre). */
+static inline int32_t sl_q8(uint32_t v, uint32_t level)
+{
+    return (int32_t)(((v << level) << 8) + (((1u << level) - 1u) << 7));
+}
+
+/* Length of the first piece of chain p[0..n-1] before a sharp corner (n if none). */
+uint32_t sl_corner_cut(const symline_point *p, uint32_t n);
+
+/* Fits a segment to p[0..n-1] (grid coordinates at `level`): ends, max_dev, kind. */
+void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
+            symline_segment *s);
+
+/* 1 when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
+ * (its chord for lines, its points for curves). */
+int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
+                    int32_t tol_q8);
+
+/* Merges collinear line segments of r (points kept contiguous by rotation). */
+void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8);
+
+#endif /* SYMLINE_DETECT_INTERNAL_H */

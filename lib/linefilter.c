@@ -1,0 +1,53 @@
+/*
+ * The line filter: which S points (symmetry maxima) are line points.
+ *
+ * A field line is a bright ridge across its direction. The contrast filter
+ * asks exactly that of the S point: its gray value must stand above the gray
+ * values k = m+1 pixels to both sides, by a share of its own value (so the
+ * test does not change when the whole frame gets darker or brighter) and by a
+ * few gray levels (so sensor noise on a dark carpet does not pass). k = m+1
+ * also rejects S points inside regions wider than the operator's reach.
+ * The paper's A1-S filter only asks for an A point nearby (done by the
+ * caller, which holds the extrema) and an absolute illumination threshold.
+ */
+#include "detect_internal.h"
+
+void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
+                   uint32_t width, uint32_t height)
+{
+    p->axis = axis;
+    p->level = level;
+    p->w = width >> level;
+    p->h = height >> level;
+    p->m = cfg->radius;
+    p->k = cfg->radius + 1u;
+    p->filter = cfg->filter;
+    p->a_dist = 0u;
+    if (cfg->filter == SYMLINE_FILTER_PAPER) {
+        p->a_dist = cfg->a_distance != 0u ? cfg->a_distance : cfg->radius;
+    }
+    p->lag = cfg->radius;
+    p->illum = cfg->illumination;
+    p->pct = cfg->contrast_pct;
+    p->cmin = cfg->contrast_min;
+}
+
+int sl_filter_gray(const sl_pass *p, uint32_t c, uint32_t lo, uint32_t hi)
+{
+    uint32_t side, need;
+    if (c < p->illum) {
+        return 0;
+    }
+    if (p->filter == SYMLINE_FILTER_PAPER) {
+        return 1;
+    }
+    side = lo > hi ? lo : hi;
+    if (c <= side) {
+        return 0;
+    }
+    need = (c * p->pct + 99u) / 100u;
+    if (need < p->cmin) {
+        need = p->cmin;
+    }
+    return c - side >= need;
+}

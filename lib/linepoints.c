@@ -1,0 +1,348 @@
+/*
+ * Line points of one pass, streamed over a ring of rows.
+ *
+ * Vertical axis (symmetry along rows): every grid row is complete on its own:
+ * energies, extrema and the filter run row by row.
+ *
+ * Horizontal axis (symmetry along columns): energies of grid row t need rows
+ * t-m .. t+m; the column-run follower reports an extremum of a run [a, b]
+ * when row b+1 arrives, at row (a+b) div 2. Extrema of plateaus longer than
+ * 2*lag+1 rows are not line points (no thin line has them), so every
+ * extremum of row y is known once row y+lag+1 has been pushed, and the
+ * decision for row y (which looks a_dist rows of extrema and k rows of gray
+ * values up and down) is taken delta = a_dist+lag+1 rows later. The ring holds
+ * just those rows: working memory grows with width * radius, not with height.
+ *
+ * Output: points appended in raster order, so the list is its own spatial
+ * index together with row_start.
+ */
+#include "detect_internal.h"
+#include "symline/extrema.h"
+#include "symline/symmetry.h"
+
+void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_t *acc,
+                 uint8_t *out)
+{
+    const uint32_t s = 1u << p->level;
+    const uint32_t shift = 2u * p->level;
+    const uint32_t span = p->w * s;
+    uint32_t x, d;
+    const uint8_t *src = img->data + (size_t)(y * s) * img->stride;
+    if (p->level == 0u) {
+        for (x = 0; x < p->w; x++) {
+            out[x] = src[x];
+        }
+        return;
+    }
+    for (x = 0; x < span; x++) {
+        acc[x] = src[x];
+    }
+    for (d = 1u; d < s; d++) {
+        const uint8_t *r = src + (size_t)d * img->stride;
+        for (x = 0; x < span; x++) {
+            acc[x] = (uint16_t)(acc[x] + r[x]);
+        }
+    }
+    for (x = 0; x < p->w; x++) {
+        uint32_t sum = 0u;
+        for (d = 0; d < s; d++) {
+            sum += acc[x * s + d];
+        }
+        out[x] = (uint8_t)((sum + (1u << (shift - 1u))) >> shift);
+    }
+}
+
+/* Rows of the horizontal-axis rings. */
+static uint32_t h_delta(const sl_pass *p)
+{
+    return p->a_dist + p->lag + 1u;
+}
+static uint32_t h_map_rows(const sl_pass *p)
+{
+    return h_delta(p) + p->a_dist;
+}
+static uint32_t h_gray_rows(const sl_pass *p)
+{
+    return h_delta(p) + p->k + p->m + 1u;
+}
+
+size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
+{
+    size_t n = 6u * SL_ALIGN;
+    const size_t w = p->w;
+    n += sl_align_up(w * sizeof(uint32_t)); /* energies */
+    if (p->level > 0u) {
+        n += sl_align_up((size_t)img_width * sizeof(uint16_t)); /* box accumulator */
+    }
+    if (p->axis == SYMLINE_AXIS_VERTICAL) {
+        n += sl_align_up(w);     /* extrema of the row */
+        if (p->level > 0u) {
+            n += sl_align_up(w); /* the grid row */
+        }
+        return n;
+    }
+    n += symline_colrun_buffer_size(p->w);
+    n += sl_align_up(w * sizeof(symline_extremum));
+    n += sl_align_up(w * h_map_rows(p));
+    if (p->level > 0u) {
+        n += sl_align_up(w * h_gray_rows(p));
+    }
+    n += sl_align_up((2u * (size_t)p->m + 1u) * sizeof(const uint8_t *));
+    return n;
+}
+
+static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x, uint32_t y,
+                       uint8_t *truncated)
+{
+    if (*n >= cap) {
+        *truncated = 1u;
+        return;
+    }
+    pts[*n].x = (uint16_t)x;
+    pts[*n].y = (uint16_t)y;
+    (*n)++;
+}
+
+/* ---- vertical axis: along rows ---- */
+
+/* Extrema of one row with the plateau limit: map gets 0, A or S per pixel. */
+static void row_extrema(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
+{
+    uint32_t a = 0u, i;
+    for (i = 0; i < n; i++) {
+        map[i] = SYMLINE_MAP_NONE;
+    }
+    for (i = 1u; i < n; i++) {
+        if (E[i] == E[a]) {
+            continue;
+        }
+        if (a >= 1u) {
+            const uint32_t mid = (a + i - 1u) / 2u;
+            if (i - 1u - mid <= lag) {
+                if (E[a - 1u] > E[a] && E[i] > E[i - 1u]) {
+                    map[mid] = SYMLINE_MAP_S;
+                } else if (E[a - 1u] < E[a] && E[i] < E[i - 1u]) {
+                    map[mid] = SYMLINE_MAP_A;
+                }
+            }
+        }
+        a = i;
+    }
+}
+
+static int a_near_row(const uint8_t *map, uint32_t n, uint32_t x, uint32_t d)
+{
+    const uint32_t lo = x >= d ? x - d : 0u;
+    const uint32_t hi = x + d < n ? x + d : n - 1u;
+    uint32_t i;
+    for (i = lo; i <= hi; i++) {
+        if (map[i] == SYMLINE_MAP_A) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static symline_status collect_vertical(const symline_image *img, const sl_pass *p, uint8_t *cur,
+                                       uint8_t *end, symline_point *pts, uint32_t cap,
+                                       uint32_t *n, uint32_t *row_start, uint8_t *truncated)
+{
+    uint32_t *E = (uint32_t *)sl_carve(&cur, end, (size_t)p->w * sizeof(uint32_t));
+    uint8_t *map = (uint8_t *)sl_carve(&cur, end, p->w);
+    uint16_t *acc = NULL;
+    uint8_t *grow = NULL;
+    uint32_t y, x;
+    const uint32_t w = p->w, k = p->k;
+    if (p->level > 0u) {
+        acc = (uint16_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+        grow = (uint8_t *)sl_carve(&cur, end, p->w);
+        if (acc == NULL || grow == NULL) {
+            return SYMLINE_ERR_BUFFER;
+        }
+    }
+    if (E == NULL || map == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    for (y = 0; y < p->h; y++) {
+        const uint8_t *row;
+        row_start[y] = *n;
+        if (p->level == 0u) {
+            row = img->data + (size_t)y * img->stride;
+        } else {
+            sl_grid_row(img, p, y, acc, grow);
+            row = grow;
+        }
+        (void)symline_energy_row(row, w, p->m, E);
+        row_extrema(E, w, p->lag, map);
+        for (x = 0; x < w; x++) {
+            if (map[x] != SYMLINE_MAP_S) {
+                continue;
+            }
+            if (!sl_filter_gray(p, row[x], row[x >= k ? x - k : 0u],
+                                row[x + k < w ? x + k : w - 1u])) {
+                continue;
+            }
+            if (p->a_dist != 0u && !a_near_row(map, w, x, p->a_dist)) {
+                continue;
+            }
+            push_point(pts, cap, n, x, y, truncated);
+        }
+    }
+    row_start[p->h] = *n;
+    return SYMLINE_OK;
+}
+
+/* ---- horizontal axis: down the columns, over rings ---- */
+
+typedef struct hring {
+    const symline_image *img;
+    const sl_pass *p;
+    uint8_t *map;  /* map_rows rows of w */
+    uint8_t *gray; /* gray_rows rows of w (levels > 0) */
+    uint32_t map_rows, gray_rows;
+} hring;
+
+static const uint8_t *h_row(const hring *r, uint32_t y)
+{
+    if (r->p->level == 0u) {
+        return r->img->data + (size_t)y * r->img->stride;
+    }
+    return r->gray + (size_t)(y % r->gray_rows) * r->p->w;
+}
+
+static uint8_t *h_map(const hring *r, uint32_t y)
+{
+    return r->map + (size_t)(y % r->map_rows) * r->p->w;
+}
+
+static int a_near_col(const hring *r, uint32_t x, uint32_t y)
+{
+    const uint32_t d = r->p->a_dist;
+    const uint32_t lo = y >= d ? y - d : 0u;
+    const uint32_t hi = y + d < r->p->h ? y + d : r->p->h - 1u;
+    uint32_t i;
+    for (i = lo; i <= hi; i++) {
+        if (h_map(r, i)[x] == SYMLINE_MAP_A) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap, uint32_t *n,
+                     uint32_t *row_start, uint8_t *truncated)
+{
+    const sl_pass *p = r->p;
+    const uint8_t *map = h_map(r, y);
+    const uint8_t *c = h_row(r, y);
+    const uint8_t *lo = h_row(r, y >= p->k ? y - p->k : 0u);
+    const uint8_t *hi = h_row(r, y + p->k < p->h ? y + p->k : p->h - 1u);
+    uint32_t x;
+    row_start[y] = *n;
+    for (x = 0; x < p->w; x++) {
+        if (map[x] != SYMLINE_MAP_S) {
+            continue;
+        }
+        if (!sl_filter_gray(p, c[x], lo[x], hi[x])) {
+            continue;
+        }
+        if (p->a_dist != 0u && !a_near_col(r, x, y)) {
+            continue;
+        }
+        push_point(pts, cap, n, x, y, truncated);
+    }
+}
+
+static symline_status collect_horizontal(const symline_image *img, const sl_pass *p,
+                                         uint8_t *cur, uint8_t *end, symline_point *pts,
+                                         uint32_t cap, uint32_t *n, uint32_t *row_start,
+                                         uint8_t *truncated)
+{
+    hring r;
+    symline_colrun cr;
+    const uint32_t w = p->w, h = p->h, m = p->m;
+    const uint32_t delta = h_delta(p);
+    const size_t cr_bytes = symline_colrun_buffer_size(w);
+    uint32_t *E = (uint32_t *)sl_carve(&cur, end, (size_t)w * sizeof(uint32_t));
+    void *cr_buf = sl_carve(&cur, end, cr_bytes);
+    symline_extremum *ev =
+        (symline_extremum *)sl_carve(&cur, end, (size_t)w * sizeof(symline_extremum));
+    const uint8_t **rows;
+    uint16_t *acc = NULL;
+    uint32_t t, y, produced = 0u, i;
+    r.img = img;
+    r.p = p;
+    r.map_rows = h_map_rows(p);
+    r.gray_rows = h_gray_rows(p);
+    r.map = (uint8_t *)sl_carve(&cur, end, (size_t)w * r.map_rows);
+    r.gray = NULL;
+    if (p->level > 0u) {
+        r.gray = (uint8_t *)sl_carve(&cur, end, (size_t)w * r.gray_rows);
+        acc = (uint16_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+        if (r.gray == NULL || acc == NULL) {
+            return SYMLINE_ERR_BUFFER;
+        }
+    }
+    rows = (const uint8_t **)sl_carve(&cur, end, (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
+    if (E == NULL || cr_buf == NULL || ev == NULL || r.map == NULL || rows == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    (void)symline_colrun_init(&cr, w, cr_buf, cr_bytes);
+    for (t = 0; t < h; t++) {
+        uint32_t count = 0u, j;
+        if (p->level > 0u) {
+            const uint32_t need = (t + m < h) ? t + m : h - 1u;
+            while (produced <= need) {
+                sl_grid_row(img, p, produced, acc, r.gray + (size_t)(produced % r.gray_rows) * w);
+                produced++;
+            }
+        }
+        for (j = 0; j <= 2u * m; j++) {
+            const uint32_t yy = t + j; /* row t - m + j, offset by m to stay unsigned */
+            rows[j] = (yy >= m && yy - m < h) ? h_row(&r, yy - m) : NULL;
+        }
+        (void)symline_energy_across(rows, m, w, E);
+        if (t >= 1u) {
+            uint8_t *mr = h_map(&r, t - 1u);
+            for (i = 0; i < w; i++) {
+                mr[i] = SYMLINE_MAP_NONE;
+            }
+        }
+        (void)symline_colrun_push(&cr, E, ev, w, &count);
+        for (i = 0; i < count; i++) {
+            if (t - 1u - ev[i].y <= p->lag) {
+                h_map(&r, ev[i].y)[ev[i].x] = ev[i].kind;
+            }
+        }
+        if (t >= delta) {
+            h_decide(&r, t - delta, pts, cap, n, row_start, truncated);
+        }
+    }
+    {
+        uint8_t *mr = h_map(&r, h - 1u);
+        for (i = 0; i < w; i++) {
+            mr[i] = SYMLINE_MAP_NONE;
+        }
+    }
+    for (y = (h > delta) ? h - delta : 0u; y < h; y++) {
+        h_decide(&r, y, pts, cap, n, row_start, truncated);
+    }
+    row_start[h] = *n;
+    return SYMLINE_OK;
+}
+
+symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
+                          symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
+                          uint8_t *truncated)
+{
+    uint8_t *cur = (uint8_t *)ws;
+    uint8_t *end = cur + ws_size;
+    *n = 0u;
+    if (p->w == 0u || p->h == 0u) {
+        return SYMLINE_ERR_SIZE;
+    }
+    if (p->axis == SYMLINE_AXIS_VERTICAL) {
+        return collect_vertical(img, p, cur, end, pts, cap, n, row_start, truncated);
+    }
+    return collect_horizontal(img, p, cur, end, pts, cap, n, row_start, truncated);
+}

@@ -1,0 +1,213 @@
+/*
+ * The line tracer over a raster-ordered list of line points.
+ *
+ * The list with its per-row index is the only "image" the tracer sees: a
+ * neighbour lookup is a binary search in one row, so no full-frame map is
+ * ever needed. Visited points are marked in place (y = SL_VISITED); x stays,
+ * so the rows remain sorted.
+ *
+ * Rules (SPEC §4, with what the paper leaves open made definite):
+ *  - classification by the number of line points among the 8 neighbours:
+ *    0 = type A (ignored), 1 = type B (end point), 2+ = type C (inside);
+ *  - phase 0 starts at every unvisited B point, in raster order;
+ *  - each step searches, relative to the last step direction d: d, then
+ *    d+45, d-45, then d+90, d-90 degrees (counter-clockwise first in image
+ *    coordinates, y down); the first unvisited line point is taken; a point
+ *    is never visited twice; no candidate left ends the chain;
+ *  - at a junction the chain therefore runs straight on when it can; a branch
+ *    that arrives later stops next to the visited line (T), or, when it is
+ *    traced first, turns into the crossing line; the segment stage cuts chains
+ *    at sharp corners and merges collinear pieces again, so a T or X yields
+ *    its straight lines whatever the tracing order;
+ *  - phase 1 takes what phase 0 left (closed loops without an end point,
+ *    rests behind junctions): it starts at the first unvisited point in raster
+ *    order that has an unvisited neighbour, traces forward, then backward
+ *    from the start, and joins the two halves.
+ */
+#include "detect_internal.h"
+
+static const int8_t DX[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+static const int8_t DY[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+/* Search order relative to the last direction: straight, 45-degree, 90-degree turns. */
+static const int8_t TURN[5] = {0, 1, -1, 2, -2};
+
+void sl_tracer_init(sl_tracer *t, symline_point *pts, uint32_t n, const uint32_t *row_start,
+                    uint32_t h)
+{
+    t->pts = pts;
+    t->n = n;
+    t->row_start = row_start;
+    t->h = h;
+    t->scan = 0u;
+    t->phase = 0u;
+}
+
+/* Index of point (x, y) in the list, or -1. x, y may be out of range (then -1). */
+static int32_t find(const sl_tracer *t, int32_t x, int32_t y)
+{
+    uint32_t lo, hi;
+    if (x < 0 || y < 0 || (uint32_t)y >= t->h || x > 65535) {
+        return -1;
+    }
+    lo = t->row_start[y];
+    hi = t->row_start[y + 1];
+    while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2u;
+        const int32_t mx = (int32_t)t->pts[mid].x;
+        if (mx == x) {
+            return (int32_t)mid;
+        }
+        if (mx < x) {
+            lo = mid + 1u;
+        } else {
+            hi = mid;
+        }
+    }
+    return -1;
+}
+
+uint32_t sl_neighbours(const sl_tracer *t, uint32_t x, uint32_t y)
+{
+    uint32_t d, c = 0u;
+    for (d = 0; d < 8u; d++) {
+        if (find(t, (int32_t)x + DX[d], (int32_t)y + DY[d]) >= 0) {
+            c++;
+        }
+    }
+    return c;
+}
+
+static int unvisited(const sl_tracer *t, int32_t idx)
+{
+    return idx >= 0 && t->pts[idx].y != SL_VISITED;
+}
+
+static void visit(sl_tracer *t, int32_t idx)
+{
+    t->pts[idx].y = SL_VISITED;
+}
+
+/* First unvisited neighbour of (x, y) in direction order 0..7, or -1; its direction in *dir. */
+static int32_t any_unvisited(const sl_tracer *t, int32_t x, int32_t y, uint32_t *dir)
+{
+    uint32_t d;
+    for (d = 0; d < 8u; d++) {
+        const int32_t idx = find(t, x + DX[d], y + DY[d]);
+        if (unvisited(t, idx)) {
+            *dir = d;
+            return idx;
+        }
+    }
+    return -1;
+}
+
+/* Follows the line from (x, y), last step direction dir; appends to dst from *pos. */
+static void follow(sl_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_point *dst,
+                   uint32_t cap, uint32_t *pos, uint8_t *cut)
+{
+    for (;;) {
+        uint32_t o;
+        int found = 0;
+        if (*pos >= cap) {
+            *cut = 1u;
+            return;
+        }
+        for (o = 0; o < 5u; o++) {
+            const uint32_t d = (uint32_t)((int32_t)dir + TURN[o]) & 7u;
+            const int32_t nx = x + DX[d], ny = y + DY[d];
+            const int32_t idx = find(t, nx, ny);
+            if (unvisited(t, idx)) {
+                visit(t, idx);
+                dst[*pos].x = (uint16_t)nx;
+                dst[*pos].y = (uint16_t)ny;
+                (*pos)++;
+                x = nx;
+                y = ny;
+                dir = d;
+                found = 1;
+                break;
+            }
+        }
+        if (!found) {
+            return;
+        }
+    }
+}
+
+static void reverse(symline_point *p, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0; i < n / 2u; i++) {
+        const symline_point tmp = p[i];
+        p[i] = p[n - 1u - i];
+        p[n - 1u - i] = tmp;
+    }
+}
+
+/* Takes the first step to neighbour idx (direction dir) and follows from there. */
+static void step_and_follow(sl_tracer *t, int32_t x, int32_t y, int32_t idx, uint32_t dir,
+                            symline_point *dst, uint32_t cap, uint32_t *pos, uint8_t *cut)
+{
+    if (*pos >= cap) {
+        *cut = 1u;
+        return;
+    }
+    visit(t, idx);
+    dst[*pos].x = (uint16_t)(x + DX[dir]);
+    dst[*pos].y = (uint16_t)(y + DY[dir]);
+    (*pos)++;
+    follow(t, x + DX[dir], y + DY[dir], dir, dst, cap, pos, cut);
+}
+
+int sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count, uint8_t *cut)
+{
+    *count = 0u;
+    if (cap == 0u) {
+        *cut = 1u;
+        return 0;
+    }
+    while (t->phase < 2u) {
+        while (t->scan < t->n) {
+            const uint32_t i = t->scan;
+            uint32_t x, y, dir = 0u, pos;
+            int32_t first;
+            if (t->pts[i].y == SL_VISITED) {
+                t->scan++;
+                continue;
+            }
+            x = t->pts[i].x;
+            y = t->pts[i].y;
+            if (t->phase == 0u && sl_neighbours(t, x, y) != 1u) {
+                t->scan++;
+                continue;
+            }
+            first = any_unvisited(t, (int32_t)x, (int32_t)y, &dir);
+            if (first < 0) {
+                /* Nothing left to follow from here: a lone rest of a traced line. */
+                visit(t, (int32_t)i);
+                t->scan++;
+                continue;
+            }
+            visit(t, (int32_t)i);
+            dst[0].x = (uint16_t)x;
+            dst[0].y = (uint16_t)y;
+            pos = 1u;
+            step_and_follow(t, (int32_t)x, (int32_t)y, first, dir, dst, cap, &pos, cut);
+            if (t->phase == 1u) {
+                /* Started inside a line: trace the other half and put it in front. */
+                const uint32_t fwd = pos;
+                first = any_unvisited(t, (int32_t)x, (int32_t)y, &dir);
+                if (first >= 0 && pos < cap) {
+                    step_and_follow(t, (int32_t)x, (int32_t)y, first, dir, dst, cap, &pos, cut);
+                    reverse(dst, pos);
+                    reverse(dst + (pos - fwd), fwd);
+                }
+            }
+            *count = pos;
+            return 1;
+        }
+        t->phase++;
+        t->scan = 0u;
+    }
+    return 0;
+}

@@ -1,0 +1,25 @@
+/*
+ * The JSON form of a detection (SPEC §7), shared by the host CLI and the
+ * capture application. Host-only code.
+ */
+#ifndef SYMLINE_TOOLS_SEGJSON_H
+#define SYMLINE_TOOLS_SEGJSON_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "symline/detect.h"
+
+/*
+ * Writes one JSON object for the result of a width x height frame to f:
+ *   {"width": W, "height": H, "truncated": false,
+ *    "segments": [{"x0":..,"y0":..,"x1":..,"y1":..,"points":N,"max_dev":..,
+ *                  "kind":"line"|"curve","axis":"horizontal"|"vertical","level":L
+ *                  [, "polyline": [[x,y],...]]}, ...]}
+ * Coordinates and max_dev in pixels (Q8 values printed with 2 decimals).
+ * Curves carry a polyline through every 4th of their points and the last one.
+ * Ends with a newline. Returns 0, or -1 when writing failed.
+ */
+int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r);
+
+#endif
