@@ -111,6 +111,16 @@ static uint32_t max_dev_q8(const symline_point *p, uint32_t n, uint32_t level, i
     return best;
 }
 
+/* A curve bends away from its chord by more than the threshold and by more
+ * than 1/32 of the chord: a straight line's pixel steps and noise stay near
+ * 1-2 px however long it is, while an arc's sagitta grows with its chord. */
+static int sl_is_curve(const symline_segment *s, uint32_t thr)
+{
+    const int64_t dx = (int64_t)s->x1 - s->x0, dy = (int64_t)s->y1 - s->y0;
+    const uint64_t chord = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
+    return s->max_dev > thr && (uint64_t)s->max_dev * 32u > chord;
+}
+
 void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
             symline_segment *s)
 {
@@ -120,7 +130,7 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
     s->x1 = sl_q8(p[n - 1u].x, level);
     s->y1 = sl_q8(p[n - 1u].y, level);
     s->max_dev = max_dev_q8(p, n, level, s->x0, s->y0, s->x1, s->y1);
-    s->kind = (uint8_t)(s->max_dev > thr ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
+    s->kind = (uint8_t)(sl_is_curve(s, thr) ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     s->level = (uint8_t)level;
     s->reserved = 0u;
 }
