@@ -188,7 +188,7 @@ static int place_cylinder(rd_scene *s, uint64_t *rng, rd_cylinder *c)
     dist = hypot(gx - cam->pos.x, gy - cam->pos.y);
     c->r = rd_rand_uniform(rng, 0.08, 0.15);
     c->h = rd_rand_uniform(rng, 0.35, 0.6);
-    if (dist < 0.6 + c->r || dist > 4.0) {
+    if (dist < 0.8 + c->r || dist > 4.0) {
         return -1;
     }
     /* Stand the cylinder's axis a radius behind the ground point. */
@@ -290,20 +290,25 @@ void rd_scene_random(rd_scene *s, rd_set set, int width, int height, uint64_t se
         s->gain = rd_rand_uniform(&rng, 0.18, 0.32);
         break;
     case RD_OVEREXPOSED:
-        s->gain = rd_rand_uniform(&rng, 1.6, 2.3);
+        /* Lines clip at 255 while most of the carpet stays below it. */
+        s->gain = rd_rand_uniform(&rng, 1.4, 1.9);
         break;
     default:
         s->gain = rd_rand_uniform(&rng, 0.85, 1.15);
         break;
     }
-    s->grad_x = rd_rand_uniform(&rng, -0.25, 0.25);
-    s->grad_y = rd_rand_uniform(&rng, -0.25, 0.25);
-    s->vignette = rd_rand_uniform(&rng, 0.05, 0.35);
-    if (rd_rand_uniform(&rng, 0.0, 1.0) < 0.5) {
-        s->spot_x = rd_rand_uniform(&rng, 0.0, 1.0) * width;
-        s->spot_y = rd_rand_uniform(&rng, 0.0, 1.0) * height;
-        s->spot_r = rd_rand_uniform(&rng, 0.15, 0.4) * width;
-        s->spot_a = rd_rand_uniform(&rng, 0.1, 0.35);
+    {
+        /* Gentler lighting on overexposed scenes, so the carpet does not clip as well. */
+        double light = set == RD_OVEREXPOSED ? 0.6 : 1.0;
+        s->grad_x = light * rd_rand_uniform(&rng, -0.25, 0.25);
+        s->grad_y = light * rd_rand_uniform(&rng, -0.25, 0.25);
+        s->vignette = rd_rand_uniform(&rng, 0.05, 0.35);
+        if (rd_rand_uniform(&rng, 0.0, 1.0) < 0.5) {
+            s->spot_x = rd_rand_uniform(&rng, 0.0, 1.0) * width;
+            s->spot_y = rd_rand_uniform(&rng, 0.0, 1.0) * height;
+            s->spot_r = rd_rand_uniform(&rng, 0.15, 0.4) * width;
+            s->spot_a = light * rd_rand_uniform(&rng, 0.1, 0.35);
+        }
     }
     s->blur = rd_rand_uniform(&rng, 0.4, 1.0);
     s->noise = rd_rand_uniform(&rng, 1.5, 4.0);

@@ -1,0 +1,289 @@
+#!/bin/sh
+# Evaluates `symline lines` on every set and prints one table per set kind:
+#   - the given synthetic scenes DATA_DIR/synth (ground truth in the synth README formats),
+#   - the rendered sets normal, dark, overexposed, occluded, circle at 320x240 and
+#     640x480 (symline-render, fixed seeds),
+#   - the real frames DATA_DIR/field: F1 against a line mask where one exists, and
+#     stability F1 against the same frame with brightness x0.5, +40 and -40.
+# Every set is run with each filter side by side (default: the paper's A1-S filter
+# and the shipped default). Scoring: SPEC section 7, see docs/evaluation.md.
+#
+# usage: tools/eval/evaluate.sh DATA_DIR [options]
+#   --build DIR      build directory (default: REPO/build; configured and built when needed)
+#   --out DIR        work folder for renders and detections (default: REPO/out/eval)
+#   --filter NAME    a column to compare: "default" (no --filter option) or a value of
+#                    `symline lines --filter`; repeat for several (default: paper, default)
+#   --count N        images per rendered set and size (default 10)
+#   --seed N         renderer seed (default 2026)
+#   --sizes "WxH .." rendered sizes (default "320x240 640x480")
+#   --opts "..."     extra options for every `symline lines` run
+#   --per-image      also print one row per image
+#   --jobs N         parallel jobs (default 2)
+set -eu
+
+usage() { sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
+
+[ $# -ge 1 ] || { usage >&2; exit 2; }
+case $1 in -h|--help) usage; exit 0 ;; esac
+DATA=$1
+shift
+REPO=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=$REPO/build
+OUT=$REPO/out/eval
+FILTERS=
+COUNT=10
+SEED=2026
+SIZES="320x240 640x480"
+OPTS=
+PER_IMAGE=0
+JOBS=2
+while [ $# -gt 0 ]; do
+    case $1 in
+        --build) BUILD=$2; shift 2 ;;
+        --out) OUT=$2; shift 2 ;;
+        --filter) FILTERS="$FILTERS $2"; shift 2 ;;
+        --count) COUNT=$2; shift 2 ;;
+        --seed) SEED=$2; shift 2 ;;
+        --sizes) SIZES=$2; shift 2 ;;
+        --opts) OPTS=$2; shift 2 ;;
+        --per-image) PER_IMAGE=1; shift ;;
+        --jobs) JOBS=$2; shift 2 ;;
+        *) echo "evaluate.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+    esac
+done
+[ -n "$FILTERS" ] || FILTERS="paper default"
+[ -d "$DATA" ] || { echo "evaluate.sh: no data folder '$DATA'" >&2; exit 2; }
+DATA=$(cd "$DATA" && pwd)
+case $BUILD in /*) ;; *) BUILD=$(pwd)/$BUILD ;; esac
+case $OUT in /*) ;; *) OUT=$(pwd)/$OUT ;; esac
+
+# ---- tools: Debian packages, then an incremental build of the four binaries ----
+need_pkgs() {
+    missing=
+    for p in "$@"; do
+        dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+    done
+    [ -z "$missing" ] && return 0
+    echo "evaluate.sh: installing$missing" >&2
+    SUDO=
+    [ "$(id -u)" -eq 0 ] || SUDO=sudo
+    # shellcheck disable=SC2086
+    $SUDO apt-get install -y $missing >&2 || { $SUDO apt-get update >&2 && $SUDO apt-get install -y $missing >&2; }
+}
+if command -v dpkg >/dev/null 2>&1; then
+    need_pkgs cmake make gcc libc6-dev pkg-config libpng-dev libcmocka-dev
+fi
+if [ ! -f "$BUILD/CMakeCache.txt" ]; then
+    cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >&2
+fi
+cmake --build "$BUILD" -j2 --target symline_cli symline-render symline-score symline-bright >&2
+BIN=$BUILD/bin
+for b in symline symline-render symline-score symline-bright; do
+    [ -x "$BIN/$b" ] || { echo "evaluate.sh: $BIN/$b missing after the build" >&2; exit 1; }
+done
+"$BIN/symline" lines --help >/dev/null 2>&1 || { echo "evaluate.sh: this symline has no 'lines' command" >&2; exit 1; }
+
+mkdir -p "$OUT"
+START=$(date +%s)
+
+# ---- rendered sets (cached: the renderer is deterministic for its binary and arguments) ----
+SETS="normal dark overexposed occluded circle"
+RSUM=$(cksum < "$BIN/symline-render" | cut -d' ' -f1)
+mkdir -p "$OUT/render"
+: > "$OUT/render.todo"
+for size in $SIZES; do
+    for set in $SETS; do
+        d=$OUT/render/$set-$size
+        if [ ! -f "$d/.stamp" ] || [ "$(cat "$d/.stamp")" != "$RSUM $SEED $COUNT" ]; then
+            rm -rf "$d"
+            echo "--set $set --seed $SEED --count $COUNT --size $size $d" >> "$OUT/render.todo"
+        fi
+    done
+done
+if [ -s "$OUT/render.todo" ]; then
+    echo "evaluate.sh: rendering $(wc -l < "$OUT/render.todo") sets of $COUNT images" >&2
+    xargs -P "$JOBS" -n 9 "$BIN/symline-render" < "$OUT/render.todo"
+    while read -r _ _ _ _ _ _ _ _ d; do
+        echo "$RSUM $SEED $COUNT" > "$d/.stamp"
+    done < "$OUT/render.todo"
+fi
+
+# ---- detection: one JSON per image and filter (pairs "IMAGE JSON" per filter) ----
+rm -rf "$OUT/det"
+for f in $FILTERS; do : > "$OUT/detect.$f.todo"; done
+add_job() { # IMAGE JSON FILTER
+    echo "$1 $2" >> "$OUT/detect.$3.todo"
+}
+GIVEN=$DATA/synth
+set_dirs=
+[ -d "$GIVEN" ] && set_dirs="given:$GIVEN"
+for size in $SIZES; do
+    for set in $SETS; do set_dirs="$set_dirs $set-${size%%x*}:$OUT/render/$set-$size"; done
+done
+for sd in $set_dirs; do
+    label=${sd%%:*}
+    dir=${sd#*:}
+    for img in "$dir"/*.pgm; do
+        [ -f "$img" ] || continue
+        name=$(basename "$img" .pgm)
+        [ -f "$dir/$name.lines.txt" ] || continue
+        for f in $FILTERS; do add_job "$img" "$OUT/det/$f/$label/$name.json" "$f"; done
+    done
+done
+
+# Real frames and their brightness variants.
+FIELD=$DATA/field
+TR=$OUT/field-variants
+mkdir -p "$TR"
+FRAMES=
+if [ -d "$FIELD" ]; then
+    for img in "$FIELD"/*.pgm; do
+        case $img in *.mask.pgm) continue ;; esac
+        [ -f "$img" ] || continue
+        name=$(basename "$img" .pgm)
+        FRAMES="$FRAMES $name"
+        "$BIN/symline-bright" --mul 0.5 "$img" "$TR/$name.x0.5.pgm"
+        "$BIN/symline-bright" --add 40 "$img" "$TR/$name.p40.pgm"
+        "$BIN/symline-bright" --add -40 "$img" "$TR/$name.m40.pgm"
+        for f in $FILTERS; do
+            add_job "$img" "$OUT/det/$f/field/$name.json" "$f"
+            for v in x0.5 p40 m40; do
+                add_job "$TR/$name.$v.pgm" "$OUT/det/$f/field/$name.$v.json" "$f"
+            done
+        done
+    done
+fi
+NRUNS=$(cat "$OUT"/detect.*.todo | wc -l)
+echo "evaluate.sh: $NRUNS detection runs" >&2
+for f in $FILTERS; do
+    fo=
+    [ "$f" = default ] || fo="--filter $f"
+    # A failed run is scored as "no detections" and counted below.
+    # shellcheck disable=SC2016
+    SYMLINE="$BIN/symline" LINES_OPTS="$fo $OPTS" xargs -P "$JOBS" -n 2 sh -c '
+        mkdir -p "$(dirname "$1")"
+        # shellcheck disable=SC2086
+        if "$SYMLINE" lines $LINES_OPTS "$0" > "$1.tmp" 2> "$1.err"; then
+            mv "$1.tmp" "$1"
+        else
+            echo "{\"segments\": []}" > "$1"
+            echo failed >> "$1.err"
+        fi' < "$OUT/detect.$f.todo"
+done
+FAILS=$(find "$OUT/det" -name '*.err' -exec grep -l '^failed$' {} + 2>/dev/null | wc -l)
+
+# ---- scoring and tables ----
+# kv KEY LINE: value of KEY=... in a symline-score line
+kv() { printf '%s\n' "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"; }
+
+echo "# symline line detection: evaluation"
+echo
+echo "Data: $DATA; rendered sets: seed $SEED, $COUNT images per set and size; build: $BIN"
+echo "Columns per filter: mean per-image F1, precision P, recall R (SPEC 7: samples every"
+echo "0.5 px, tolerance max(2, 3*width/640) px); cls = classification accuracy over detected"
+echo "pieces matched to ground truth (line GT as kind line, circle GT as kind curve), with"
+echo "the number of matched pieces. Filters: $FILTERS."
+echo
+
+hdr="| set | n |"
+sep="|---|---:|"
+for f in $FILTERS; do
+    hdr="$hdr $f F1 | P | R | cls |"
+    sep="$sep---:|---:|---:|---:|"
+done
+echo "## Synthetic scenes"
+echo
+echo "$hdr"
+echo "$sep"
+PER=$OUT/per-image.txt
+: > "$PER"
+for sd in $set_dirs; do
+    label=${sd%%:*}
+    dir=${sd#*:}
+    row=
+    n=0
+    for f in $FILTERS; do
+        : > "$OUT/scores.tmp"
+        for img in "$dir"/*.pgm; do
+            [ -f "$img" ] || continue
+            name=$(basename "$img" .pgm)
+            [ -f "$dir/$name.lines.txt" ] || continue
+            s=$("$BIN/symline-score" gt "$dir/$name" "$OUT/det/$f/$label/$name.json")
+            echo "$s" >> "$OUT/scores.tmp"
+            echo "$f $label/$name $s" >> "$PER"
+        done
+        cell=$(awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
+                      n++; f1 += v["f1"]; p += v["p"]; r += v["r"]
+                      m += v["line_matched"] + v["curve_matched"]; ok += v["line_ok"] + v["curve_ok"] }
+                    END { if (n == 0) { print "0 | - | - | - | - |"; exit }
+                          printf "%d | %.3f | %.3f | %.3f | %s (%d) |\n", n, f1 / n, p / n, r / n,
+                                 m ? sprintf("%.3f", ok / m) : "-", m }' "$OUT/scores.tmp")
+        n=${cell%% *}
+        row="$row ${cell#* | }"
+    done
+    echo "| $label | $n |$row"
+done
+echo
+
+if [ -n "$FRAMES" ]; then
+    echo "## Real frames ($FIELD)"
+    echo
+    echo "mask = F1 against NAME.mask.pgm where one exists (precision: detected samples within"
+    echo "tolerance of a mask pixel; recall: mask pixels within tolerance of a detection)."
+    echo "x0.5, +40, -40 = stability F1 between the detections on the frame and on the frame"
+    echo "with that brightness change (clipped); target >= 0.95. segs = segments on the frame."
+    echo
+    hdr="| frame |"
+    sep="|---|"
+    for f in $FILTERS; do
+        hdr="$hdr $f segs | mask | x0.5 | +40 | -40 |"
+        sep="$sep---:|---:|---:|---:|---:|"
+    done
+    echo "$hdr"
+    echo "$sep"
+    : > "$OUT/stab.tmp"
+    for name in $FRAMES; do
+        row=
+        for f in $FILTERS; do
+            d=$OUT/det/$f/field
+            segs=$(tr '{' '\n' < "$d/$name.json" | grep -c '"x0"' || true)
+            mask=-
+            if [ -f "$FIELD/$name.mask.pgm" ]; then
+                s=$("$BIN/symline-score" mask "$FIELD/$name.mask.pgm" "$d/$name.json")
+                mask=$(printf '%.3f' "$(kv f1 "$s")")
+                echo "$f mask $name $s" >> "$PER"
+            fi
+            row="$row $segs | $mask |"
+            for v in x0.5 p40 m40; do
+                s=$("$BIN/symline-score" pair "$d/$name.json" "$d/$name.$v.json")
+                f1=$(kv f1 "$s")
+                echo "$f $v $f1" >> "$OUT/stab.tmp"
+                echo "$f stability-$v $name $s" >> "$PER"
+                row="$row $(printf '%.3f' "$f1") |"
+            done
+        done
+        echo "| $name |$row"
+    done
+    row="| mean / min |"
+    for f in $FILTERS; do
+        row="$row |$(awk -v f="$f" '$1 == f && $2 == "x0.5" { n++; s += $3; if (n == 1 || $3 < m) m = $3 }
+                                   END { printf " |" }' "$OUT/stab.tmp")"
+        for v in x0.5 p40 m40; do
+            row="$row $(awk -v f="$f" -v v="$v" '$1 == f && $2 == v { n++; s += $3; if (n == 1 || $3 < m) m = $3 }
+                                            END { if (n) printf "%.3f / %.3f", s / n, m; else printf "-" }' "$OUT/stab.tmp") |"
+        done
+    done
+    echo "$row"
+    echo
+fi
+
+if [ "$PER_IMAGE" -eq 1 ]; then
+    echo "## Per image"
+    echo
+    echo '```'
+    cat "$PER"
+    echo '```'
+    echo
+fi
+echo "Detection runs: $NRUNS, failed: $FAILS; wall time $(($(date +%s) - START)) s."
+echo "Per-image scores: $PER; detections: $OUT/det/FILTER/SET/NAME.json."
