@@ -13,6 +13,9 @@
 #include <stdio.h>
 
 #include "symline/extrema.h"
+#ifdef SYMLINE_FW_HAVE_DETECT
+#include "symline/detect.h"
+#endif
 #include "symline/symmetry.h"
 
 #include "fwdata.h"
@@ -75,6 +78,49 @@ static int run(const fw_frame *f)
     return bad;
 }
 
+#ifdef SYMLINE_FW_HAVE_DETECT
+static uint64_t det_ws[65536u / 8u];
+static symline_segment segs[256];
+static symline_point pts[16384];
+
+static int run_detect(const fw_frame *f, const symline_config *cfg, const char *what)
+{
+    const symline_image img = {f->width, f->height, f->width, f->px};
+    symline_result res = {segs, 256u, 0u, pts, 16384u, 0u, 0u};
+    const size_t need = symline_detect_workspace_size(f->width, f->height, cfg);
+    uint64_t t0;
+    symline_status st = SYMLINE_ERR_BUFFER;
+    t0 = systick_now();
+    if (need > 0u && need <= sizeof det_ws) {
+        st = symline_detect(&img, cfg, det_ws, need, &res);
+    }
+    report(f, what, "detect", systick_now() - t0, st);
+    return st != SYMLINE_OK;
+}
+
+/* Workspace of the detector (the frame and the result arrays excluded). */
+static void workspace_sizes(void)
+{
+    static const uint32_t dims[3][2] = {{160u, 120u}, {320u, 240u}, {640u, 480u}};
+    static const uint32_t radii[2] = {3u, 10u};
+    unsigned d, r;
+    for (r = 0; r < 2u; r++) {
+        for (d = 0; d < 3u; d++) {
+            symline_config one, def;
+            symline_config_default(&def);
+            def.radius = radii[r];
+            one = def;
+            one.axes = SYMLINE_AXES_HORIZONTAL;
+            one.levels = 1u;
+            printf("workspace %lux%lu m=%lu: one axis, one scale %lu bytes; default config %lu bytes\n",
+                   (unsigned long)dims[d][0], (unsigned long)dims[d][1], (unsigned long)radii[r],
+                   (unsigned long)symline_detect_workspace_size(dims[d][0], dims[d][1], &one),
+                   (unsigned long)symline_detect_workspace_size(dims[d][0], dims[d][1], &def));
+        }
+    }
+}
+#endif
+
 int main(void)
 {
     uint64_t t0;
@@ -91,5 +137,20 @@ int main(void)
            (unsigned long)((2u * SPIN * 100u / cal_ticks) % 100u));
     bad = run(&fw_bench_160x120);
     bad |= run(&fw_bench_320x240);
+#ifdef SYMLINE_FW_HAVE_DETECT
+    {
+        symline_config def, one;
+        symline_config_default(&def);
+        def.radius = M;
+        one = def;
+        one.axes = SYMLINE_AXES_HORIZONTAL;
+        one.levels = 1u;
+        bad |= run_detect(&fw_bench_160x120, &one, "1axis1lvl");
+        bad |= run_detect(&fw_bench_160x120, &def, "default");
+        bad |= run_detect(&fw_bench_320x240, &one, "1axis1lvl");
+        bad |= run_detect(&fw_bench_320x240, &def, "default");
+    }
+    workspace_sizes();
+#endif
     return bad;
 }

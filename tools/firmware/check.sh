@@ -113,17 +113,24 @@ for c in m4-os m7; do
     lib=$prefix-$c/lib/libsymline.a
     [ -f "$lib" ] || continue
     n=$(arm-none-eabi-objdump -d "$lib" | grep -cE '^ +[0-9a-f]+:	[0-9a-f ]+	v[a-z0-9.]+	' )
-    if [ "$n" -eq 0 ]; then ok "$c: no FPU instruction in libsymline.a (hard-float build)"
+    if [ "$n" -eq 0 ]; then ok "$c: no FPU instruction in libsymline.a (hard-float ABI, -mgeneral-regs-only)"
     else bad "$c: $n FPU instructions in libsymline.a:"; arm-none-eabi-objdump -d "$lib" | grep -E '	v[a-z0-9.]+	' | head -5; fi
 done
 
-step "worst-case stack per public entry point (budget $stack_budget B, libgcc helper calls charged 128 B)"
+step "worst-case stack per public entry point (budget $stack_budget B)"
 for c in m0plus-os m4; do
     cis=$(find "$prefix-$c/lib" -name '*.ci' 2>/dev/null | sort)
     if [ -z "$cis" ]; then bad "$c: no call-graph files (-fcallgraph-info)"; continue; fi
-    echo "  $c:"
+    case $c in
+    m0plus*) arch="-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft" ;;
+    *) arch="-mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard" ;;
+    esac
     # shellcheck disable=SC2086
-    if awk -v budget="$stack_budget" -v helper=128 -f tools/firmware/stack.awk $cis; then
+    libgcc=$(arm-none-eabi-gcc $arch -print-libgcc-file-name)
+    arm-none-eabi-objdump -dt "$libgcc" | awk -f tools/firmware/helpers.awk >"$prefix-$c/libgcc-stack.txt"
+    echo "  $c (libgcc helpers: bounds from $(echo "$libgcc" | sed 's|.*/arm-none-eabi/||')):"
+    # shellcheck disable=SC2086
+    if awk -v budget="$stack_budget" -f tools/firmware/stack.awk "$prefix-$c/libgcc-stack.txt" $cis; then
         ok "$c: every entry point within $stack_budget B"
     else
         bad "$c: stack check"
@@ -200,6 +207,29 @@ if run "build target programs" cmake --build "$dir" -j "$jobs"; then
             sed 's/^/         /' "$log" | head -12
         else
             bad "example (exit $?):"; sed 's/^/         /' "$log" | tail -20
+        fi
+    fi
+    if [ -f "$dir/bin/symline_fw_detect.elf" ]; then
+        # The same program built for the host: results must be identical.
+        host=$prefix-host
+        gen=$dir/port/cortex-m/gen
+        if run "host build of the core" cmake -S "$root" -B "$host" -DSYMLINE_BUILD_TOOLS=OFF \
+                -DSYMLINE_BUILD_TESTS=OFF -DSYMLINE_BUILD_CAPTURE=OFF &&
+           run "host build of the core" cmake --build "$host" --target symline -j "$jobs" &&
+           run "host build of detect_check" cc -std=c99 -O2 -Iinclude -Iport/cortex-m \
+                port/cortex-m/detect_check.c port/cortex-m/segprint.c "$gen/detect_frames.c" \
+                "$gen/bench_frames.c" "$host/lib/libsymline.a" -o "$host/detect_check"; then
+            qemu -kernel "$dir/bin/symline_fw_detect.elf" >"$prefix-m4/detect.target.txt" 2>&1
+            rc=$?
+            "$host/detect_check" >"$host/detect.host.txt" 2>&1
+            hrc=$?
+            if [ "$rc" -eq 0 ] && [ "$hrc" -eq 0 ] &&
+               cmp -s "$prefix-m4/detect.target.txt" "$host/detect.host.txt"; then
+                ok "detector on the target = on the host ($(grep -c '^  ' "$host/detect.host.txt") segments over $(grep -c ': status' "$host/detect.host.txt") runs, identical output)"
+            else
+                bad "detector: target exit $rc, host exit $hrc, outputs differ or failed:"
+                diff "$host/detect.host.txt" "$prefix-m4/detect.target.txt" | head -20 | sed 's/^/         /'
+            fi
         fi
     fi
     echo "  instructions per pixel (qemu -icount shift=0, SysTick):"

@@ -1,15 +1,16 @@
 # Worst-case stack depth of every public entry point (symline_*) of the core,
 # from GCC's call-graph files (-fcallgraph-info=su, one .ci per object).
 #
-#   awk -v budget=512 -v helper=128 -f tools/firmware/stack.awk build/.../*.ci
+#   awk -v budget=512 -f tools/firmware/stack.awk HELPERS.txt build/.../*.ci
 #
 # Each function's own frame comes from -fstack-usage; the worst case of a
-# function is its frame plus the worst case of anything it calls. A call to a
-# compiler helper (libgcc: __aeabi_*, __udivmoddi4, ...) is charged `helper`
-# bytes (a bound read from libgcc's disassembly, see docs/porting.md). The
-# result is a failure (exit 1) when any entry point exceeds `budget`, when a
-# frame is dynamic (alloca/VLA), when there is recursion or an indirect call,
-# or when a call leaves the core for anything but a compiler helper.
+# function is its frame plus the worst case of anything it calls. Calls to
+# compiler helpers (libgcc: __aeabi_uldivmod, ...) are charged the bound in
+# HELPERS.txt ("name bytes" lines, made by helpers.awk from the disassembly of
+# the libgcc.a the target links). The result is a failure (exit 1) when any
+# entry point exceeds `budget`, when a frame is dynamic (alloca/VLA), when
+# there is recursion or an indirect call, or when a call leaves the core for
+# anything but a helper with a known bound.
 function strip(s) { gsub(/^"|"$/, "", s); return s }
 function field(line, key,    i, rest) {
     i = index(line, key ": \"")
@@ -17,6 +18,7 @@ function field(line, key,    i, rest) {
     rest = substr(line, i + length(key) + 3)
     return substr(rest, 1, index(rest, "\"") - 1)
 }
+FNR == NR && FILENAME ~ /\.txt$/ { hb[$1] = $2; next }
 /^node:/ {
     t = field($0, "title"); l = field($0, "label")
     if (l ~ /bytes \(/) {
@@ -38,7 +40,7 @@ function depth(f,    i, c, w, best, bc) {
     if (f in memo) return memo[f]
     if (f in onpath) { problem["recursion through " f] = 1; return 0 }
     if (!(f in defined)) {
-        if (f ~ /^__/ && f !~ /indirect/) return helper
+        if ((f in hb) && hb[f] >= 0) { shown[f] = f " (" hb[f] " B)"; return hb[f] }
         problem["call outside the core: " f] = 1
         return 0
     }
@@ -62,7 +64,6 @@ function chain(f,    s) {
 }
 END {
     if (budget == "") budget = 512
-    if (helper == "") helper = 128
     fail = 0; count = 0
     for (f in defined) if (f ~ /^symline_/ && f !~ /:/) entry[++count] = f
     # sort entry points by name (insertion sort: no gawk extensions)
