@@ -121,6 +121,73 @@ static int sl_is_curve(const symline_segment *s, uint32_t thr)
     return s->max_dev > thr && (uint64_t)s->max_dev * 32u > chord;
 }
 
+/* Shifts the pair right until both magnitudes are below 2^bits (keeps the ratio). */
+static void shrink(int64_t *a, int64_t *b, unsigned bits)
+{
+    const int64_t lim = (int64_t)1 << bits;
+    while (*a >= lim || *a <= -lim || *b >= lim || *b <= -lim) {
+        *a /= 2;
+        *b /= 2;
+    }
+}
+
+/*
+ * Least-squares line through the points (principal axis of their scatter),
+ * in integers: the ends become the first and last point projected onto it,
+ * which gives sub-pixel ends and removes the one-pixel jitter of traced
+ * points. Returns 0 when the scatter has no direction (all points equal).
+ */
+static int ls_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
+{
+    int64_t sx = 0, sy = 0, a = 0, b = 0, c = 0, mx, my, r, lam, vx, vy, vv, dot;
+    uint32_t i;
+    /* Means in Q8 of full resolution. */
+    for (i = 0; i < n; i++) {
+        sx += sl_q8(p[i].x, level);
+        sy += sl_q8(p[i].y, level);
+    }
+    mx = sx / (int64_t)n;
+    my = sy / (int64_t)n;
+    /* Second moments in Q4 (products fit: |d| < 2^21, n < 2^21). */
+    for (i = 0; i < n; i++) {
+        const int64_t dx = ((int64_t)sl_q8(p[i].x, level) - mx) / 16;
+        const int64_t dy = ((int64_t)sl_q8(p[i].y, level) - my) / 16;
+        a += dx * dx;
+        b += dx * dy;
+        c += dy * dy;
+    }
+    while (a >= ((int64_t)1 << 30) || c >= ((int64_t)1 << 30) || b >= ((int64_t)1 << 30) ||
+           b <= -((int64_t)1 << 30)) {
+        a /= 2;
+        b /= 2;
+        c /= 2;
+    }
+    r = (int64_t)sl_isqrt64((uint64_t)((a - c) * (a - c) / 4 + b * b));
+    lam = (a + c) / 2 + r;
+    if (a >= c) {
+        vx = lam - c;
+        vy = b;
+    } else {
+        vx = b;
+        vy = lam - a;
+    }
+    if (vx == 0 && vy == 0) {
+        return 0;
+    }
+    shrink(&vx, &vy, 15);
+    vv = vx * vx + vy * vy;
+    if (vv == 0) {
+        return 0;
+    }
+    dot = ((int64_t)s->x0 - mx) * vx + ((int64_t)s->y0 - my) * vy;
+    s->x0 = (int32_t)(mx + dot * vx / vv);
+    s->y0 = (int32_t)(my + dot * vy / vv);
+    dot = ((int64_t)s->x1 - mx) * vx + ((int64_t)s->y1 - my) * vy;
+    s->x1 = (int32_t)(mx + dot * vx / vv);
+    s->y1 = (int32_t)(my + dot * vy / vv);
+    return 1;
+}
+
 void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
             symline_segment *s)
 {
@@ -131,6 +198,13 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
     s->y1 = sl_q8(p[n - 1u].y, level);
     s->max_dev = max_dev_q8(p, n, level, s->x0, s->y0, s->x1, s->y1);
     s->kind = (uint8_t)(sl_is_curve(s, thr) ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
+    if (s->kind == SYMLINE_KIND_LINE && n >= 3u) {
+        symline_segment f = *s;
+        if (ls_ends(p, n, level, &f)) {
+            f.max_dev = max_dev_q8(p, n, level, f.x0, f.y0, f.x1, f.y1);
+            *s = f;
+        }
+    }
     s->level = (uint8_t)level;
     s->reserved = 0u;
 }
@@ -267,7 +341,15 @@ static int mergeable(const symline_segment *a, const symline_segment *b, const s
     d1 = dev_of_points(pts + a->first, a->count, ends[0], ends[1], ends[2], ends[3]);
     d2 = dev_of_points(pts + b->first, b->count, ends[0], ends[1], ends[2], ends[3]);
     *dev = d1 > d2 ? d1 : d2;
-    return *dev <= curve_q8;
+    {
+        symline_segment m = *a;
+        m.x0 = ends[0];
+        m.y0 = ends[1];
+        m.x1 = ends[2];
+        m.y1 = ends[3];
+        m.max_dev = *dev;
+        return !sl_is_curve(&m, curve_q8);
+    }
 }
 
 /* Moves segment j's points right behind segment i's (i < j, ranges ordered), removes j. */
