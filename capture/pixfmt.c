@@ -14,7 +14,7 @@ static const pixfmt_info formats[] = {
     {PIXFMT_FOURCC('Y', 'V', '1', '2'), "YV12", PIXFMT_LUMA_PLANE, 0, 4},
     {PIXFMT_FOURCC('N', 'V', '1', '6'), "NV16", PIXFMT_LUMA_PLANE, 0, 5},
     {PIXFMT_FOURCC('N', 'V', '6', '1'), "NV61", PIXFMT_LUMA_PLANE, 0, 6},
-    {PIXFMT_FOURCC('Y', 'U', '1', '6'), "YU16", PIXFMT_LUMA_PLANE, 0, 7},
+    {PIXFMT_FOURCC('4', '2', '2', 'P'), "422P", PIXFMT_LUMA_PLANE, 0, 7},
     /* Multi-planar variants (luma in its own buffer, plane 0). */
     {PIXFMT_FOURCC('N', 'M', '1', '2'), "NM12", PIXFMT_LUMA_PLANE, 0, 1},
     {PIXFMT_FOURCC('N', 'M', '2', '1'), "NM21", PIXFMT_LUMA_PLANE, 0, 2},
@@ -22,6 +22,7 @@ static const pixfmt_info formats[] = {
     {PIXFMT_FOURCC('Y', 'M', '2', '1'), "YM21", PIXFMT_LUMA_PLANE, 0, 4},
     {PIXFMT_FOURCC('N', 'M', '1', '6'), "NM16", PIXFMT_LUMA_PLANE, 0, 5},
     {PIXFMT_FOURCC('N', 'M', '6', '1'), "NM61", PIXFMT_LUMA_PLANE, 0, 6},
+    {PIXFMT_FOURCC('Y', 'M', '1', '6'), "YM16", PIXFMT_LUMA_PLANE, 0, 7},
     {PIXFMT_FOURCC('Y', 'U', 'Y', 'V'), "YUYV", PIXFMT_PACKED_422, 0, 10},
     {PIXFMT_FOURCC('Y', 'V', 'Y', 'U'), "YVYU", PIXFMT_PACKED_422, 0, 11},
     {PIXFMT_FOURCC('U', 'Y', 'V', 'Y'), "UYVY", PIXFMT_PACKED_422, 1, 12},

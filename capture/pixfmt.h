@@ -2,9 +2,10 @@
  * Pixel formats the capture sources accept, and how to get 8-bit luma out of
  * them. Host/Linux code; the core library never includes it.
  *
- * Planar and gray formats (GREY, NV12, NV21, YU12, YV12, NV16, NV61, YU16,
- * and the multi-planar NM12, NM21, YM12, YM21, NM16, NM61) start with a full-resolution luma plane: the detector reads it in place,
- * honouring the driver's bytesperline. Packed 4:2:2 formats (YUYV, YVYU,
+ * Planar and gray formats (GREY, NV12, NV21, YU12, YV12, NV16, NV61, 422P,
+ * and the multi-planar NM12, NM21, YM12, YM21, NM16, NM61, YM16) start with a
+ * full-resolution luma plane: the detector reads it in place, honouring the
+ * driver's bytesperline. Packed 4:2:2 formats (YUYV, YVYU,
  * UYVY, VYUY) interleave luma with chroma and are deinterleaved into a
  * caller-owned buffer.
  */

@@ -394,6 +394,9 @@ static int configure(v4l2src *v, const v4l2_options *opt, char *desc, size_t des
     if (v->mplane) {
         f.fmt.pix_mp.pixelformat = want->fourcc;
         f.fmt.pix_mp.field = V4L2_FIELD_NONE;
+        for (i = 0; i < VIDEO_MAX_PLANES; i++) {
+            f.fmt.pix_mp.plane_fmt[i].bytesperline = 0; /* the driver's own padding */
+        }
         if (opt->width) f.fmt.pix_mp.width = opt->width;
         if (opt->height) f.fmt.pix_mp.height = opt->height;
     } else {

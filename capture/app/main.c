@@ -1,7 +1,7 @@
 /*
  * symline-capture: the on-robot loop. Frames from a V4L2 device, a libcamera
- * camera or files; one JSON line per frame on stdout; a rate and latency
- * summary on stderr.
+ * camera or files; the line detector on each; one JSON line per frame on
+ * stdout; a rate and latency summary on stderr.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -11,17 +11,16 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "args.h"
 #include "imgio.h"
 #include "replay_source.h"
+#include "segjson.h"
 #include "source.h"
+#include "symline/detect.h"
 #include "v4l2_source.h"
 #ifdef SYMLINE_HAVE_LIBCAMERA
 #include "libcamera_source.h"
 #endif
-
-#define EXIT_OK 0
-#define EXIT_FAIL 1
-#define EXIT_USAGE 2
 
 static volatile sig_atomic_t stop_requested;
 static volatile sig_atomic_t stop_signal;
@@ -30,205 +29,6 @@ static void on_stop(int sig)
 {
     stop_requested = 1;
     stop_signal = sig;
-}
-
-typedef struct app_options {
-    const char *device;
-    const char *camera;
-    const char *replay;
-    uint64_t frames;        /* 0 = until stopped or the replay ends */
-    uint32_t width, height;
-    const char *format;
-    uint32_t fps_num, fps_den;
-    uint32_t buffers;
-    int all_frames;         /* 1 = process every frame instead of the freshest */
-    int32_t exposure_100us;
-    int timeout_ms;
-    int loop;
-    uint32_t summary_s;
-    uint32_t snapshot_every;
-    const char *snapshot_dir;
-    uint32_t record_every;
-    const char *record_dir;
-} app_options;
-
-static int usage_error(const char *fmt, const char *arg)
-{
-    fputs("symline-capture: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputs(" (try --help)\n", stderr);
-    return EXIT_USAGE;
-}
-
-static void usage(FILE *f)
-{
-    fputs("usage: symline-capture SOURCE [options]\n"
-          "\n"
-          "Source (one):\n"
-          "  --device /dev/videoN   V4L2 capture device\n"
-#ifdef SYMLINE_HAVE_LIBCAMERA
-          "  --camera ID|INDEX      libcamera camera, by id or by index (0 = first)\n"
-#endif
-          "  --replay PATH          folder of .pgm/.png frames (name order), one image, or a\n"
-          "                         text file listing one image path per line\n"
-          "\n"
-          "Capture:\n"
-          "  --frames N             stop after N frames (0 = until stopped; default)\n"
-          "  --width W --height H   requested frame size (the granted size is reported)\n"
-          "  --format FOURCC        GREY NV12 NV21 YU12 YV12 NV16 NV61 YU16 YUYV YVYU UYVY VYUY\n"
-          "                         (default: the most direct one the device offers)\n"
-          "  --fps F[/D]            requested frame rate (replay: delivery pace)\n"
-          "  --buffers N            mmap buffers / request queue depth, 2..32 (default 4)\n"
-          "  --all-frames           process every frame in order; default is freshest-frame\n"
-          "                         mode: when several frames are ready, the newest is\n"
-          "                         processed and the older ones are returned unprocessed\n"
-          "  --exposure US          manual exposure time in microseconds, if the device offers it\n"
-          "  --timeout MS           give up when no frame arrives for MS ms (default 2000)\n"
-          "  --loop                 replay: start over after the last frame\n"
-          "\n"
-          "Output:\n"
-          "  --summary-every S      rate and latency summary on stderr every S seconds (default 5, 0 = off)\n"
-          "  --snapshot-every K DIR write every K-th frame with the detected lines drawn over it\n"
-          "  --record K DIR         write the luma of every K-th frame as PGM (replayable)\n"
-          "\n"
-          "Exit status: 0 stopped normally (frame count, end of replay, SIGINT/SIGTERM);\n"
-          "1 capture error (device lost, timeout, driver error); 2 usage error.\n",
-          f);
-}
-
-static int parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out)
-{
-    char *end;
-    unsigned long v;
-    if (s == NULL || *s < '0' || *s > '9') {
-        return -1;
-    }
-    errno = 0;
-    v = strtoul(s, &end, 10);
-    if (errno != 0 || *end != '\0' || v < lo || v > hi) {
-        return -1;
-    }
-    *out = (uint32_t)v;
-    return 0;
-}
-
-static int parse_fps(const char *s, uint32_t *num, uint32_t *den)
-{
-    char buf[32];
-    char *slash;
-    if (s == NULL || strlen(s) >= sizeof buf) {
-        return -1;
-    }
-    strcpy(buf, s);
-    slash = strchr(buf, '/');
-    *den = 1;
-    if (slash != NULL) {
-        *slash = '\0';
-        if (parse_u32(slash + 1, 1, 1000000, den) != 0) {
-            return -1;
-        }
-    }
-    return parse_u32(buf, 1, 1000000, num);
-}
-
-/* 0 ok, 1 help shown, EXIT_USAGE on error. */
-static int parse_args(int argc, char **argv, app_options *o)
-{
-    int i, nsrc;
-    uint32_t v;
-    memset(o, 0, sizeof *o);
-    o->buffers = 4;
-    o->exposure_100us = -1;
-    o->timeout_ms = 2000;
-    o->summary_s = 5;
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *next = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            return 1;
-        } else if (strcmp(a, "--device") == 0 && next) {
-            o->device = next;
-            i++;
-        } else if (strcmp(a, "--camera") == 0 && next) {
-            o->camera = next;
-            i++;
-        } else if (strcmp(a, "--replay") == 0 && next) {
-            o->replay = next;
-            i++;
-        } else if (strcmp(a, "--frames") == 0) {
-            if (parse_u32(next, 0, 0xffffffffu, &v) != 0) {
-                return usage_error("--frames needs a count (0 = until stopped)%s", "");
-            }
-            o->frames = v;
-            i++;
-        } else if (strcmp(a, "--width") == 0 || strcmp(a, "--height") == 0) {
-            if (parse_u32(next, 1, 65535, &v) != 0) {
-                return usage_error("%s needs a size 1..65535", a);
-            }
-            *(a[2] == 'w' ? &o->width : &o->height) = v;
-            i++;
-        } else if (strcmp(a, "--format") == 0 && next) {
-            o->format = next;
-            i++;
-        } else if (strcmp(a, "--fps") == 0) {
-            if (parse_fps(next, &o->fps_num, &o->fps_den) != 0) {
-                return usage_error("--fps needs a rate F or F/D%s", "");
-            }
-            i++;
-        } else if (strcmp(a, "--buffers") == 0) {
-            if (parse_u32(next, 2, 32, &o->buffers) != 0) {
-                return usage_error("--buffers needs a count 2..32%s", "");
-            }
-            i++;
-        } else if (strcmp(a, "--all-frames") == 0) {
-            o->all_frames = 1;
-        } else if (strcmp(a, "--exposure") == 0) {
-            if (parse_u32(next, 100, 100000000, &v) != 0) {
-                return usage_error("--exposure needs microseconds >= 100%s", "");
-            }
-            o->exposure_100us = (int32_t)(v / 100);
-            i++;
-        } else if (strcmp(a, "--timeout") == 0) {
-            if (parse_u32(next, 1, 3600000, &v) != 0) {
-                return usage_error("--timeout needs milliseconds 1..3600000%s", "");
-            }
-            o->timeout_ms = (int)v;
-            i++;
-        } else if (strcmp(a, "--loop") == 0) {
-            o->loop = 1;
-        } else if (strcmp(a, "--summary-every") == 0) {
-            if (parse_u32(next, 0, 86400, &o->summary_s) != 0) {
-                return usage_error("--summary-every needs seconds%s", "");
-            }
-            i++;
-        } else if (strcmp(a, "--snapshot-every") == 0 || strcmp(a, "--record") == 0) {
-            const int snap = a[2] == 's';
-            if (parse_u32(next, 1, 0xffffffffu, &v) != 0 || i + 2 >= argc) {
-                return usage_error("%s needs K DIR", a);
-            }
-            if (snap) {
-                o->snapshot_every = v;
-                o->snapshot_dir = argv[i + 2];
-            } else {
-                o->record_every = v;
-                o->record_dir = argv[i + 2];
-            }
-            i += 2;
-        } else {
-            return usage_error("unknown option or missing value: '%s'", a);
-        }
-    }
-    nsrc = (o->device != NULL) + (o->camera != NULL) + (o->replay != NULL);
-    if (nsrc != 1) {
-        return usage_error("give exactly one of --device, --camera, --replay%s", "");
-    }
-#ifndef SYMLINE_HAVE_LIBCAMERA
-    if (o->camera != NULL) {
-        return usage_error("--camera: this build has no libcamera support%s", "");
-    }
-#endif
-    return 0;
 }
 
 static capsrc *open_source(const app_options *o, char *err, size_t errlen)
@@ -244,7 +44,7 @@ static capsrc *open_source(const app_options *o, char *err, size_t errlen)
         v.fps_den = o->fps_den;
         v.buffers = o->buffers;
         v.freshest = !o->all_frames;
-        v.exposure_100us = o->exposure_100us;
+        v.exposure_100us = o->exposure_us >= 0 ? o->exposure_us / 100 : -1;
         return v4l2_source_open(&v, err, errlen);
     }
 #ifdef SYMLINE_HAVE_LIBCAMERA
@@ -259,7 +59,7 @@ static capsrc *open_source(const app_options *o, char *err, size_t errlen)
         c.fps_den = o->fps_den;
         c.buffers = o->buffers;
         c.freshest = !o->all_frames;
-        c.exposure_us = o->exposure_100us >= 0 ? o->exposure_100us * 100 : -1;
+        c.exposure_us = o->exposure_us;
         return libcamera_source_open(&c, err, errlen);
     }
 #endif
@@ -274,24 +74,127 @@ static capsrc *open_source(const app_options *o, char *err, size_t errlen)
     }
 }
 
+/* Detector memory, sized for the current frame size (sources may change it: replay). */
+typedef struct detector {
+    uint32_t width, height;
+    void *ws;
+    size_t ws_size;
+    symline_segment *segs;
+    symline_point *pts;
+    symline_result res;
+} detector;
+
+static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint32_t h)
+{
+    size_t need;
+    uint32_t point_cap;
+    if (d->ws != NULL && d->width == w && d->height == h) {
+        return 0;
+    }
+    need = symline_detect_workspace_size(w, h, cfg);
+    if (need == 0) {
+        fprintf(stderr, "symline-capture: the detector rejects a %ux%u frame with these settings\n", w, h);
+        return -1;
+    }
+    /* Room for about twice the line points of a pass (detect.h); a quarter of the pixels is ample. */
+    point_cap = (uint32_t)((uint64_t)w * h / 4u + 4096u);
+    free(d->ws);
+    free(d->pts);
+    d->ws = malloc(need);
+    d->pts = malloc((size_t)point_cap * sizeof *d->pts);
+    if (d->segs == NULL) {
+        d->segs = malloc(1024u * sizeof *d->segs);
+    }
+    if (d->ws == NULL || d->pts == NULL || d->segs == NULL) {
+        fprintf(stderr, "symline-capture: out of memory for the detector\n");
+        return -1;
+    }
+    d->ws_size = need;
+    d->width = w;
+    d->height = h;
+    d->res.segments = d->segs;
+    d->res.segment_cap = 1024u;
+    d->res.points = d->pts;
+    d->res.point_cap = point_cap;
+    return 0;
+}
+
+static void detector_free(detector *d)
+{
+    free(d->ws);
+    free(d->pts);
+    free(d->segs);
+    memset(d, 0, sizeof *d);
+}
+
+/*
+ * One JSON object per frame on one line: the frame's own keys, then the
+ * detection as the shared writer (segjson) prints it, spliced into the same
+ * object and folded onto the line.
+ */
+typedef struct line_writer {
+    char *buf;
+    size_t len;
+    FILE *mem;
+} line_writer;
+
+static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d, double latency_ms,
+                      double queue_ms, double detect_ms)
+{
+    size_t i, n;
+    rewind(lw->mem);
+    if (segjson_write(lw->mem, f->width, f->height, &d->res) != 0 || fflush(lw->mem) != 0) {
+        return -1;
+    }
+    lw->len = (size_t)ftell(lw->mem);
+    if (lw->len < 2 || lw->buf[0] != '{') {
+        return -1;
+    }
+    /* Fold the writer's line breaks and indentation into single spaces (no string holds either). */
+    for (i = 0, n = 0; i < lw->len; i++) {
+        if (lw->buf[i] == '\n') {
+            while (i + 1 < lw->len && lw->buf[i + 1] == ' ') {
+                i++;
+            }
+            if (n > 0 && lw->buf[n - 1] != ' ') {
+                lw->buf[n++] = ' ';
+            }
+        } else {
+            lw->buf[n++] = lw->buf[i];
+        }
+    }
+    while (n > 0 && lw->buf[n - 1] == ' ') {
+        n--;
+    }
+    lw->len = n;
+    printf("{\"frame\": %llu, \"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, \"latency_ms\": %.3f, "
+           "\"stages_ms\": {\"queue\": %.3f, \"detect\": %.3f}, ",
+           (unsigned long long)f->number, f->sequence, (long long)f->timestamp_ns, f->skipped, latency_ms,
+           queue_ms, detect_ms);
+    fwrite(lw->buf + 1, 1, lw->len - 1, stdout);
+    fputc('\n', stdout);
+    return fflush(stdout) == 0 ? 0 : -1;
+}
+
 /* Running figures for the periodic and final summaries. */
 typedef struct summary {
     int64_t t0_ns;
     uint64_t frames;
-    double lat_sum_ms, lat_max_ms;
+    double lat_sum_ms, lat_max_ms, det_sum_ms;
     int64_t window_t0_ns;
     uint64_t window_frames;
     double window_lat_sum_ms, window_lat_max_ms;
 } summary;
 
-static void summary_add(summary *s, double lat_ms)
+static void summary_add(summary *s, double lat_ms, double det_ms)
 {
     s->frames++;
     s->lat_sum_ms += lat_ms;
-    if (lat_ms > s->lat_max_ms) s->lat_max_ms = lat_ms;
+    s->det_sum_ms += det_ms;
+    if (s->frames == 1 || lat_ms > s->lat_max_ms) s->lat_max_ms = lat_ms;
     s->window_frames++;
     s->window_lat_sum_ms += lat_ms;
-    if (lat_ms > s->window_lat_max_ms) s->window_lat_max_ms = lat_ms;
+    if (s->window_frames == 1 || lat_ms > s->window_lat_max_ms) s->window_lat_max_ms = lat_ms;
 }
 
 static void summary_window(summary *s, const capsrc *src, int64_t now)
@@ -336,17 +239,26 @@ int main(int argc, char **argv)
     capsrc *src;
     capsrc_frame frame;
     summary sum;
+    detector det;
+    line_writer lw;
     struct sigaction sa;
     char err[512];
-    int rc, status = EXIT_OK;
+    int rc, status = APP_EXIT_OK;
     const char *stop_reason = "end of input";
 
-    rc = parse_args(argc, argv, &o);
+    rc = app_parse_args(argc, argv, &o);
     if (rc != 0) {
-        return rc == 1 ? EXIT_OK : rc;
+        return rc == 1 ? APP_EXIT_OK : rc;
     }
-    if ((o.snapshot_dir && make_dir(o.snapshot_dir) != 0) || (o.record_dir && make_dir(o.record_dir) != 0)) {
-        return EXIT_FAIL;
+    if (o.record_dir && make_dir(o.record_dir) != 0) {
+        return APP_EXIT_FAIL;
+    }
+    memset(&det, 0, sizeof det);
+    memset(&lw, 0, sizeof lw);
+    lw.mem = open_memstream(&lw.buf, &lw.len);
+    if (lw.mem == NULL) {
+        fprintf(stderr, "symline-capture: out of memory\n");
+        return APP_EXIT_FAIL;
     }
 
     /* No SA_RESTART: a stop signal must wake the wait for a frame. */
@@ -360,21 +272,27 @@ int main(int argc, char **argv)
     src = open_source(&o, err, sizeof err);
     if (src == NULL) {
         fprintf(stderr, "symline-capture: %s\n", err);
-        return EXIT_FAIL;
+        fclose(lw.mem);
+        free(lw.buf);
+        return APP_EXIT_FAIL;
     }
     fprintf(stderr, "symline-capture: %s\n", src->description);
 
     memset(&sum, 0, sizeof sum);
     if (capsrc_start(src) != CAPSRC_OK) {
-        fprintf(stderr, "symline-capture: %s\n", capsrc_error(src));
+        fprintf(stderr, "symline-capture: error: %s\n", capsrc_error(src));
         capsrc_close(src);
-        return EXIT_FAIL;
+        fclose(lw.mem);
+        free(lw.buf);
+        return APP_EXIT_FAIL;
     }
     sum.t0_ns = sum.window_t0_ns = capsrc_now_ns();
 
     while (!stop_requested && (o.frames == 0 || sum.frames < o.frames)) {
-        int64_t t_got, t_done;
-        double lat_ms;
+        int64_t t_got, t_det0, t_det1;
+        double lat_ms, det_ms;
+        symline_image img;
+        symline_status st;
         capsrc_result r = capsrc_next(src, &frame, o.timeout_ms);
         if (r == CAPSRC_INTERRUPTED) {
             continue;
@@ -385,31 +303,53 @@ int main(int argc, char **argv)
         if (r != CAPSRC_OK) {
             fprintf(stderr, "symline-capture: error: %s\n", capsrc_error(src));
             stop_reason = r == CAPSRC_LOST ? "device lost" : (r == CAPSRC_TIMEOUT ? "timeout" : "capture error");
-            status = EXIT_FAIL;
+            status = APP_EXIT_FAIL;
             break;
         }
         t_got = capsrc_now_ns();
-        if (o.record_every && frame.number % o.record_every == 0 && record_frame(o.record_dir, &frame) != 0) {
-            stop_reason = "write error";
-            status = EXIT_FAIL;
+        if (detector_fit(&det, &o.cfg, frame.width, frame.height) != 0) {
+            stop_reason = "detector setup";
+            status = APP_EXIT_FAIL;
             break;
         }
-        t_done = capsrc_now_ns();
-        lat_ms = (double)(t_done - frame.timestamp_ns) / 1e6;
-        printf("{\"frame\": %llu, \"sequence\": %u, \"timestamp_ns\": %lld, \"width\": %u, \"height\": %u, "
-               "\"skipped\": %u, \"latency_ms\": %.3f, \"stages_ms\": {\"queue\": %.3f}}\n",
-               (unsigned long long)frame.number, frame.sequence, (long long)frame.timestamp_ns, frame.width,
-               frame.height, frame.skipped, lat_ms, (double)(t_got - frame.timestamp_ns) / 1e6);
-        fflush(stdout);
+        img.width = frame.width;
+        img.height = frame.height;
+        img.stride = frame.stride;
+        img.data = frame.luma;
+        t_det0 = capsrc_now_ns();
+        st = symline_detect(&img, &o.cfg, det.ws, det.ws_size, &det.res);
+        t_det1 = capsrc_now_ns();
+        if (st != SYMLINE_OK) {
+            fprintf(stderr, "symline-capture: error: detection failed on frame %llu: %s\n",
+                    (unsigned long long)frame.number, symline_status_str(st));
+            stop_reason = "detector error";
+            status = APP_EXIT_FAIL;
+            break;
+        }
+        lat_ms = (double)(t_det1 - frame.timestamp_ns) / 1e6;
+        det_ms = (double)(t_det1 - t_det0) / 1e6;
+        if (o.record_every && frame.number % o.record_every == 0 && record_frame(o.record_dir, &frame) != 0) {
+            stop_reason = "write error";
+            status = APP_EXIT_FAIL;
+            break;
+        }
         capsrc_release(src);
-        summary_add(&sum, lat_ms);
-        if (o.summary_s && t_done - sum.window_t0_ns >= (int64_t)o.summary_s * 1000000000) {
-            summary_window(&sum, src, t_done);
+        if (emit_frame(&lw, &frame, &det, lat_ms, (double)(t_got - frame.timestamp_ns) / 1e6, det_ms) != 0) {
+            if (!stop_requested) {
+                fprintf(stderr, "symline-capture: error: writing the frame record failed\n");
+                stop_reason = "output error";
+                status = APP_EXIT_FAIL;
+            }
+            break;
+        }
+        summary_add(&sum, lat_ms, det_ms);
+        if (o.summary_s && t_det1 - sum.window_t0_ns >= (int64_t)o.summary_s * 1000000000) {
+            summary_window(&sum, src, t_det1);
         }
     }
     if (stop_requested) {
         stop_reason = stop_signal == SIGINT ? "SIGINT" : "SIGTERM";
-    } else if (status == EXIT_OK && o.frames && sum.frames >= o.frames) {
+    } else if (status == APP_EXIT_OK && o.frames && sum.frames >= o.frames) {
         stop_reason = "frame count reached";
     }
     {
@@ -417,12 +357,16 @@ int main(int argc, char **argv)
         double secs = (double)(now - sum.t0_ns) / 1e9;
         fprintf(stderr,
                 "symline-capture: stopped (%s): frames=%llu fps=%.1f latency_mean_ms=%.2f latency_max_ms=%.2f "
-                "skipped_stale=%llu error_buffers=%llu requeue_errors=%llu sequence_gaps=%llu\n",
+                "detect_mean_ms=%.2f skipped_stale=%llu error_buffers=%llu requeue_errors=%llu sequence_gaps=%llu\n",
                 stop_reason, (unsigned long long)sum.frames, secs > 0 ? (double)sum.frames / secs : 0.0,
                 sum.frames ? sum.lat_sum_ms / (double)sum.frames : 0.0, sum.lat_max_ms,
+                sum.frames ? sum.det_sum_ms / (double)sum.frames : 0.0,
                 (unsigned long long)src->stats.skipped_stale, (unsigned long long)src->stats.error_buffers,
                 (unsigned long long)src->stats.requeue_errors, (unsigned long long)src->stats.sequence_gaps);
     }
     capsrc_close(src);
+    detector_free(&det);
+    fclose(lw.mem);
+    free(lw.buf);
     return status;
 }

@@ -4,6 +4,7 @@
  *
  *   capture-check press DEVICE NAME    press the button control called NAME
  *                                      (vivid's error injection controls)
+ *   capture-check set DEVICE NAME V    set the integer or menu control NAME to V
  *   capture-check bars PGM [REF.pgm]   the frame shows vivid's 75% colour bars;
  *                                      with REF: same luma as REF within 2
  *   capture-check json FILE N          FILE holds N lines, each a well-formed JSON
@@ -33,7 +34,7 @@ static int fail(const char *fmt, const char *a, long b)
     return 1;
 }
 
-static int press(const char *dev, const char *name)
+static int set_control(const char *dev, const char *name, int button, int32_t value)
 {
     struct v4l2_query_ext_ctrl q;
     int fd = open(dev, O_RDWR);
@@ -46,15 +47,15 @@ static int press(const char *dev, const char *name)
         if (strcmp(q.name, name) == 0) {
             struct v4l2_control c;
             c.id = q.id;
-            c.value = 1;
-            if (q.type != V4L2_CTRL_TYPE_BUTTON) {
+            c.value = value;
+            if (button != (q.type == V4L2_CTRL_TYPE_BUTTON)) {
                 close(fd);
-                return fail("control '%s' is not a button (type %ld)", name, (long)q.type);
+                return fail("control '%s' has the wrong type (%ld)", name, (long)q.type);
             }
             if (ioctl(fd, VIDIOC_S_CTRL, &c) != 0) {
                 int e = errno;
                 close(fd);
-                return fail("pressing '%s' failed (errno %ld)", name, e);
+                return fail("setting '%s' failed (errno %ld)", name, e);
             }
             close(fd);
             return 0;
@@ -169,7 +170,10 @@ static int json(const char *path, const char *count)
 int main(int argc, char **argv)
 {
     if (argc == 4 && strcmp(argv[1], "press") == 0) {
-        return press(argv[2], argv[3]);
+        return set_control(argv[2], argv[3], 1, 1);
+    }
+    if (argc == 5 && strcmp(argv[1], "set") == 0) {
+        return set_control(argv[2], argv[3], 0, (int32_t)strtol(argv[4], NULL, 10));
     }
     if ((argc == 3 || argc == 4) && strcmp(argv[1], "bars") == 0) {
         return bars(argv[2], argc == 4 ? argv[3] : NULL);
@@ -177,6 +181,6 @@ int main(int argc, char **argv)
     if (argc == 4 && strcmp(argv[1], "json") == 0) {
         return json(argv[2], argv[3]);
     }
-    fputs("usage: capture-check press DEVICE NAME | bars PGM [REF.pgm] | json FILE N\n", stderr);
+    fputs("usage: capture-check press DEVICE NAME | set DEVICE NAME VALUE | bars PGM [REF.pgm] | json FILE N\n", stderr);
     return 2;
 }

