@@ -98,6 +98,29 @@ static int run_detect(const fw_frame *f, const symline_config *cfg, const char *
     return st != SYMLINE_OK;
 }
 
+/* Smallest point storage with which a detection is not truncated (bisection;
+ * the detector reports truncation whenever the storage runs out, including
+ * its use as scratch for a pass's raster list of line points). */
+static void point_storage(const fw_frame *f, const symline_config *cfg, const char *what)
+{
+    const symline_image img = {f->width, f->height, f->width, f->px};
+    const size_t need = symline_detect_workspace_size(f->width, f->height, cfg);
+    uint32_t lo = 0u, hi = 16384u, used = 0u;
+    while (lo < hi) {
+        const uint32_t mid = (lo + hi) / 2u;
+        symline_result res = {segs, 256u, 0u, pts, mid, 0u, 0u};
+        if (symline_detect(&img, cfg, det_ws, need, &res) == SYMLINE_OK && !res.truncated) {
+            hi = mid;
+            used = res.point_count;
+        } else {
+            lo = mid + 1u;
+        }
+    }
+    printf("point storage %lux%lu m=%u %s: %lu points (%lu bytes) needed, %lu kept in the result\n",
+           (unsigned long)f->width, (unsigned long)f->height, M, what, (unsigned long)lo,
+           (unsigned long)(lo * sizeof(symline_point)), (unsigned long)used);
+}
+
 /* Workspace of the detector (the frame and the result arrays excluded). */
 static void workspace_sizes(void)
 {
@@ -149,6 +172,8 @@ int main(void)
         bad |= run_detect(&fw_bench_160x120, &def, "default");
         bad |= run_detect(&fw_bench_320x240, &one, "1axis1lvl");
         bad |= run_detect(&fw_bench_320x240, &def, "default");
+        point_storage(&fw_bench_320x240, &one, "1axis1lvl");
+        point_storage(&fw_bench_320x240, &def, "default");
     }
     workspace_sizes();
 #endif
