@@ -7,26 +7,33 @@
 #include <string.h>
 
 static const pixfmt_info formats[] = {
-    {PIXFMT_FOURCC('G', 'R', 'E', 'Y'), "GREY", PIXFMT_LUMA_PLANE, 0, 0},
-    {PIXFMT_FOURCC('N', 'V', '1', '2'), "NV12", PIXFMT_LUMA_PLANE, 0, 1},
-    {PIXFMT_FOURCC('N', 'V', '2', '1'), "NV21", PIXFMT_LUMA_PLANE, 0, 2},
-    {PIXFMT_FOURCC('Y', 'U', '1', '2'), "YU12", PIXFMT_LUMA_PLANE, 0, 3},
-    {PIXFMT_FOURCC('Y', 'V', '1', '2'), "YV12", PIXFMT_LUMA_PLANE, 0, 4},
-    {PIXFMT_FOURCC('N', 'V', '1', '6'), "NV16", PIXFMT_LUMA_PLANE, 0, 5},
-    {PIXFMT_FOURCC('N', 'V', '6', '1'), "NV61", PIXFMT_LUMA_PLANE, 0, 6},
-    {PIXFMT_FOURCC('4', '2', '2', 'P'), "422P", PIXFMT_LUMA_PLANE, 0, 7},
+    {PIXFMT_FOURCC('G', 'R', 'E', 'Y'), "GREY", PIXFMT_LUMA_PLANE, 0, 0, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('N', 'V', '1', '2'), "NV12", PIXFMT_LUMA_PLANE, 0, 1, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('N', 'V', '2', '1'), "NV21", PIXFMT_LUMA_PLANE, 0, 2, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('Y', 'U', '1', '2'), "YU12", PIXFMT_LUMA_PLANE, 0, 3, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('Y', 'V', '1', '2'), "YV12", PIXFMT_LUMA_PLANE, 0, 4, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('N', 'V', '1', '6'), "NV16", PIXFMT_LUMA_PLANE, 0, 5, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('N', 'V', '6', '1'), "NV61", PIXFMT_LUMA_PLANE, 0, 6, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('4', '2', '2', 'P'), "422P", PIXFMT_LUMA_PLANE, 0, 7, 1, 0, 0, 0},
     /* Multi-planar variants (luma in its own buffer, plane 0). */
-    {PIXFMT_FOURCC('N', 'M', '1', '2'), "NM12", PIXFMT_LUMA_PLANE, 0, 1},
-    {PIXFMT_FOURCC('N', 'M', '2', '1'), "NM21", PIXFMT_LUMA_PLANE, 0, 2},
-    {PIXFMT_FOURCC('Y', 'M', '1', '2'), "YM12", PIXFMT_LUMA_PLANE, 0, 3},
-    {PIXFMT_FOURCC('Y', 'M', '2', '1'), "YM21", PIXFMT_LUMA_PLANE, 0, 4},
-    {PIXFMT_FOURCC('N', 'M', '1', '6'), "NM16", PIXFMT_LUMA_PLANE, 0, 5},
-    {PIXFMT_FOURCC('N', 'M', '6', '1'), "NM61", PIXFMT_LUMA_PLANE, 0, 6},
-    {PIXFMT_FOURCC('Y', 'M', '1', '6'), "YM16", PIXFMT_LUMA_PLANE, 0, 7},
-    {PIXFMT_FOURCC('Y', 'U', 'Y', 'V'), "YUYV", PIXFMT_PACKED_422, 0, 10},
-    {PIXFMT_FOURCC('Y', 'V', 'Y', 'U'), "YVYU", PIXFMT_PACKED_422, 0, 11},
-    {PIXFMT_FOURCC('U', 'Y', 'V', 'Y'), "UYVY", PIXFMT_PACKED_422, 1, 12},
-    {PIXFMT_FOURCC('V', 'Y', 'U', 'Y'), "VYUY", PIXFMT_PACKED_422, 1, 13},
+    {PIXFMT_FOURCC('N', 'M', '1', '2'), "NM12", PIXFMT_LUMA_PLANE, 0, 1, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('N', 'M', '2', '1'), "NM21", PIXFMT_LUMA_PLANE, 0, 2, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('Y', 'M', '1', '2'), "YM12", PIXFMT_LUMA_PLANE, 0, 3, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('Y', 'M', '2', '1'), "YM21", PIXFMT_LUMA_PLANE, 0, 4, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('N', 'M', '1', '6'), "NM16", PIXFMT_LUMA_PLANE, 0, 5, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('N', 'M', '6', '1'), "NM61", PIXFMT_LUMA_PLANE, 0, 6, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('Y', 'M', '1', '6'), "YM16", PIXFMT_LUMA_PLANE, 0, 7, 1, 0, 0, 0},
+    {PIXFMT_FOURCC('Y', 'U', 'Y', 'V'), "YUYV", PIXFMT_PACKED_422, 0, 10, 2, 0, 0, 0},
+    {PIXFMT_FOURCC('Y', 'V', 'Y', 'U'), "YVYU", PIXFMT_PACKED_422, 0, 11, 2, 0, 0, 0},
+    {PIXFMT_FOURCC('U', 'Y', 'V', 'Y'), "UYVY", PIXFMT_PACKED_422, 1, 12, 2, 0, 0, 0},
+    {PIXFMT_FOURCC('V', 'Y', 'U', 'Y'), "VYUY", PIXFMT_PACKED_422, 1, 13, 2, 0, 0, 0},
+    /* Packed RGB, byte order in memory as named by V4L2. */
+    {PIXFMT_FOURCC('R', 'G', 'B', '3'), "RGB3", PIXFMT_PACKED_RGB, 0, 20, 3, 0, 1, 2},
+    {PIXFMT_FOURCC('B', 'G', 'R', '3'), "BGR3", PIXFMT_PACKED_RGB, 0, 21, 3, 2, 1, 0},
+    {PIXFMT_FOURCC('X', 'R', '2', '4'), "XR24", PIXFMT_PACKED_RGB, 0, 22, 4, 2, 1, 0},
+    {PIXFMT_FOURCC('A', 'R', '2', '4'), "AR24", PIXFMT_PACKED_RGB, 0, 23, 4, 2, 1, 0},
+    {PIXFMT_FOURCC('X', 'B', '2', '4'), "XB24", PIXFMT_PACKED_RGB, 0, 24, 4, 0, 1, 2},
+    {PIXFMT_FOURCC('A', 'B', '2', '4'), "AB24", PIXFMT_PACKED_RGB, 0, 25, 4, 0, 1, 2},
 };
 
 size_t pixfmt_count(void)
@@ -89,7 +96,23 @@ void pixfmt_fourcc_str(uint32_t fourcc, char out[5])
 
 uint64_t pixfmt_min_stride(const pixfmt_info *fmt, uint32_t width)
 {
-    return fmt->layout == PIXFMT_PACKED_422 ? 2u * (uint64_t)width : (uint64_t)width;
+    return (uint64_t)fmt->bytes_per_pixel * width;
+}
+
+static void rgb_to_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src_stride, uint32_t width,
+                        uint32_t height, uint8_t *dst, uint32_t dst_stride)
+{
+    uint32_t x, y;
+    const uint32_t bpp = fmt->bytes_per_pixel;
+    for (y = 0; y < height; y++) {
+        const uint8_t *s = src + (size_t)y * src_stride;
+        uint8_t *d = dst + (size_t)y * dst_stride;
+        for (x = 0; x < width; x++) {
+            const uint8_t *p = s + (size_t)x * bpp;
+            /* The same rounding as imgio's colour conversion, so replayed PNGs and live frames agree. */
+            d[x] = (uint8_t)((299u * p[fmt->r] + 587u * p[fmt->g] + 114u * p[fmt->b] + 500u) / 1000u);
+        }
+    }
 }
 
 void pixfmt_unpack_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src_stride,
@@ -97,6 +120,10 @@ void pixfmt_unpack_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src
 {
     uint32_t x, y;
     const uint32_t off = fmt->luma_offset;
+    if (fmt->layout == PIXFMT_PACKED_RGB) {
+        rgb_to_luma(fmt, src, src_stride, width, height, dst, dst_stride);
+        return;
+    }
     for (y = 0; y < height; y++) {
         /* Every second byte, from a fixed phase: a gather the compiler turns into shuffles. */
         const uint8_t *s = src + (size_t)y * src_stride + off;

@@ -7,7 +7,9 @@
  * full-resolution luma plane: the detector reads it in place, honouring the
  * driver's bytesperline. Packed 4:2:2 formats (YUYV, YVYU,
  * UYVY, VYUY) interleave luma with chroma and are deinterleaved into a
- * caller-owned buffer.
+ * caller-owned buffer. Packed RGB (RGB3, BGR3, XR24, AR24, XB24, AB24; the
+ * formats of vimc and of some USB cameras) is converted to luma with the
+ * weights imgio uses for colour files, Y = (299 R + 587 G + 114 B + 500) / 1000.
  */
 #ifndef SYMLINE_CAPTURE_PIXFMT_H
 #define SYMLINE_CAPTURE_PIXFMT_H
@@ -20,15 +22,18 @@
 
 typedef enum pixfmt_layout {
     PIXFMT_LUMA_PLANE = 0, /* luma is the first plane: width bytes per row, no copy */
-    PIXFMT_PACKED_422 = 1  /* 2 bytes per pixel, luma at byte offset luma_offset of each pair */
+    PIXFMT_PACKED_422 = 1, /* 2 bytes per pixel, luma at byte offset luma_offset of each pair */
+    PIXFMT_PACKED_RGB = 2  /* 3 or 4 bytes per pixel; luma computed as in imgio.h (BT.601) */
 } pixfmt_layout;
 
 typedef struct pixfmt_info {
     uint32_t fourcc;
     const char *name;     /* the fourcc as text, e.g. "YUYV" */
     pixfmt_layout layout;
-    uint32_t luma_offset; /* packed: 0 for Y first (YUYV, YVYU), 1 for chroma first (UYVY, VYUY) */
+    uint32_t luma_offset; /* packed 4:2:2: 0 for Y first (YUYV, YVYU), 1 for chroma first (UYVY, VYUY) */
     unsigned preference;  /* lower = preferred when the user names no format (no-copy first) */
+    uint32_t bytes_per_pixel; /* of the first plane: 1, 2 (4:2:2), 3 or 4 (RGB) */
+    uint8_t r, g, b;      /* RGB: byte offsets of red, green, blue within a pixel */
 } pixfmt_info;
 
 /* The table entry of a fourcc, or NULL when the format is not supported. */
@@ -46,13 +51,14 @@ void pixfmt_fourcc_str(uint32_t fourcc, char out[5]);
 
 /*
  * Bytes of one row of the format's first plane for a width, used to check a
- * driver's bytesperline: width for luma-plane formats, 2*width for packed.
+ * driver's bytesperline: bytes_per_pixel * width.
  */
 uint64_t pixfmt_min_stride(const pixfmt_info *fmt, uint32_t width);
 
 /*
- * Copies the luma of a packed 4:2:2 frame into dst (dst_stride bytes per row).
- * src_stride is the driver's bytesperline (>= 2*width). width must be even.
+ * Writes the luma of a packed 4:2:2 or RGB frame into dst (dst_stride bytes
+ * per row). src_stride is the driver's bytesperline (>= pixfmt_min_stride).
+ * For 4:2:2, width must be even.
  */
 void pixfmt_unpack_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src_stride,
                         uint32_t width, uint32_t height, uint8_t *dst, uint32_t dst_stride);

@@ -247,7 +247,7 @@ static capsrc_result v4l2_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
         frame->sequence = b.sequence;
         frame->timestamp_ns = ts_ns(&b);
         frame->skipped = (uint32_t)(src->stats.skipped_stale - skipped_before);
-        if (v->fmt->layout == PIXFMT_PACKED_422) {
+        if (v->fmt->layout != PIXFMT_LUMA_PLANE) {
             pixfmt_unpack_luma(v->fmt, v->map[got], v->stride, v->width, v->height, v->unpacked, v->width);
             frame->luma = v->unpacked;
             frame->stride = v->width;
@@ -515,7 +515,7 @@ static int configure(v4l2src *v, const v4l2_options *opt, char *desc, size_t des
         }
         v->maplen[i] = len;
     }
-    if (want->layout == PIXFMT_PACKED_422) {
+    if (want->layout != PIXFMT_LUMA_PLANE) {
         v->unpacked = malloc((size_t)v->width * v->height);
         if (v->unpacked == NULL) {
             snprintf(err, errlen, "out of memory");

@@ -58,6 +58,11 @@ check format-GREY format_check /dev/video0 GREY
 for f in NV12 NV21 YU12 YV12 NV16 NV61 422P YUYV YVYU UYVY VYUY; do
     check format-$f format_check /dev/video0 $f $ref
 done
+# RGB: converted with BT.601 weights from full-range RGB, so the bars are
+# brighter than vivid's limited-range GREY: bars checked without the reference.
+for f in RGB3 BGR3 XR24 AR24 XB24 AB24; do
+    check format-$f format_check /dev/video0 $f
+done
 # NM16 is left out: vivid (6.1) fills its luma plane wrongly (the white bar reads
 # 16..34 at the bottom); NM61 takes the same path through symline-capture.
 for f in GREY NV12 NM12 NM21 YM12 YM21 NM61 YM16 YUYV UYVY; do

@@ -17,7 +17,7 @@ static void test_lookup(void **state)
     assert_non_null(pixfmt_by_name("GREY"));
     assert_ptr_equal(pixfmt_by_name("yuyv"), pixfmt_find(PIXFMT_FOURCC('Y', 'U', 'Y', 'V')));
     assert_ptr_equal(pixfmt_by_name("I420"), pixfmt_by_name("YU12"));
-    assert_null(pixfmt_by_name("RGB3"));
+    assert_null(pixfmt_by_name("BA81")); /* Bayer: not supported */
     assert_null(pixfmt_by_name("YUYVX"));
     assert_null(pixfmt_by_name(""));
     assert_null(pixfmt_by_name(NULL));
@@ -54,7 +54,7 @@ static void test_gray_preferred(void **state)
         if (f != grey) {
             assert_true(f->preference > grey->preference);
         }
-        if (f->layout == PIXFMT_PACKED_422) {
+        if (f->layout != PIXFMT_LUMA_PLANE) {
             assert_true(f->preference > pixfmt_by_name("422P")->preference);
         }
     }
@@ -122,6 +122,47 @@ static void test_unpack_uyvy(void **state)
     check_unpack("VYUY");
 }
 
+/* BT.601 luma with imgio's rounding, from each RGB byte order. */
+static void test_rgb_luma(void **state)
+{
+    static const struct {
+        const char *name;
+        uint8_t px[4];
+        uint8_t y;
+    } cases[] = {
+        {"RGB3", {255, 0, 0, 0}, 76},    /* (299*255 + 500) / 1000 = 76 */
+        {"BGR3", {0, 0, 255, 0}, 76},
+        {"XR24", {0, 255, 0, 9}, 150},   /* B G R X: green, (587*255 + 500) / 1000 = 150 */
+        {"AR24", {255, 0, 0, 9}, 29},    /* blue: (114*255 + 500) / 1000 = 29 */
+        {"XB24", {0, 0, 255, 9}, 29},    /* R G B X: blue */
+        {"AB24", {255, 255, 255, 0}, 255},
+        {"RGB3", {10, 20, 30, 0}, 18},   /* (2990 + 11740 + 3420 + 500) / 1000 = 18 */
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const pixfmt_info *f = pixfmt_by_name(cases[i].name);
+        uint8_t src[2 * (8 + 4)], dst[2 * 3];
+        uint32_t k;
+        assert_non_null(f);
+        assert_int_equal(f->layout, PIXFMT_PACKED_RGB);
+        assert_int_equal(pixfmt_min_stride(f, 2), 2 * f->bytes_per_pixel);
+        memset(src, 0xAA, sizeof src);
+        memset(dst, 0x55, sizeof dst);
+        /* Two rows of two pixels, source stride 12, destination stride 3. */
+        for (k = 0; k < 4; k++) {
+            memcpy(src + (k / 2) * 12 + (k % 2) * f->bytes_per_pixel, cases[i].px, f->bytes_per_pixel);
+        }
+        pixfmt_unpack_luma(f, src, 12, 2, 2, dst, 3);
+        assert_int_equal(dst[0], cases[i].y);
+        assert_int_equal(dst[1], cases[i].y);
+        assert_int_equal(dst[3], cases[i].y);
+        assert_int_equal(dst[4], cases[i].y);
+        assert_int_equal(dst[2], 0x55);
+        assert_int_equal(dst[5], 0x55);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -132,6 +173,7 @@ int main(void)
         cmocka_unit_test(test_min_stride),
         cmocka_unit_test(test_unpack_yuyv),
         cmocka_unit_test(test_unpack_uyvy),
+        cmocka_unit_test(test_rgb_luma),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
