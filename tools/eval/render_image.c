@@ -91,8 +91,10 @@ static double trace(const rd_scene *s, rd_vec dir)
     if (tg <= tw) {
         double X = p.x + tg * dir.x, Y = p.y + tg * dir.y;
         if (fabs(X) <= s->carpet_x && fabs(Y) <= s->carpet_y) {
-            double n = 0.6 * vnoise(X / 0.03, Y / 0.03, s->texture_seed) +
-                       0.4 * vnoise(X / 0.25, Y / 0.25, s->texture_seed ^ 0x5555u);
+            /* Fibre grain (6 mm), tufts (3 cm) and patches (25 cm) of the carpet. */
+            double n = 0.35 * vnoise(X / 0.006, Y / 0.006, s->texture_seed ^ 0xAAAAu) +
+                       0.4 * vnoise(X / 0.03, Y / 0.03, s->texture_seed) +
+                       0.25 * vnoise(X / 0.25, Y / 0.25, s->texture_seed ^ 0x5555u);
             if (painted(X, Y)) {
                 return s->paint * (1.0 + 0.3 * s->texture * n);
             }

@@ -283,7 +283,7 @@ void rd_scene_random(rd_scene *s, rd_set set, int width, int height, uint64_t se
     s->wall_h = rd_rand_uniform(&rng, 1.0, 3.0);
     s->wall_band_z0 = rd_rand_uniform(&rng, 0.3, 0.6);
     s->wall_band_z1 = s->wall_band_z0 + rd_rand_uniform(&rng, 0.1, 0.4);
-    s->texture = rd_rand_uniform(&rng, 0.04, 0.10);
+    s->texture = rd_rand_uniform(&rng, 0.08, 0.20);
     s->texture_seed = rd_rand_u64(&rng);
     switch (set) {
     case RD_DARK:
