@@ -29,7 +29,9 @@ log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 
 ok() { printf '  [ok]   %s\n' "$*"; }
-bad() { printf '  [FAIL] %s\n' "$*"; failed=1; }
+failures=""
+bad() { printf '  [FAIL] %s\n' "$*"; failed=1; failures="$failures
+  - $*"; }
 step() { printf '\n== %s\n' "$*"; }
 # run DESCRIPTION CMD...: quiet on success, the command's output on failure.
 run() {
@@ -77,7 +79,7 @@ cross m4 arm-none-eabi.cmake Release -DSYMLINE_CPU=cortex-m4 -DSYMLINE_BUILD_FIR
 
 step "RV32IMAC: the freestanding core links with -nostdlib -lgcc"
 lib=$prefix-rv32/lib/libsymline.a
-if [ -f "$lib" ] && run "rv32 link" riscv64-unknown-elf-gcc -march=rv32imac -mabi=ilp32 -nostdlib \
+if [ -f "$lib" ] && run "rv32 link with -nostdlib -lgcc (undefined references)" riscv64-unknown-elf-gcc -march=rv32imac -mabi=ilp32 -nostdlib \
         -Wl,--entry=symline_status_str -Wl,--whole-archive "$lib" -Wl,--no-whole-archive -lgcc \
         -o "$prefix-rv32/linkcheck.elf"; then
     ok "every object of libsymline.a resolved ($(riscv64-unknown-elf-size "$prefix-rv32/linkcheck.elf" | awk 'NR==2{print $1 " bytes text"}'))"
@@ -130,10 +132,12 @@ for c in m0plus-os m4; do
     arm-none-eabi-objdump -dt "$libgcc" | awk -f tools/firmware/helpers.awk >"$prefix-$c/libgcc-stack.txt"
     echo "  $c (libgcc helpers: bounds from $(echo "$libgcc" | sed 's|.*/arm-none-eabi/||')):"
     # shellcheck disable=SC2086
-    if awk -v budget="$stack_budget" -f tools/firmware/stack.awk "$prefix-$c/libgcc-stack.txt" $cis; then
+    if awk -v budget="$stack_budget" -f tools/firmware/stack.awk "$prefix-$c/libgcc-stack.txt" $cis >"$log"; then
+        cat "$log"
         ok "$c: every entry point within $stack_budget B"
     else
-        bad "$c: stack check"
+        cat "$log"
+        bad "$c stack: $(grep -c ' OVER ' "$log") entry point(s) over $stack_budget B ($(grep ' OVER ' "$log" | awk '{printf "%s%s %s B", sep, $1, $2; sep=", "}'))$(grep -q 'problem:' "$log" && printf '; %s' "$(grep 'problem:' "$log" | sed 's/ *problem: //' | paste -sd';' -)")"
     fi
 done
 
@@ -242,5 +246,5 @@ if run "build target programs" cmake --build "$dir" -j "$jobs"; then
 fi
 
 echo
-if [ "$failed" -eq 0 ]; then echo "firmware checks: all passed"; else echo "firmware checks: FAILED"; fi
+if [ "$failed" -eq 0 ]; then echo "firmware checks: all passed"; else echo "firmware checks: FAILED:$failures"; fi
 exit "$failed"
