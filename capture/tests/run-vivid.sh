@@ -80,7 +80,7 @@ timeout 900 qemu-system-x86_64 -accel tcg -m 512 -nographic -no-reboot -nic none
     -kernel "$kimage" -initrd "$initrd" -append "console=ttyS0 quiet panic=-1" >"$log" 2>&1 || true
 end=$(date +%s)
 
-grep -a -E '^(SYMLINE-CHECK|SYMLINE-RESULT|    \| )' "$log" | tr -d '\r' || true
+grep -a -E '^(SYMLINE-CHECK|SYMLINE-RESULT|SYMLINE-INFO|    \| )' "$log" | tr -d '\r' || true
 echo "run-vivid: guest ran $((end - start)) s; serial log: $log" >&2
 if grep -a -q '^SYMLINE-RESULT PASS' "$log" && ! grep -a -q '^SYMLINE-CHECK .* FAIL' "$log"; then
     exit 0
