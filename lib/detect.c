@@ -19,9 +19,12 @@ void symline_config_default(symline_config *cfg)
     cfg->levels = 0u;
     cfg->filter = SYMLINE_FILTER_CONTRAST;
     cfg->illumination = 0u;
+    cfg->adaptive = 1u;
+    cfg->bright_sigma10 = 0;
+    cfg->ridge_sigma10 = 10u;
     cfg->a_distance = 0u;
-    cfg->contrast_pct = 15u;
-    cfg->contrast_min = 6u;
+    cfg->contrast_pct = 0u;
+    cfg->contrast_min = 3u;
     cfg->min_length = 12u;
     cfg->curve_dev_q8 = 512u;
     cfg->merge_gap = 0xFFFFFFFFu;
@@ -43,8 +46,9 @@ static symline_status check_config(const symline_config *c)
     if (c->filter != SYMLINE_FILTER_CONTRAST && c->filter != SYMLINE_FILTER_PAPER) {
         return SYMLINE_ERR_CONFIG;
     }
-    if (c->illumination > 255u || c->a_distance > 32u || c->contrast_pct > 100u ||
-        c->contrast_min > 255u || c->min_length > SYMLINE_MAX_DIM ||
+    if (c->illumination > 255u || c->adaptive > 1u || c->bright_sigma10 < -100 ||
+        c->bright_sigma10 > 100 || c->ridge_sigma10 > 100u || c->a_distance > 32u || c->contrast_pct > 100u ||
+        c->contrast_min > 255u ||  c->min_length > SYMLINE_MAX_DIM ||
         c->curve_dev_q8 > (SYMLINE_MAX_DIM << 8) || c->merge_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
         return SYMLINE_ERR_CONFIG;
     }
@@ -219,12 +223,53 @@ static void run_pass(detect_run *d, const symline_image *img, const sl_pass *p, 
     d->prev_seg = d->nseg;
 }
 
+/* Mean and standard deviation (Q4) of the frame's gray values: one read of
+ * the frame, summed per row so a row's sums stay in 32 bits. */
+static void frame_stats(const symline_image *img, uint32_t *mean, uint32_t *sigma_q4)
+{
+    uint64_t sum = 0u, sq = 0u, n, var_q8;
+    uint32_t x, y;
+    for (y = 0; y < img->height; y++) {
+        const uint8_t *row = img->data + (size_t)y * img->stride;
+        uint32_t rs = 0u;
+        uint64_t rq = 0u;
+        for (x = 0; x < img->width; x++) {
+            rs += row[x];
+            rq += (uint32_t)row[x] * row[x];
+        }
+        sum += rs;
+        sq += rq;
+    }
+    n = (uint64_t)img->width * img->height;
+    *mean = (uint32_t)((sum + n / 2u) / n);
+    /* var = sq/n - (sum/n)^2, in Q8: (256 sq n - 256 sum^2) / n^2, kept in 64 bits. */
+    var_q8 = ((sq << 8) / n) - (((sum << 4) / n) * ((sum << 4) / n));
+    if ((int64_t)var_q8 < 0) {
+        var_q8 = 0u;
+    }
+    *sigma_q4 = (uint32_t)sl_isqrt64(var_q8);
+}
+
+/* The adaptive thresholds folded into a pass. */
+static void adapt(sl_pass *p, const symline_config *cfg, uint32_t mean, uint32_t sigma_q4)
+{
+    const int64_t t = (int64_t)mean + (int64_t)cfg->bright_sigma10 * sigma_q4 / 160;
+    const uint32_t ridge = (uint32_t)(((uint64_t)cfg->ridge_sigma10 * sigma_q4 + 80u) / 160u);
+    const uint32_t illum = t < 0 ? 0u : (t > 255 ? 255u : (uint32_t)t);
+    if (illum > p->illum) {
+        p->illum = illum;
+    }
+    if (ridge > p->cmin) {
+        p->cmin = ridge;
+    }
+}
+
 symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
                               size_t ws_size, symline_result *out)
 {
     symline_status st = symline_image_check(img);
     detect_run d;
-    uint32_t L, l, a, npts = 0u;
+    uint32_t L, l, a, npts = 0u, mean = 0u, sigma_q4 = 0u;
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -248,11 +293,17 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.prev_seg = 0u;
     d.truncated = 0u;
     out->segment_count = 0u;
+    if (cfg->adaptive) {
+        frame_stats(img, &mean, &sigma_q4);
+    }
     L = level_count(cfg, img->width, img->height);
     for (l = 0; l < L; l++) {
         for (a = 0; a < axis_count(cfg); a++) {
             sl_pass p;
             sl_pass_setup(&p, cfg, axis_of(cfg, a), l, img->width, img->height);
+            if (cfg->adaptive) {
+                adapt(&p, cfg, mean, sigma_q4);
+            }
             run_pass(&d, img, &p, (uint8_t *)ws, ws_size, &npts);
         }
     }

@@ -3,10 +3,12 @@
  *
  * A field line is a bright ridge across its direction. The contrast filter
  * asks exactly that of the S point: its gray value must stand above the gray
- * values k = m+1 pixels to both sides, by a share of its own value (so the
- * test does not change when the whole frame gets darker or brighter) and by a
- * few gray levels (so sensor noise on a dark carpet does not pass). k = m+1
- * also rejects S points inside regions wider than the operator's reach.
+ * values k = m+1 pixels to both sides. k = m+1 also rejects S points inside
+ * regions wider than the operator's reach (those belong to a coarser scale).
+ * The ridge height needed and the minimum gray value are set per frame by
+ * symline_detect() from the frame's mean and standard deviation (`adaptive`),
+ * so scaling or offsetting the brightness leaves the decision unchanged apart
+ * from clipping and rounding.
  * The paper's A1-S filter only asks for an A point nearby (done by the
  * caller, which holds the extrema) and an absolute illumination threshold.
  */
@@ -49,5 +51,8 @@ int sl_filter_gray(const sl_pass *p, uint32_t c, uint32_t lo, uint32_t hi)
     if (need < p->cmin) {
         need = p->cmin;
     }
-    return c - side >= need;
+    if (c - side < need) {
+        return 0;
+    }
+    return 1;
 }

@@ -52,8 +52,10 @@ typedef enum symline_axes {
 typedef enum symline_filter {
     /* Bright ridge test: the S point's gray value c and the gray values lo, hi
      * at radius+1 pixels on either side across the line must satisfy
-     * c - max(lo, hi) >= max(contrast_min, c * contrast_pct / 100).
-     * Relative, so it keeps working when the illumination changes. */
+     * c - max(lo, hi) >= max(contrast_min, c * contrast_pct / 100, ridge)
+     * (ridge: see `adaptive`).
+     * With `adaptive` the ridge height is measured in units of the frame's
+     * contrast, so it keeps working when the illumination changes. */
     SYMLINE_FILTER_CONTRAST = 0,
     /* The paper's A1-S pattern: an A point within a_distance pixels across
      * the line. Use with illumination = 100 for the paper's baseline. */
@@ -79,13 +81,23 @@ typedef struct symline_config {
     symline_filter filter; /* default SYMLINE_FILTER_CONTRAST */
     uint32_t illumination; /* minimum gray value of a line point, 0..255
                               (0 disables); default 0, the paper used 100 */
+    uint32_t adaptive;     /* 1: the two thresholds below follow the frame's
+                              mean gray value and its standard deviation sigma,
+                              so a brighter, darker or lower-contrast exposure
+                              of the same scene gives the same lines; 0: off.
+                              Default 1 */
+    int32_t bright_sigma10; /* adaptive: a line point's gray value must reach
+                              mean + bright_sigma10/10 * sigma, -100..100;
+                              default 0 (the mean) */
+    uint32_t ridge_sigma10; /* adaptive: contrast filter ridge height of at
+                              least ridge_sigma10/10 * sigma, 0..100; default 10 */
     uint32_t a_distance;   /* paper filter: largest distance (px, at the pass's
                               scale) of the A point across the line, 1..32;
                               default 0 = the radius */
     uint32_t contrast_pct; /* contrast filter: relative ridge height, % of the
-                              centre gray value, 0..100; default 15 */
+                              centre gray value, 0..100; default 0 */
     uint32_t contrast_min; /* contrast filter: smallest ridge height in gray
-                              levels, 0..255; default 6 */
+                              levels, 0..255; default 3 */
     uint32_t min_length;   /* shortest reported piece, px along its points;
                               default 12 */
     uint32_t curve_dev_q8; /* curve threshold on max_dev, Q8 px; default 512 (2 px) */

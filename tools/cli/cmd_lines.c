@@ -25,11 +25,15 @@ static void lines_usage(FILE *f, const char *cmd)
             "  --levels L          scales 1..5 (1 = full resolution only; default auto:\n"
             "                      enough 2x steps for lines width/16 px wide)\n"
             "  --filter contrast|paper   line filter (default contrast; 'paper' is the\n"
-            "                      A1-S baseline and implies --illumination 100)\n"
+            "                      A1-S baseline and implies --illumination 100\n"
+            "                      --adaptive 0)\n"
             "  --illumination G    minimum gray value of a line point, 0..255 (0 = off)\n"
+            "  --adaptive 0|1      thresholds follow the frame's mean and sigma (1)\n"
+            "  --bright-sigma B    adaptive: gray >= mean + (B-100)/10 sigma, 0..200 (100)\n"
+            "  --ridge-sigma R     adaptive: ridge height >= R/10 sigma, 0..100 (10)\n"
             "  --a-distance D      paper filter: A point within D px across the line\n"
-            "  --contrast PCT      contrast filter: ridge height, %% of centre gray (15)\n"
-            "  --contrast-min G    contrast filter: ridge height in gray levels (6)\n"
+            "  --contrast PCT      contrast filter: ridge height, %% of centre gray (0)\n"
+            "  --contrast-min G    contrast filter: ridge height in gray levels (3)\n"
             "  --min-length PX     shortest reported piece (12)\n"
             "  --curve-dev Q8      curve threshold on max_dev, 1/256 px (512 = 2 px)\n"
             "  --merge-gap PX      merge collinear lines up to PX apart (default width/8,\n"
@@ -59,7 +63,7 @@ static int parse_u32_opt(int argc, char **argv, int *i, uint32_t lo, uint32_t hi
 /* 0 ok, 1 --help shown, CLI_USAGE on error. */
 static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
 {
-    int i, npos = 0, have_illum = 0;
+    int i, npos = 0, have_illum = 0, have_adaptive = 0;
     const char *pos[2] = {NULL, NULL};
     symline_config *c = &a->cfg;
     symline_config_default(c);
@@ -98,6 +102,15 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
         } else if (strcmp(o, "--illumination") == 0) {
             rc = parse_u32_opt(argc, argv, &i, 0, 255, &c->illumination);
             have_illum = 1;
+        } else if (strcmp(o, "--adaptive") == 0) {
+            rc = parse_u32_opt(argc, argv, &i, 0, 1, &c->adaptive);
+            have_adaptive = 1;
+        } else if (strcmp(o, "--bright-sigma") == 0) {
+            uint32_t v;
+            rc = parse_u32_opt(argc, argv, &i, 0, 200, &v);
+            c->bright_sigma10 = (int32_t)v - 100;
+        } else if (strcmp(o, "--ridge-sigma") == 0) {
+            rc = parse_u32_opt(argc, argv, &i, 0, 100, &c->ridge_sigma10);
         } else if (strcmp(o, "--a-distance") == 0) {
             rc = parse_u32_opt(argc, argv, &i, 1, 32, &c->a_distance);
         } else if (strcmp(o, "--contrast") == 0) {
@@ -129,6 +142,9 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     }
     if (c->filter == SYMLINE_FILTER_PAPER && !have_illum) {
         c->illumination = 100u;
+    }
+    if (c->filter == SYMLINE_FILTER_PAPER && !have_adaptive) {
+        c->adaptive = 0u;
     }
     a->in = pos[0];
     a->out = pos[1];
