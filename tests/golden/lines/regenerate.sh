@@ -1,0 +1,22 @@
+#!/bin/sh
+# Regenerates the golden line-detector JSON: `symline lines` with default
+# settings (and the paper filter baseline) on every bundled frame.
+# Usage: tests/golden/lines/regenerate.sh [BUILD_DIR]
+# (also: cmake --build BUILD_DIR --target golden-lines). Review the diff before
+# committing: a change here means the detector's output changed.
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+build=${1:-$here/../../../build}
+cli="$build/bin/symline"
+[ -x "$cli" ] || { echo "regenerate.sh: $cli not built (cmake --build $build --target symline_cli)" >&2; exit 2; }
+n=0
+for src in "$here"/../../data/*.pgm; do
+    base=$(basename "$src" .pgm)
+    "$cli" lines "$src" > "$here/$base.json"
+    n=$((n + 1))
+done
+# The paper's A1-S filter as a baseline, on one frame (its output is large).
+base=msl_20250403_r4_cam3_20250403_221433
+"$cli" lines --filter paper "$here/../../data/$base.pgm" > "$here/$base.paper.json"
+n=$((n + 1))
+echo "wrote $n golden JSON files to $here"
