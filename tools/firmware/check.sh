@@ -133,9 +133,11 @@ for c in m0plus-os m4; do
     echo "  $c (libgcc helpers: bounds from $(echo "$libgcc" | sed 's|.*/arm-none-eabi/||')):"
     # shellcheck disable=SC2086
     if awk -v budget="$stack_budget" -f tools/firmware/stack.awk "$prefix-$c/libgcc-stack.txt" $cis >"$log"; then
+        cp "$log" "$prefix-$c/stack.txt"
         cat "$log"
         ok "$c: every entry point within $stack_budget B"
     else
+        cp "$log" "$prefix-$c/stack.txt"
         cat "$log"
         bad "$c stack: $(grep -c ' OVER ' "$log") entry point(s) over $stack_budget B ($(grep ' OVER ' "$log" | awk '{printf "%s%s %s B", sep, $1, $2; sep=", "}'))$(grep -q 'problem:' "$log" && printf '; %s' "$(grep 'problem:' "$log" | sed 's/ *problem: //' | paste -sd';' -)")"
     fi
@@ -234,6 +236,21 @@ if run "build target programs" cmake --build "$dir" -j "$jobs"; then
                 bad "detector: target exit $rc, host exit $hrc, outputs differ or failed:"
                 diff "$host/detect.host.txt" "$prefix-m4/detect.target.txt" | head -20 | sed 's/^/         /'
             fi
+        fi
+    fi
+    if [ -f "$dir/bin/symline_fw_stackuse.elf" ] && [ -f "$dir/stack.txt" ]; then
+        # Measured stack (painted region) must stay within the static bound.
+        if qemu -kernel "$dir/bin/symline_fw_stackuse.elf" >"$log" 2>&1; then
+            while read -r _ name used _; do
+                bound=$(awk -v n="$name" '$1 == n { print $2 }' "$dir/stack.txt")
+                if [ -n "$bound" ] && [ "$used" -le "$bound" ]; then
+                    ok "stack measured on the target: $name $used B <= static bound $bound B"
+                else
+                    bad "stack measured on the target: $name $used B > static bound ${bound:-?} B (the analysis misses something)"
+                fi
+            done <"$log"
+        else
+            bad "stack measurement (exit $?):"; sed 's/^/         /' "$log" | tail -10
         fi
     fi
     echo "  instructions per pixel (qemu -icount shift=0, SysTick):"

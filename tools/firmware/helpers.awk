@@ -4,7 +4,8 @@
 #   arm-none-eabi-objdump -dt libgcc.a | awk -f tools/firmware/helpers.awk > helpers.txt
 #
 # Output: one line "name bytes" per function. A function's own frame is
-# bounded by the sum of everything it ever pushes (push/stmdb sp!/sub sp, all
+# bounded by the sum of everything it ever pushes (push/stmdb sp!/sub sp/
+# stores with [sp, #-N]! write-back, all
 # branches added up, pops ignored), and its bound is that frame plus the
 # largest bound of the functions it calls (bl) or tail-branches to (b to
 # another function). Recursion is reported as -1 (no bound).
@@ -12,8 +13,8 @@ function regs(list,    n, i, parts, a, b) {
     gsub(/[{} ]/, "", list)
     n = split(list, parts, ",")
     for (i = 1; i <= n; i++) {
-        if (parts[i] ~ /^r[0-9]+-r[0-9]+$/) {
-            split(parts[i], a, "-"); sub(/r/, "", a[1]); sub(/r/, "", a[2])
+        if (parts[i] ~ /^[rds][0-9]+-[rds][0-9]+$/) {
+            split(parts[i], a, "-"); sub(/^[rds]/, "", a[1]); sub(/^[rds]/, "", a[2])
             n += a[2] - a[1]
         }
     }
@@ -38,6 +39,14 @@ f == "" { next }
     if ($0 ~ /\tstmdb/ && $0 !~ /sp!/) next
     l = $0; sub(/.*\{/, "{", l); sub(/\}.*/, "}", l)
     frame[f] += 4 * regs(l); next
+}
+/\tvpush\t/ {
+    l = $0; sub(/.*\{/, "{", l); sub(/\}.*/, "}", l)
+    frame[f] += ((l ~ /d[0-9]/) ? 8 : 4) * regs(l); next
+}
+/\[sp, #-[0-9]+\]!/ {
+    # pre-indexed store with write-back (e.g. strd ip, lr, [sp, #-16]!)
+    l = $0; sub(/.*\[sp, #-/, "", l); sub(/\].*/, "", l); frame[f] += l + 0; next
 }
 /\tsub(\.w|w)?\tsp, / {
     l = $0; sub(/.*#/, "", l); frame[f] += l + 0; next
