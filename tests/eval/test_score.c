@@ -72,6 +72,8 @@ static void test_perfect(void **state)
     assert_int_equal(s.gt_samples, 201);
     assert_int_equal(s.line_matched, 1);
     assert_int_equal(s.line_ok, 1);
+    assert_int_equal(s.line_matched_s, 201);
+    assert_int_equal(s.line_ok_s, 201);
     ev_paths_free(&gt);
 }
 
@@ -172,6 +174,7 @@ static void test_curve_polyline(void **state)
                    2.0);
     assert_int_equal(s.curve_matched, 1);
     assert_int_equal(s.curve_ok, 0);
+    assert_true(s.curve_matched_s == s.det_samples && s.curve_ok_s == 0);
     ev_paths_free(&gt);
 }
 

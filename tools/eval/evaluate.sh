@@ -181,8 +181,9 @@ echo
 echo "Data: $DATA; rendered sets: seed $SEED, $COUNT images per set and size; build: $BIN"
 echo "Columns per filter: mean per-image F1, precision P, recall R (SPEC 7: samples every"
 echo "0.5 px, tolerance max(2, 3*width/640) px); cls = classification accuracy over detected"
-echo "pieces matched to ground truth (line GT as kind line, circle GT as kind curve), with"
-echo "the number of matched pieces. Filters: $FILTERS."
+echo "pieces matched to ground truth (line GT as kind line, circle GT as kind curve): share"
+echo "of pieces / share weighted by length (number of matched pieces). Set 'given' ="
+echo "DATA_DIR/synth; the others are rendered, NAME-WIDTH. Filters: $FILTERS."
 echo
 
 hdr="| set | n |"
@@ -214,10 +215,11 @@ for sd in $set_dirs; do
         done
         cell=$(awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
                       n++; f1 += v["f1"]; p += v["p"]; r += v["r"]
-                      m += v["line_matched"] + v["curve_matched"]; ok += v["line_ok"] + v["curve_ok"] }
+                      m += v["line_matched"] + v["curve_matched"]; ok += v["line_ok"] + v["curve_ok"]
+                      ms += v["line_matched_s"] + v["curve_matched_s"]; oks += v["line_ok_s"] + v["curve_ok_s"] }
                     END { if (n == 0) { print "0 | - | - | - | - |"; exit }
-                          printf "%d | %.3f | %.3f | %.3f | %s (%d) |\n", n, f1 / n, p / n, r / n,
-                                 m ? sprintf("%.3f", ok / m) : "-", m }' "$OUT/scores.tmp")
+                          printf "%d | %.3f | %.3f | %.3f | %s / %s (%d) |\n", n, f1 / n, p / n, r / n,
+                                 m ? sprintf("%.3f", ok / m) : "-", ms ? sprintf("%.3f", oks / ms) : "-", m }' "$OUT/scores.tmp")
         n=${cell%% *}
         row="$row ${cell#* | }"
     done

@@ -3,6 +3,7 @@
  */
 #include "score.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -22,6 +23,12 @@ static void finish(ev_score *s)
 
 void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
                     double tol, ev_score *out)
+{
+    ev_score_paths_report(gt, dontcare, det, tol, out, NULL);
+}
+
+void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
+                           double tol, ev_score *out, FILE *pieces)
 {
     ev_index gix, dcix, dix;
     ev_pt *ds = NULL, *gs = NULL;
@@ -68,15 +75,36 @@ void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths
        its class is the kind of ground truth most of those samples are near. */
     for (i = 0; i < det->npieces; i++) {
         size_t near = near_line[i] + near_curve[i];
+        if (pieces != NULL) {
+            const ev_pt *q = ev_piece_pts(det, i);
+            size_t n = ev_piece_len(det, i);
+            fprintf(pieces,
+                    "piece=%zu kind=%s x0=%.1f y0=%.1f x1=%.1f y1=%.1f length=%.1f samples=%zu "
+                    "near_line=%zu near_curve=%zu class=%s\n",
+                    i, det->tag[i] == EV_TAG_LINE ? "line" : det->tag[i] == EV_TAG_CURVE ? "curve" : "other",
+                    q[0].x, q[0].y, q[n - 1].x, q[n - 1].y, ev_piece_length(det, i), nsamp[i],
+                    near_line[i], near_curve[i],
+                    (nsamp[i] == 0 || 2 * near < nsamp[i]) ? "unmatched"
+                    : near_line[i] >= near_curve[i]     ? "straight"
+                                                        : "circle");
+        }
         if (nsamp[i] == 0 || 2 * near < nsamp[i]) {
             continue;
         }
         if (near_line[i] >= near_curve[i]) {
             out->line_matched++;
-            out->line_ok += (size_t)(det->tag[i] == EV_TAG_LINE);
+            out->line_matched_s += nsamp[i];
+            if (det->tag[i] == EV_TAG_LINE) {
+                out->line_ok++;
+                out->line_ok_s += nsamp[i];
+            }
         } else {
             out->curve_matched++;
-            out->curve_ok += (size_t)(det->tag[i] == EV_TAG_CURVE);
+            out->curve_matched_s += nsamp[i];
+            if (det->tag[i] == EV_TAG_CURVE) {
+                out->curve_ok++;
+                out->curve_ok_s += nsamp[i];
+            }
         }
     }
     finish(out);
@@ -111,5 +139,6 @@ void ev_score_mask(const unsigned char *mask, int width, int height, const ev_pa
     ev_score_paths(&pix, NULL, det, tol, out);
     /* A mask says nothing about line or curve. */
     out->line_matched = out->line_ok = out->curve_matched = out->curve_ok = 0;
+    out->line_matched_s = out->line_ok_s = out->curve_matched_s = out->curve_ok_s = 0;
     ev_paths_free(&pix);
 }

@@ -7,6 +7,7 @@
 #define SYMLINE_EVAL_SCORE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "paths.h"
 
@@ -21,6 +22,8 @@ typedef struct ev_score {
     size_t gt_hits;      /* ground-truth samples within tol of a detection */
     size_t line_matched, line_ok;   /* detected pieces matched to straight GT; of those, kind "line" */
     size_t curve_matched, curve_ok; /* detected pieces matched to circle GT; of those, kind "curve" */
+    /* The same four counts weighted by length: samples of those pieces. */
+    size_t line_matched_s, line_ok_s, curve_matched_s, curve_ok_s;
 } ev_score;
 
 /* max(2, 3*width/640) pixels. */
@@ -33,6 +36,11 @@ double ev_tolerance(int width);
  */
 void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
                     double tol, ev_score *out);
+
+/* Same; when pieces is not NULL, one line per detected piece goes there (its
+   samples near straight and near circle ground truth, and its class). */
+void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
+                           double tol, ev_score *out, FILE *pieces);
 
 /*
  * Binary line mask (nonzero = line pixel, width*height bytes, stride = width):

@@ -10,9 +10,11 @@
 #include "imgio.h"
 #include "score.h"
 
+static int g_pieces; /* --pieces: one line per detected piece before the score (gt mode) */
+
 static void usage(FILE *f)
 {
-    fputs("usage: symline-score [--tol PX] gt NAME DET.json\n"
+    fputs("usage: symline-score [--pieces] [--tol PX] gt NAME DET.json\n"
           "       symline-score [--tol PX] mask MASK.pgm DET.json\n"
           "       symline-score [--tol PX] pair REF.json DET.json\n"
           "       symline-score gtjson NAME\n"
@@ -25,7 +27,10 @@ static void usage(FILE *f)
           "      circle pieces as kind \"curve\" with a polyline): a perfect detector.\n"
           "Samples every 0.5 px; tolerance max(2, 3*width/640) px unless --tol.\n"
           "Prints one line of key=value pairs: f1 p r, sample counts, and the\n"
-          "classification counts line_matched line_ok curve_matched curve_ok.\n"
+          "classification counts line_matched line_ok curve_matched curve_ok and the\n"
+          "same weighted by length (samples): line_matched_s line_ok_s curve_matched_s curve_ok_s.\n"
+          "--pieces (gt mode): first one line per detected piece: kind, length, samples near\n"
+          "      straight and near circle ground truth, class (straight, circle, unmatched).\n"
           "Exit status: 0 ok, 1 unreadable input, 2 usage.\n",
           f);
 }
@@ -34,9 +39,10 @@ static void print_score(const ev_score *s, double tol)
 {
     printf("f1=%.6f p=%.6f r=%.6f tol=%.3f det_samples=%zu det_counted=%zu det_hits=%zu "
            "gt_samples=%zu gt_hits=%zu line_matched=%zu line_ok=%zu curve_matched=%zu "
-           "curve_ok=%zu\n",
+           "curve_ok=%zu line_matched_s=%zu line_ok_s=%zu curve_matched_s=%zu curve_ok_s=%zu\n",
            s->f1, s->p, s->r, tol, s->det_samples, s->det_counted, s->det_hits, s->gt_samples,
-           s->gt_hits, s->line_matched, s->line_ok, s->curve_matched, s->curve_ok);
+           s->gt_hits, s->line_matched, s->line_ok, s->curve_matched, s->curve_ok,
+           s->line_matched_s, s->line_ok_s, s->curve_matched_s, s->curve_ok_s);
 }
 
 static int mode_gt(const char *name, const char *detpath, double tol)
@@ -75,7 +81,7 @@ static int mode_gt(const char *name, const char *detpath, double tol)
         }
         tol = ev_tolerance(w);
     }
-    ev_score_paths(&gt, &dc, &det, tol, &s);
+    ev_score_paths_report(&gt, &dc, &det, tol, &s, g_pieces ? stdout : NULL);
     print_score(&s, tol);
     rc = 0;
 out:
@@ -190,6 +196,10 @@ int main(int argc, char **argv)
     if (argc >= 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
         usage(stdout);
         return 0;
+    }
+    if (i < argc && strcmp(argv[i], "--pieces") == 0) {
+        g_pieces = 1;
+        i++;
     }
     if (i + 1 < argc && strcmp(argv[i], "--tol") == 0) {
         char *end;
