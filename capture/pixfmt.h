@@ -17,6 +17,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define PIXFMT_FOURCC(a, b, c, d) \
     ((uint32_t)(a) | ((uint32_t)(b) << 8) | ((uint32_t)(c) << 16) | ((uint32_t)(d) << 24))
 
@@ -62,5 +66,9 @@ uint64_t pixfmt_min_stride(const pixfmt_info *fmt, uint32_t width);
  */
 void pixfmt_unpack_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src_stride,
                         uint32_t width, uint32_t height, uint8_t *dst, uint32_t dst_stride);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

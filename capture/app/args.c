@@ -72,6 +72,7 @@ static void usage(FILE *f)
           "  --device /dev/videoN   V4L2 capture device\n"
 #ifdef SYMLINE_HAVE_LIBCAMERA
           "  --camera ID|INDEX      libcamera camera, by id or by index (0 = first)\n"
+          "  --list-cameras         print the cameras libcamera sees, then exit\n"
 #endif
           "  --replay PATH          folder of .pgm/.png frames (name order), one image, or a\n"
           "                         text file listing one image path per line\n"
@@ -166,6 +167,8 @@ int app_parse_args(int argc, char **argv, app_options *o)
         } else if (strcmp(a, "--camera") == 0 && next) {
             o->camera = next;
             i++;
+        } else if (strcmp(a, "--list-cameras") == 0) {
+            o->list_cameras = 1;
         } else if (strcmp(a, "--replay") == 0 && next) {
             o->replay = next;
             i++;
@@ -255,6 +258,13 @@ int app_parse_args(int argc, char **argv, app_options *o)
     }
     if (o->cfg.filter == SYMLINE_FILTER_PAPER && !have_illum) {
         o->cfg.illumination = 100u; /* the paper's baseline, as in `symline lines` */
+    }
+    if (o->list_cameras) {
+#ifndef SYMLINE_HAVE_LIBCAMERA
+        return usage_error("--list-cameras: this build has no libcamera support%s", "");
+#else
+        return 0;
+#endif
     }
     nsrc = (o->device != NULL) + (o->camera != NULL) + (o->replay != NULL);
     if (nsrc != 1) {

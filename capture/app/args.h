@@ -12,6 +12,7 @@ typedef struct app_options {
     const char *device;
     const char *camera;
     const char *replay;
+    int list_cameras;       /* --list-cameras: print libcamera's cameras and exit */
     uint64_t frames;        /* 0 = until stopped or the replay ends */
     uint32_t width, height; /* 0 = the source's default */
     const char *format;

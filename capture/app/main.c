@@ -250,6 +250,11 @@ int main(int argc, char **argv)
     if (rc != 0) {
         return rc == 1 ? APP_EXIT_OK : rc;
     }
+#ifdef SYMLINE_HAVE_LIBCAMERA
+    if (o.list_cameras) {
+        return libcamera_list_cameras(stdout) >= 0 ? APP_EXIT_OK : APP_EXIT_FAIL;
+    }
+#endif
     if (o.record_dir && make_dir(o.record_dir) != 0) {
         return APP_EXIT_FAIL;
     }
