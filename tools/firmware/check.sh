@@ -238,6 +238,26 @@ if run "build target programs" cmake --build "$dir" -j "$jobs"; then
             fi
         fi
     fi
+    if [ -f "$dir/bin/symline_fw_lines.elf" ]; then
+        # The golden JSON of tests/golden/lines/, reproduced on the target.
+        rm -f "$dir"/lines.*.json
+        qemu -kernel "$dir/bin/symline_fw_lines.elf" >"$log" 2>&1
+        rc=$?
+        awk -v d="$dir/lines" '/^=== / { if (f != "") close(f); f = ($2 == "end") ? "" : d "." $2 ".json"; next }
+                               f != "" { print > f }' "$log"
+        nsame=0
+        for want in tests/golden/lines/*.json; do
+            got=$dir/lines.$(basename "$want")
+            if [ -f "$got" ] && cmp -s "$got" "$want"; then
+                nsame=$((nsame + 1))
+            else
+                bad "golden JSON on the target: $(basename "$want") differs (exit $rc)"
+                diff "$want" "$got" 2>&1 | head -6 | sed 's/^/         /'
+            fi
+        done
+        [ "$rc" -eq 0 ] || bad "golden JSON program exit $rc"
+        [ "$nsame" -gt 0 ] && ok "golden JSON of the bundled 608x800 frames reproduced on the target: $nsame of $(ls tests/golden/lines/*.json | wc -l) files identical"
+    fi
     if [ -f "$dir/bin/symline_fw_stackuse.elf" ] && [ -f "$dir/stack.txt" ]; then
         # Measured stack (painted region) must stay within the static bound.
         if qemu -kernel "$dir/bin/symline_fw_stackuse.elf" >"$log" 2>&1; then

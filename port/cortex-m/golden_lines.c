@@ -1,0 +1,66 @@
+/*
+ * The detector's golden JSON (tests/golden/lines/) reproduced on the target:
+ * every bundled real frame (608x800, in flash) through symline_detect() with
+ * the default configuration, and one with the paper filter, written with the
+ * host tools' own JSON writer (tools/common/segjson.c) over semihosting.
+ * tools/firmware/check.sh splits the output at the "=== NAME" lines and
+ * compares each part byte for byte with the golden file.
+ */
+#include <stdint.h>
+#include <stdio.h>
+
+#include "segjson.h"
+#include "symline/detect.h"
+
+#include "fwdata.h"
+
+extern const fw_frame fw_msl_20190606_r2_cam0_20190606_204340;
+extern const fw_frame fw_msl_20240719_r5_cam3_20240719_090755;
+extern const fw_frame fw_msl_20250403_r4_cam3_20250403_221433;
+
+#define WS_BYTES (64u * 1024u)
+#define SEG_CAP 2048u
+#define PT_CAP 65536u
+
+static uint64_t ws[WS_BYTES / 8u];
+static symline_segment segs[SEG_CAP];
+static symline_point pts[PT_CAP];
+
+static int run(const char *name, const fw_frame *f, int paper)
+{
+    const symline_image img = {f->width, f->height, f->width, f->px};
+    symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u};
+    symline_config cfg;
+    size_t need;
+    symline_status st;
+    symline_config_default(&cfg);
+    if (paper) { /* what `symline lines --filter paper` sets */
+        cfg.filter = SYMLINE_FILTER_PAPER;
+        cfg.illumination = 100u;
+        cfg.adaptive = 0u;
+    }
+    need = symline_detect_workspace_size(f->width, f->height, &cfg);
+    printf("=== %s%s\n", name, paper ? ".paper" : "");
+    if (need == 0u || need > sizeof ws) {
+        printf("workspace %lu bytes does not fit %lu\n", (unsigned long)need,
+               (unsigned long)sizeof ws);
+        return 1;
+    }
+    st = symline_detect(&img, &cfg, ws, need, &res);
+    if (st != SYMLINE_OK) {
+        printf("symline_detect: %s\n", symline_status_str(st));
+        return 1;
+    }
+    return segjson_write(stdout, f->width, f->height, &res) != 0 || res.truncated;
+}
+
+int main(void)
+{
+    int bad = 0;
+    bad |= run("msl_20190606_r2_cam0_20190606_204340", &fw_msl_20190606_r2_cam0_20190606_204340, 0);
+    bad |= run("msl_20240719_r5_cam3_20240719_090755", &fw_msl_20240719_r5_cam3_20240719_090755, 0);
+    bad |= run("msl_20250403_r4_cam3_20250403_221433", &fw_msl_20250403_r4_cam3_20250403_221433, 0);
+    bad |= run("msl_20250403_r4_cam3_20250403_221433", &fw_msl_20250403_r4_cam3_20250403_221433, 1);
+    printf("=== end\n");
+    return bad;
+}
