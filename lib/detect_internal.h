@@ -33,7 +33,28 @@ void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uin
  * centre value c and values lo, hi at k pixels before and after it across the
  * line (clamped at the border). 1 = line point (the paper filter's A point
  * test is done by the caller). */
-int sl_filter_gray(const sl_pass *p, uint32_t c, uint32_t lo, uint32_t hi);
+static inline int sl_filter_gray(const sl_pass *p, uint32_t c, uint32_t lo, uint32_t hi)
+{
+    uint32_t side, need;
+    if (c < p->illum) {
+        return 0;
+    }
+    if (p->filter == SYMLINE_FILTER_PAPER) {
+        return 1;
+    }
+    side = lo > hi ? lo : hi;
+    if (c <= side) {
+        return 0;
+    }
+    need = (c * p->pct + 99u) / 100u;
+    if (need < p->cmin) {
+        need = p->cmin;
+    }
+    if (c - side < need) {
+        return 0;
+    }
+    return 1;
+}
 
 /* linepoints.c: box-downsampled row y of the pass grid into out (p->w bytes);
  * acc: scratch of img->width uint16_t. Level 0 copies the row. */

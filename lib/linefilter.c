@@ -33,26 +33,3 @@ void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uin
     p->pct = cfg->contrast_pct;
     p->cmin = cfg->contrast_min;
 }
-
-int sl_filter_gray(const sl_pass *p, uint32_t c, uint32_t lo, uint32_t hi)
-{
-    uint32_t side, need;
-    if (c < p->illum) {
-        return 0;
-    }
-    if (p->filter == SYMLINE_FILTER_PAPER) {
-        return 1;
-    }
-    side = lo > hi ? lo : hi;
-    if (c <= side) {
-        return 0;
-    }
-    need = (c * p->pct + 99u) / 100u;
-    if (need < p->cmin) {
-        need = p->cmin;
-    }
-    if (c - side < need) {
-        return 0;
-    }
-    return 1;
-}

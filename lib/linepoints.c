@@ -105,18 +105,35 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 
 /* ---- vertical axis: along rows ---- */
 
-/* Extrema of one row with the plateau limit: map gets 0, A or S per pixel. */
+/*
+ * Extrema of one row with the plateau limit: map gets 0, A or S per pixel.
+ * First a branch-free pass over strict extrema (the common case, vectorised),
+ * then plateaus (runs of equal E), if the row has any, by the SPEC §3 run rule.
+ */
 static void row_extrema(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
 {
-    uint32_t a = 0u, i;
-    for (i = 0; i < n; i++) {
-        map[i] = SYMLINE_MAP_NONE;
+    uint32_t a, i, eq = 0u;
+    map[0] = SYMLINE_MAP_NONE;
+    map[n - 1u] = SYMLINE_MAP_NONE;
+    for (i = 1u; i + 1u < n; i++) {
+        const uint32_t l = E[i - 1u], c = E[i], r = E[i + 1u];
+        const uint32_t s = (uint32_t)(l > c) & (uint32_t)(r > c);
+        const uint32_t am = (uint32_t)(l < c) & (uint32_t)(r < c);
+        eq |= (uint32_t)(l == c);
+        map[i] = (uint8_t)(s * SYMLINE_MAP_S + am * SYMLINE_MAP_A);
     }
-    for (i = 1u; i < n; i++) {
+    if (n >= 2u) {
+        eq |= (uint32_t)(E[n - 2u] == E[n - 1u]);
+    }
+    if (!eq) {
+        return;
+    }
+    for (a = 0u, i = 1u; i < n; i++) {
         if (E[i] == E[a]) {
             continue;
         }
-        if (a >= 1u) {
+        /* Run [a, i-1]; runs of one were handled above. */
+        if (a >= 1u && i - 1u > a) {
             const uint32_t mid = (a + i - 1u) / 2u;
             if (i - 1u - mid <= lag) {
                 if (E[a - 1u] > E[a] && E[i] > E[i - 1u]) {
