@@ -179,6 +179,29 @@ qemu() {
     timeout "$qemu_timeout" qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
         -semihosting-config enable=on,target=native "$@"
 }
+# golden_lines BUILD_DIR LABEL: the golden JSON of tests/golden/lines/ reproduced on the target.
+golden_lines() {
+    gdir=$1
+    [ -f "$gdir/bin/symline_fw_lines.elf" ] || return 0
+    rm -f "$gdir"/lines.*.json
+    qemu -kernel "$gdir/bin/symline_fw_lines.elf" >"$log" 2>&1
+    grc=$?
+    awk -v d="$gdir/lines" '/^=== / { if (f != "") close(f); f = ($2 == "end") ? "" : d "." $2 ".json"; next }
+                            f != "" { print > f }' "$log"
+    nsame=0
+    for want in tests/golden/lines/*.json; do
+        got=$gdir/lines.$(basename "$want")
+        if [ -f "$got" ] && cmp -s "$got" "$want"; then
+            nsame=$((nsame + 1))
+        else
+            bad "$2: golden JSON $(basename "$want") differs on the target (exit $grc)"
+            diff "$want" "$got" 2>&1 | head -6 | sed 's/^/         /'
+        fi
+    done
+    [ "$grc" -eq 0 ] || bad "$2: golden JSON program exit $grc"
+    [ "$nsame" -gt 0 ] && ok "$2: golden JSON of the bundled 608x800 frames reproduced on the target ($nsame of $(ls tests/golden/lines/*.json | wc -l) files identical)"
+    return 0
+}
 if run "build target programs" cmake --build "$dir" -j "$jobs"; then
     if qemu -kernel "$dir/bin/symline_fw_tests.elf" >"$log" 2>&1; then
         ok "$(tail -1 "$log")"
@@ -238,25 +261,9 @@ if run "build target programs" cmake --build "$dir" -j "$jobs"; then
             fi
         fi
     fi
-    if [ -f "$dir/bin/symline_fw_lines.elf" ]; then
-        # The golden JSON of tests/golden/lines/, reproduced on the target.
-        rm -f "$dir"/lines.*.json
-        qemu -kernel "$dir/bin/symline_fw_lines.elf" >"$log" 2>&1
-        rc=$?
-        awk -v d="$dir/lines" '/^=== / { if (f != "") close(f); f = ($2 == "end") ? "" : d "." $2 ".json"; next }
-                               f != "" { print > f }' "$log"
-        nsame=0
-        for want in tests/golden/lines/*.json; do
-            got=$dir/lines.$(basename "$want")
-            if [ -f "$got" ] && cmp -s "$got" "$want"; then
-                nsame=$((nsame + 1))
-            else
-                bad "golden JSON on the target: $(basename "$want") differs (exit $rc)"
-                diff "$want" "$got" 2>&1 | head -6 | sed 's/^/         /'
-            fi
-        done
-        [ "$rc" -eq 0 ] || bad "golden JSON program exit $rc"
-        [ "$nsame" -gt 0 ] && ok "golden JSON of the bundled 608x800 frames reproduced on the target: $nsame of $(ls tests/golden/lines/*.json | wc -l) files identical"
+    golden_lines "$dir" "Cortex-M4 -O3"
+    if run "build Cortex-M0+ golden JSON program" cmake --build "$prefix-m0plus-os" --target symline_fw_lines -j "$jobs"; then
+        golden_lines "$prefix-m0plus-os" "Cortex-M0+ -Os"
     fi
     if [ -f "$dir/bin/symline_fw_stackuse.elf" ] && [ -f "$dir/stack.txt" ]; then
         # Measured stack (painted region) must stay within the static bound.
