@@ -22,7 +22,8 @@ typedef struct sl_pass {
     uint32_t a_dist;  /* A point search distance; 0 for the contrast filter */
     uint32_t lag;     /* longest accepted plateau: end - marked index <= lag (= m) */
     symline_filter filter;
-    uint32_t illum, pct, cmin;
+    uint32_t illum, pct, cmin, apct;
+    uint32_t side_max; /* largest gray value of the ridge's sides (255: any) */
 } sl_pass;
 
 /* linefilter.c: fills a pass from the configuration (no range checks). */
@@ -43,12 +44,16 @@ static inline int sl_filter_gray(const sl_pass *p, uint32_t c, uint32_t lo, uint
         return 1;
     }
     side = lo > hi ? lo : hi;
-    if (c <= side) {
+    if (c <= side || side > p->side_max) {
         return 0;
     }
     need = (c * p->pct + 99u) / 100u;
     if (need < p->cmin) {
         need = p->cmin;
+    }
+    if (p->apct != 0u) {
+        const uint32_t asym = ((lo > hi ? lo - hi : hi - lo) * p->apct + 99u) / 100u;
+        need = asym > need ? asym : need;
     }
     if (c - side < need) {
         return 0;

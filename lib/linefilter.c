@@ -32,4 +32,6 @@ void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uin
     p->illum = cfg->illumination;
     p->pct = cfg->contrast_pct;
     p->cmin = cfg->contrast_min;
+    p->apct = cfg->contrast_asym_pct;
+    p->side_max = 255u;
 }

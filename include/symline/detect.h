@@ -52,7 +52,8 @@ typedef enum symline_axes {
 typedef enum symline_filter {
     /* Bright ridge test: the S point's gray value c and the gray values lo, hi
      * at radius+1 pixels on either side across the line must satisfy
-     * c - max(lo, hi) >= max(contrast_min, c * contrast_pct / 100, ridge)
+     * c - max(lo, hi) >= max(contrast_min, c * contrast_pct / 100, ridge,
+     *                           |lo - hi| * contrast_asym_pct / 100)
      * (ridge: see `adaptive`).
      * With `adaptive` the ridge height is measured in units of the frame's
      * contrast, so it keeps working when the illumination changes. */
@@ -91,6 +92,10 @@ typedef struct symline_config {
                               default 0 (the mean) */
     uint32_t ridge_sigma10; /* adaptive: contrast filter ridge height of at
                               least ridge_sigma10/10 * sigma, 0..100; default 10 */
+    int32_t side_sigma10;  /* adaptive, contrast filter: both sides of the ridge
+                              must stay at or below mean + side_sigma10/10 *
+                              sigma (a line lies on the darker carpet, not on a
+                              bright wall), -100..100; 100 = off; default 100 */
     uint32_t a_distance;   /* paper filter: largest distance (px, at the pass's
                               scale) of the A point across the line, 1..32;
                               default 0 = the radius */
@@ -98,6 +103,10 @@ typedef struct symline_config {
                               centre gray value, 0..100; default 0 */
     uint32_t contrast_min; /* contrast filter: smallest ridge height in gray
                               levels, 0..255; default 3 */
+    uint32_t contrast_asym_pct; /* contrast filter: the ridge height must also reach
+                              this % of |lo - hi|, so a bright band between two
+                              different surfaces (a wall's edge) is not taken
+                              for a line on the carpet, 0..1000; default 0 */
     uint32_t min_length;   /* shortest reported piece, px along its points;
                               default 12 */
     uint32_t curve_dev_q8; /* curve threshold on max_dev, Q8 px; default 512 (2 px) */

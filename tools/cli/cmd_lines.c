@@ -31,9 +31,13 @@ static void lines_usage(FILE *f, const char *cmd)
             "  --adaptive 0|1      thresholds follow the frame's mean and sigma (1)\n"
             "  --bright-sigma B    adaptive: gray >= mean + (B-100)/10 sigma, 0..200 (100)\n"
             "  --ridge-sigma R     adaptive: ridge height >= R/10 sigma, 0..100 (10)\n"
+            "  --side-sigma S      adaptive: both sides of a ridge <= mean + (S-100)/10\n"
+            "                      sigma, 0..200; 200 = off (200)\n"
             "  --a-distance D      paper filter: A point within D px across the line\n"
             "  --contrast PCT      contrast filter: ridge height, %% of centre gray (0)\n"
             "  --contrast-min G    contrast filter: ridge height in gray levels (3)\n"
+            "  --contrast-asym PCT contrast filter: ridge height >= PCT %% of |left - right|\n"
+            "                      (rejects bands between two different surfaces; 0)\n"
             "  --min-length PX     shortest reported piece (12)\n"
             "  --curve-dev Q8      curve threshold on max_dev, 1/256 px (512 = 2 px)\n"
             "  --merge-gap PX      merge collinear lines up to PX apart (default width/8,\n"
@@ -109,6 +113,10 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
             uint32_t v;
             rc = parse_u32_opt(argc, argv, &i, 0, 200, &v);
             c->bright_sigma10 = (int32_t)v - 100;
+        } else if (strcmp(o, "--side-sigma") == 0) {
+            uint32_t v;
+            rc = parse_u32_opt(argc, argv, &i, 0, 200, &v);
+            c->side_sigma10 = (int32_t)v - 100;
         } else if (strcmp(o, "--ridge-sigma") == 0) {
             rc = parse_u32_opt(argc, argv, &i, 0, 100, &c->ridge_sigma10);
         } else if (strcmp(o, "--a-distance") == 0) {
@@ -117,6 +125,8 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
             rc = parse_u32_opt(argc, argv, &i, 0, 100, &c->contrast_pct);
         } else if (strcmp(o, "--contrast-min") == 0) {
             rc = parse_u32_opt(argc, argv, &i, 0, 255, &c->contrast_min);
+        } else if (strcmp(o, "--contrast-asym") == 0) {
+            rc = parse_u32_opt(argc, argv, &i, 0, 1000, &c->contrast_asym_pct);
         } else if (strcmp(o, "--min-length") == 0) {
             rc = parse_u32_opt(argc, argv, &i, 0, 65535, &c->min_length);
         } else if (strcmp(o, "--curve-dev") == 0) {
