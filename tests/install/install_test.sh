@@ -1,18 +1,21 @@
 #!/bin/sh
 # Installs the built tree into a temporary prefix, then builds a consumer with
 # find_package(symline) and another with pkg-config, and runs both.
-# Usage: install_test.sh BUILD_DIR SOURCE_DIR CC
+# Usage: install_test.sh BUILD_DIR SOURCE_DIR CC [CFLAGS]
+# CFLAGS are the flags the library was built with (e.g. sanitizers), which the
+# consumers need too.
 set -eu
-build=$1 src=$2 cc=$3
+build=$1 src=$2 cc=$3 cflags=${4:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
-cmake -S "$src/tests/install/consumer" -B "$tmp/b" -DCMAKE_PREFIX_PATH="$tmp/prefix" >/dev/null
+cmake -S "$src/tests/install/consumer" -B "$tmp/b" -DCMAKE_PREFIX_PATH="$tmp/prefix" \
+      -DCMAKE_C_FLAGS="$cflags" -DCMAKE_EXE_LINKER_FLAGS="$cflags" >/dev/null
 cmake --build "$tmp/b" >/dev/null
 "$tmp/b/consumer"
 libdir=$(ls -d "$tmp"/prefix/lib*/pkgconfig | head -n 1)
 flags=$(PKG_CONFIG_PATH="$libdir" pkg-config --cflags --libs symline)
 # shellcheck disable=SC2086
-$cc -std=c99 "$src/tests/install/consumer/main.c" $flags -o "$tmp/pc"
+$cc -std=c99 $cflags "$src/tests/install/consumer/main.c" $flags -o "$tmp/pc"
 "$tmp/pc"
 echo "find_package and pkg-config consumers: 2 passed, 0 failed"
