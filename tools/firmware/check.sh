@@ -8,9 +8,12 @@
 #      <= 512 bytes, on M0+ -Os and M4 -O3;
 #   4. code size (.text + .rodata) on Cortex-M4 -Os <= 12 KiB;
 #   5. cppcheck and clang-tidy (tools/firmware/clang-tidy.yaml) clean on lib/;
-#   6. the golden/argument tests on an emulated Cortex-M4 (qemu mps2-an386),
-#      a deliberately failing variant and a crashing program that must fail,
-#      the firmware example, and instructions per pixel (qemu -icount).
+#   6. on an emulated Cortex-M4 (qemu mps2-an386, port/cortex-m/): the core's
+#      golden and argument tests (M4 -O3 and M0+ -Os code), a deliberately
+#      failing variant and a crashing program that must fail, the firmware
+#      example, the detector's output against the same program on the host and
+#      against the golden JSON of tests/golden/lines/, the measured stack
+#      against the static bound, and instructions per pixel (qemu -icount).
 # Prints one line per check, continues after a failure and exits 1 if any
 # check failed. Installs its Debian packages when missing (apt-get, as root).
 #
