@@ -20,7 +20,7 @@
 #   tools/firmware/check.sh            build dirs ./build-fw-*
 #   SYMLINE_FW_BUILD=/tmp/fw tools/firmware/check.sh   build dirs /tmp/fw-*
 set -u
-cd "$(dirname "$0")/../.."
+cd "$(dirname "$0")/../.." || exit 2
 root=$(pwd)
 prefix=${SYMLINE_FW_BUILD:-$root/build-fw}
 jobs=2
@@ -202,7 +202,7 @@ golden_lines() {
         fi
     done
     [ "$grc" -eq 0 ] || bad "$2: golden JSON program exit $grc"
-    [ "$nsame" -gt 0 ] && ok "$2: golden JSON of the bundled 608x800 frames reproduced on the target ($nsame of $(ls tests/golden/lines/*.json | wc -l) files identical)"
+    [ "$nsame" -gt 0 ] && ok "$2: golden JSON of the bundled 608x800 frames reproduced on the target ($nsame of $(find tests/golden/lines -name "*.json" | wc -l) files identical)"
     return 0
 }
 if run "build target programs" cmake --build "$dir" -j "$jobs"; then
