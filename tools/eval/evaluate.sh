@@ -198,6 +198,8 @@ echo "$hdr"
 echo "$sep"
 PER=$OUT/per-image.txt
 : > "$PER"
+: > "$OUT/setf1.tmp"
+: > "$OUT/stab.tmp"
 for sd in $set_dirs; do
     label=${sd%%:*}
     dir=${sd#*:}
@@ -222,6 +224,7 @@ for sd in $set_dirs; do
                                  m ? sprintf("%.3f", ok / m) : "-", ms ? sprintf("%.3f", oks / ms) : "-", m }' "$OUT/scores.tmp")
         n=${cell%% *}
         row="$row ${cell#* | }"
+        echo "$f $label $(echo "$cell" | cut -d'|' -f2)" >> "$OUT/setf1.tmp"
     done
     echo "| $label | $n |$row"
 done
@@ -243,7 +246,6 @@ if [ -n "$FRAMES" ]; then
     done
     echo "$hdr"
     echo "$sep"
-    : > "$OUT/stab.tmp"
     for name in $FRAMES; do
         row=
         for f in $FILTERS; do
@@ -259,7 +261,7 @@ if [ -n "$FRAMES" ]; then
             for v in x0.5 p40 m40; do
                 s=$("$BIN/symline-score" pair "$d/$name.json" "$d/$name.$v.json")
                 f1=$(kv f1 "$s")
-                echo "$f $v $f1" >> "$OUT/stab.tmp"
+                echo "$f $v $f1 $name" >> "$OUT/stab.tmp"
                 echo "$f stability-$v $name $s" >> "$PER"
                 row="$row $(printf '%.3f' "$f1") |"
             done
@@ -278,6 +280,19 @@ if [ -n "$FRAMES" ]; then
     echo "$row"
     echo
 fi
+
+echo "## Targets"
+echo
+echo "| filter | synthetic sets with mean F1 >= 0.90 | frames with all three stability F1 >= 0.95 |"
+echo "|---|---|---|"
+for f in $FILTERS; do
+    syn=$(awk -v f="$f" '$1 == f { n++; if ($3 >= 0.90) ok++; else bad = bad (bad ? ", " : "") $2 " " $3 }
+                         END { printf "%d of %d%s", ok, n, bad ? " (below: " bad ")" : "" }' "$OUT/setf1.tmp")
+    stab=$(awk -v f="$f" '$1 == f { seen[$4] = 1; if ($3 < 0.95) low[$4] = 1 }
+                          END { for (k in seen) { n++; if (!(k in low)) ok++ } printf "%d of %d", ok, n }' "$OUT/stab.tmp")
+    echo "| $f | $syn | $stab |"
+done
+echo
 
 if [ "$PER_IMAGE" -eq 1 ]; then
     echo "## Per image"
