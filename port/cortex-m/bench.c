@@ -29,10 +29,16 @@ extern const fw_frame fw_bench_160x120, fw_bench_320x240;
 static uint8_t out[320u * 240u];
 static uint64_t ws[16384u / 8u];
 
-/* Exactly 2 instructions per iteration (subs, bne). */
+/* Exactly 2 instructions per iteration (a flag-setting subtract, bne). GCC
+ * writes ARMv6-M code in the divided assembler syntax, where the 16-bit
+ * `sub rN, #1` sets the flags. */
 static void spin(uint32_t n)
 {
+#if defined(__thumb2__)
     __asm__ volatile("1:\n\tsubs %0, %0, #1\n\tbne 1b" : "+l"(n) : : "cc");
+#else
+    __asm__ volatile("1:\n\tsub %0, #1\n\tbne 1b" : "+l"(n) : : "cc");
+#endif
 }
 
 static uint64_t cal_ticks, empty_ticks;
