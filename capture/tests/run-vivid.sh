@@ -71,6 +71,45 @@ modprobe -d "$ktree" -S "$kver" --show-depends vivid | while read -r cmd path _;
 done
 [ -f "$root/modules/vivid.ko" ] || { echo "run-vivid: vivid.ko not found in $kver" >&2; exit 1; }
 
+# libcamera on vimc, when this machine builds the libcamera source.
+with_libcamera=0
+if [ "${SYMLINE_WITH_LIBCAMERA:-AUTO}" != OFF ] && pkg-config --exists libcamera 2>/dev/null; then
+    with_libcamera=1
+fi
+if [ $with_libcamera = 1 ]; then
+    need_pkg g++ pkg-config
+    vimc=$(sh "$here/guest-vimc.sh" "$cache" "$kver")
+    cp "$vimc" "$root/modules/vimc.ko"
+    # libcamera's vimc pipeline needs its IPA module: taken from the package, not installed.
+    ipa=$cache/libcamera-ipa
+    if [ ! -f "$ipa/.done" ]; then
+        rm -rf "$ipa"
+        mkdir -p "$ipa"
+        (cd "$cache" && rm -f libcamera-ipa_*.deb && apt-get download libcamera-ipa >&2)
+        dpkg-deb -x "$cache"/libcamera-ipa_*.deb "$ipa"
+        rm -f "$cache"/libcamera-ipa_*.deb
+        touch "$ipa/.done"
+    fi
+    lbuild=$cache/guest-build-libcamera
+    cmake -S "$src" -B "$lbuild" -DCMAKE_BUILD_TYPE=Release -DSYMLINE_BUILD_TESTS=OFF \
+        -DCMAKE_DISABLE_FIND_PACKAGE_PNG=ON -DSYMLINE_WITH_LIBCAMERA=ON >/dev/null
+    cmake --build "$lbuild" -j2 --target symline_capture_app >/dev/null
+    cp "$lbuild/bin/symline-capture" "$root/bin/symline-capture-lc"
+    cp "$here/guest-libcamera.sh" "$root/bin/guest-libcamera.sh"
+    chmod +x "$root/bin/guest-libcamera.sh"
+    ipadir=$(pkg-config --variable=libdir libcamera)/libcamera
+    mkdir -p "$root$ipadir" "$root/usr/share/libcamera/ipa"
+    cp "$ipa$ipadir"/ipa_vimc.so "$ipa$ipadir"/ipa_vimc.so.sign "$ipa$ipadir"/vimc_ipa_proxy "$root$ipadir/"
+    cp -r "$ipa/usr/share/libcamera/ipa/vimc" "$root/usr/share/libcamera/ipa/"
+    # The shared libraries of the dynamic programs, at their own paths.
+    for bin in "$root/bin/symline-capture-lc" "$root$ipadir/ipa_vimc.so" "$root$ipadir/vimc_ipa_proxy"; do
+        ldd "$bin" | sed -n 's/.*=> \(\/[^ ]*\).*/\1/p; s/^[[:space:]]*\(\/[^ ]*\) (.*/\1/p'
+    done | sort -u | while read -r lib; do
+        mkdir -p "$root$(dirname "$lib")"
+        cp -L "$lib" "$root$lib"
+    done
+fi
+
 initrd=$cache/initramfs-vivid.cpio.gz
 (cd "$root" && find . | cpio -o -H newc --quiet | gzip -1) >"$initrd"
 
