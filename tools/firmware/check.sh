@@ -114,6 +114,13 @@ if [ -f "$lib" ]; then
     fi
     rm -f "$log.def" "$log.undef"
 fi
+# No writable static data: all RAM is the caller's, and calls are reentrant.
+lib=$prefix-m0plus-os/lib/libsymline.a
+if [ -f "$lib" ]; then
+    rw=$(arm-none-eabi-size -A "$lib" | awk '$1 ~ /^\.(data|bss)/ || $1 == "COMMON" { s += $2 } END { print s + 0 }')
+    if [ "$rw" -eq 0 ]; then ok "no static RAM (.data + .bss = 0 B): every byte of RAM is the caller's"
+    else bad "libsymline.a has $rw bytes of .data/.bss (static state)"; fi
+fi
 for c in m4-os m7; do
     lib=$prefix-$c/lib/libsymline.a
     [ -f "$lib" ] || continue
