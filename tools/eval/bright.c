@@ -11,16 +11,19 @@
 
 static void usage(FILE *f)
 {
-    fputs("usage: symline-bright [--mul K] [--add A] IN OUT\n"
+    fputs("usage: symline-bright [--mul K] [--add A] [--report] IN OUT\n"
           "Writes clip(round(v*K + A), 0, 255) for every pixel v (K default 1, A default 0;\n"
-          "round half up). OUT is PNG when it ends in .png, else PGM.\n",
+          "round half up). OUT is PNG when it ends in .png, else PGM. --report prints\n"
+          "\"pixels=N clipped_low=N clipped_high=N\": pixels whose value the clipping\n"
+          "changed (below 0, above 255).\n",
           f);
 }
 
 int main(int argc, char **argv)
 {
     double mul = 1.0, add = 0.0;
-    int i = 1;
+    int i = 1, report = 0;
+    size_t low = 0, high = 0;
     imgio_gray img;
     char err[512];
     size_t k, n;
@@ -29,6 +32,11 @@ int main(int argc, char **argv)
         if (strcmp(argv[i], "--help") == 0) {
             usage(stdout);
             return 0;
+        }
+        if (strcmp(argv[i], "--report") == 0) {
+            report = 1;
+            i++;
+            continue;
         }
         if (i + 1 >= argc) {
             usage(stderr);
@@ -59,6 +67,8 @@ int main(int argc, char **argv)
     n = (size_t)img.width * img.height;
     for (k = 0; k < n; k++) {
         double v = floor((double)img.px[k] * mul + add + 0.5);
+        low += v < 0.0;
+        high += v > 255.0;
         img.px[k] = (uint8_t)(v < 0.0 ? 0.0 : (v > 255.0 ? 255.0 : v));
     }
     if (imgio_write_gray(argv[i + 1], img.px, img.width, img.height, img.width, err,
@@ -66,6 +76,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "symline-bright: %s\n", err);
         imgio_free(&img);
         return 1;
+    }
+    if (report) {
+        printf("pixels=%zu clipped_low=%zu clipped_high=%zu\n", n, low, high);
     }
     imgio_free(&img);
     return 0;

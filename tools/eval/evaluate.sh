@@ -143,8 +143,8 @@ if [ -d "$FIELD" ]; then
         name=$(basename "$img" .pgm)
         FRAMES="$FRAMES $name"
         "$BIN/symline-bright" --mul 0.5 "$img" "$TR/$name.x0.5.pgm"
-        "$BIN/symline-bright" --add 40 "$img" "$TR/$name.p40.pgm"
-        "$BIN/symline-bright" --add -40 "$img" "$TR/$name.m40.pgm"
+        "$BIN/symline-bright" --report --add 40 "$img" "$TR/$name.p40.pgm" > "$TR/$name.p40.clip"
+        "$BIN/symline-bright" --report --add -40 "$img" "$TR/$name.m40.pgm" > "$TR/$name.m40.clip"
         for f in $FILTERS; do
             add_job "$img" "$OUT/det/$f/field/$name.json" "$f"
             for v in x0.5 p40 m40; do
@@ -237,9 +237,11 @@ if [ -n "$FRAMES" ]; then
     echo "tolerance of a mask pixel; recall: mask pixels within tolerance of a detection)."
     echo "x0.5, +40, -40 = stability F1 between the detections on the frame and on the frame"
     echo "with that brightness change (clipped); target >= 0.95. segs = segments on the frame."
+    echo "clip = share of pixels that +40 / -40 saturate (value changed by clipping): there the"
+    echo "transformed frame has lost the structure, so even a perfect detector may differ."
     echo
-    hdr="| frame |"
-    sep="|---|"
+    hdr="| frame | clip +40 | clip -40 |"
+    sep="|---|---:|---:|"
     for f in $FILTERS; do
         hdr="$hdr $f segs | mask | x0.5 | +40 | -40 |"
         sep="$sep---:|---:|---:|---:|---:|"
@@ -247,7 +249,11 @@ if [ -n "$FRAMES" ]; then
     echo "$hdr"
     echo "$sep"
     for name in $FRAMES; do
-        row=
+        clip=$(awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
+                    END { printf "%.1f %%", 100 * v["clipped_high"] / v["pixels"] }' "$TR/$name.p40.clip")
+        clip="$clip | $(awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
+                    END { printf "%.1f %%", 100 * v["clipped_low"] / v["pixels"] }' "$TR/$name.m40.clip")"
+        row=" $clip |"
         for f in $FILTERS; do
             d=$OUT/det/$f/field
             segs=$(tr '{' '\n' < "$d/$name.json" | grep -c '"x0"' || true)
@@ -268,7 +274,7 @@ if [ -n "$FRAMES" ]; then
         done
         echo "| $name |$row"
     done
-    row="| mean / min |"
+    row="| mean / min | | |"
     for f in $FILTERS; do
         row="$row |$(awk -v f="$f" '$1 == f && $2 == "x0.5" { n++; s += $3; if (n == 1 || $3 < m) m = $3 }
                                    END { printf " |" }' "$OUT/stab.tmp")"
