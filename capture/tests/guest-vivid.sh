@@ -76,6 +76,24 @@ granted() {
     grep -q " YUYV 1280x720 bytesperline 2560, 10/1 fps" /tmp/g.err && capture-check json /tmp/g.json 3
 }
 check size-and-rate granted
+# A size the webcam input does not offer: the driver's nearest size is used,
+# reported, and matches the frames' own size; the buffer count is honoured.
+odd_size() {
+    cap --device /dev/video0 --format GREY --width 1000 --height 700 --buffers 8 --frames 2 >/tmp/o.json 2>/tmp/o.err
+    rc=$?; cat /tmp/o.err; [ $rc -eq 0 ] || return 1
+    size=$(sed -n 's/.* GREY \([0-9]*\)x\([0-9]*\) bytesperline.*/"width": \1, "height": \2,/p' /tmp/o.err)
+    echo "granted: $size"
+    [ -n "$size" ] && ! grep -q '"width": 1000, ' /tmp/o.json && grep -q "$size" /tmp/o.json &&
+        grep -q ", 8 buffers" /tmp/o.err && capture-check json /tmp/o.json 2
+}
+check odd-size-nearest odd_size
+# vivid has no exposure control: said so, and capture goes on.
+no_exposure() {
+    cap --device /dev/video0 --format GREY --exposure 2000 --frames 2 >/tmp/e.json 2>/tmp/e.err
+    rc=$?; cat /tmp/e.err; [ $rc -eq 0 ] && grep -q "exposure control not offered" /tmp/e.err &&
+        capture-check json /tmp/e.json 2
+}
+check exposure-not-offered no_exposure
 
 # Freshest-frame mode when detection is slower than the camera (1280x720 at
 # up to 30 fps; detection under emulation takes well over 33 ms): older frames are
