@@ -234,8 +234,11 @@ capsrc_result lc_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
             frame->sequence = md.sequence;
             frame->timestamp_ns = md.timestamp != 0 ? int64_t(md.timestamp) : capsrc_now_ns();
             frame->skipped = uint32_t(src->stats.skipped_stale - skipped_before);
+            frame->convert_ns = 0;
             if (c->fmt->layout != PIXFMT_LUMA_PLANE) {
+                const int64_t t0 = capsrc_now_ns();
                 pixfmt_unpack_luma(c->fmt, base, c->stride, c->width, c->height, c->unpacked.data(), c->width);
+                frame->convert_ns = capsrc_now_ns() - t0;
                 frame->luma = c->unpacked.data();
                 frame->stride = c->width;
                 capsrc_result q = requeue(src, c, newest);

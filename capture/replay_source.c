@@ -200,6 +200,7 @@ static capsrc_result replay_next(capsrc *src, capsrc_frame *frame, int timeout_m
     frame->sequence = (uint32_t)r->next;
     frame->timestamp_ns = t0; /* the file read stands for the exposure */
     frame->skipped = 0;
+    frame->convert_ns = 0;
     r->next++;
     src->stats.delivered++;
     return CAPSRC_OK;

@@ -41,6 +41,7 @@ typedef struct capsrc_frame {
     uint32_t sequence;     /* the driver's sequence number (replay: file index) */
     int64_t timestamp_ns;  /* capture time on CLOCK_MONOTONIC, nanoseconds */
     uint32_t skipped;      /* newer frames replaced older ones since the last frame (freshest mode) */
+    int64_t convert_ns;    /* time spent extracting luma (packed formats; 0 when read in place) */
 } capsrc_frame;
 
 /* Counters since capsrc_start. */

@@ -247,8 +247,11 @@ static capsrc_result v4l2_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
         frame->sequence = b.sequence;
         frame->timestamp_ns = ts_ns(&b);
         frame->skipped = (uint32_t)(src->stats.skipped_stale - skipped_before);
+        frame->convert_ns = 0;
         if (v->fmt->layout != PIXFMT_LUMA_PLANE) {
+            const int64_t t0 = capsrc_now_ns();
             pixfmt_unpack_luma(v->fmt, v->map[got], v->stride, v->width, v->height, v->unpacked, v->width);
+            frame->convert_ns = capsrc_now_ns() - t0;
             frame->luma = v->unpacked;
             frame->stride = v->width;
             r = requeue(src, v, (uint32_t)got);

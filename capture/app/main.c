@@ -168,9 +168,9 @@ static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d,
     }
     lw->len = n;
     printf("{\"frame\": %llu, \"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, \"latency_ms\": %.3f, "
-           "\"stages_ms\": {\"queue\": %.3f, \"detect\": %.3f}, ",
+           "\"stages_ms\": {\"queue\": %.3f, \"convert\": %.3f, \"detect\": %.3f}, ",
            (unsigned long long)f->number, f->sequence, (long long)f->timestamp_ns, f->skipped, latency_ms,
-           queue_ms, detect_ms);
+           queue_ms, (double)f->convert_ns / 1e6, detect_ms);
     fwrite(lw->buf + 1, 1, lw->len - 1, stdout);
     fputc('\n', stdout);
     return fflush(stdout) == 0 ? 0 : -1;
@@ -339,7 +339,8 @@ int main(int argc, char **argv)
             break;
         }
         capsrc_release(src);
-        if (emit_frame(&lw, &frame, &det, lat_ms, (double)(t_got - frame.timestamp_ns) / 1e6, det_ms) != 0) {
+        if (emit_frame(&lw, &frame, &det, lat_ms,
+                       (double)(t_got - frame.timestamp_ns - frame.convert_ns) / 1e6, det_ms) != 0) {
             if (!stop_requested) {
                 fprintf(stderr, "symline-capture: error: writing the frame record failed\n");
                 stop_reason = "output error";
