@@ -6,6 +6,7 @@
 set -eu
 cache=${1:?usage: guest-kernel.sh CACHE_DIR}
 mkdir -p "$cache"
+cache=$(cd "$cache" && pwd)
 
 need_pkg() {
     for p in "$@"; do
@@ -27,7 +28,8 @@ fi
 kver=${pkg#linux-image-}
 tree=$cache/kernel-$kver
 if [ ! -f "$tree/.done" ]; then
-    rm -rf "$tree"
+    # A new ABI replaces the trees (and the vimc builds) of older ones.
+    rm -rf "$cache"/kernel-* "$cache"/kbuild-* "$cache"/vimc-*
     mkdir -p "$tree"
     (cd "$cache" && rm -f "$pkg"_*.deb && apt-get download "$pkg" >&2)
     dpkg-deb -x "$cache/$pkg"_*.deb "$tree"
