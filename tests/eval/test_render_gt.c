@@ -92,7 +92,7 @@ static void check_scene(rd_set set, int w, int h, uint64_t seed)
     if (s.gain * s.paint > 0.95) {
         s.gain = 0.95 / s.paint; /* keep paint below clipping so coverage shows */
     }
-    rd_render(&s, img);
+    rd_render(&s, img, NULL);
     ev_paths_init(&lines);
     ev_paths_init(&arcs);
     ev_paths_init(&dc);

@@ -96,14 +96,14 @@ for size in $SIZES; do
         d=$OUT/render/$set-$size
         if [ ! -f "$d/.stamp" ] || [ "$(cat "$d/.stamp")" != "$RSUM $SEED $COUNT" ]; then
             rm -rf "$d"
-            echo "--set $set --seed $SEED --count $COUNT --size $size $d" >> "$OUT/render.todo"
+            echo "--set $set --seed $SEED --count $COUNT --size $size --labels $d" >> "$OUT/render.todo"
         fi
     done
 done
 if [ -s "$OUT/render.todo" ]; then
     echo "evaluate.sh: rendering $(wc -l < "$OUT/render.todo") sets of $COUNT images" >&2
-    xargs -P "$JOBS" -n 9 "$BIN/symline-render" < "$OUT/render.todo"
-    while read -r _ _ _ _ _ _ _ _ d; do
+    xargs -P "$JOBS" -n 10 "$BIN/symline-render" < "$OUT/render.todo"
+    while read -r _ _ _ _ _ _ _ _ _ d; do
         echo "$RSUM $SEED $COUNT" > "$d/.stamp"
     done < "$OUT/render.todo"
 fi
@@ -211,7 +211,7 @@ for sd in $set_dirs; do
             [ -f "$img" ] || continue
             name=$(basename "$img" .pgm)
             [ -f "$dir/$name.lines.txt" ] || continue
-            s=$("$BIN/symline-score" gt "$dir/$name" "$OUT/det/$f/$label/$name.json")
+            s=$("$BIN/symline-score" gt "$dir/$name" "$OUT/det/$f/$label/$name.json" | tr '\n' ' ')
             echo "$s" >> "$OUT/scores.tmp"
             echo "$f $label/$name $s" >> "$PER"
         done
@@ -286,6 +286,33 @@ if [ -n "$FRAMES" ]; then
     echo "$row"
     echo
 fi
+
+# Wrong detections by rendered surface (the rendered sets carry label images).
+for f in $FILTERS; do
+    echo "## Where the wrong detections lie: $f"
+    echo
+    echo "Share of the wrong detected samples (counted, not within tolerance of ground truth)"
+    echo "by the surface under them; paint = on a painted line but off its centre line"
+    echo "(for example on a too-wide part, or an edge of a wide line). wrong = all wrong samples."
+    echo
+    echo "| set | wrong | carpet | paint | floor | wall | ceiling | robot |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|"
+    grep "^$f " "$PER" | awk '/fp_carpet=/ {
+            split($2, a, "/"); set = a[1]
+            for (i = 3; i <= NF; i++) { split($i, kv, "="); if (kv[1] ~ /^fp_/) { v[set, kv[1]] += kv[2]; tot[set] += kv[2] } }
+            if (!(set in seen)) { seen[set] = 1; order[++n] = set }
+        }
+        END {
+            for (k = 1; k <= n; k++) {
+                s = order[k]; t = tot[s]
+                printf "| %s | %d |", s, t
+                split("fp_carpet fp_paint fp_floor fp_wall fp_ceiling fp_robot", names, " ")
+                for (j = 1; j <= 6; j++) printf " %s |", t ? sprintf("%.0f %%", 100 * v[s, names[j]] / t) : "-"
+                printf "\n"
+            }
+        }'
+    echo
+done
 
 echo "## Targets"
 echo

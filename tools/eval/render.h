@@ -80,8 +80,20 @@ double rd_hit_cylinders(const rd_scene *s, rd_vec pos, rd_vec dir, double tmax, 
 /* Draws a scene of the given set (retrying poses until enough lines are in view). */
 void rd_scene_random(rd_scene *s, rd_set set, int width, int height, uint64_t seed);
 
-/* Renders the 8-bit image (width*height bytes). */
-void rd_render(const rd_scene *s, uint8_t *img);
+/* Surface labels (values of the label image). */
+enum {
+    RD_LABEL_CARPET = 0,
+    RD_LABEL_PAINT = 1,
+    RD_LABEL_FLOOR = 2,
+    RD_LABEL_WALL = 3,
+    RD_LABEL_CEILING = 4,
+    RD_LABEL_ROBOT = 5,
+    RD_NLABELS = 6
+};
+
+/* Renders the 8-bit image (width*height bytes) and, when labels is not NULL, the
+   surface seen at each pixel centre (RD_LABEL_*, width*height bytes). */
+void rd_render(const rd_scene *s, uint8_t *img, uint8_t *labels);
 
 /* Ground truth: straight lines, circle polylines and don't-care parts (README formats). */
 void rd_ground_truth(const rd_scene *s, ev_paths *lines, ev_paths *arcs, ev_paths *dontcare);

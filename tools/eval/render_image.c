@@ -55,8 +55,8 @@ static int painted(double X, double Y)
     return 0;
 }
 
-/* Radiance (albedo times shading) seen along one ray. */
-static double trace(const rd_scene *s, rd_vec dir)
+/* Radiance (albedo times shading) seen along one ray; *label gets the surface (RD_LABEL_*). */
+static double trace(const rd_scene *s, rd_vec dir, int *label)
 {
     const rd_vec p = s->cam.pos;
     double tg = dir.z < 0.0 ? -p.z / dir.z : HUGE_VAL;
@@ -86,6 +86,7 @@ static double trace(const rd_scene *s, rd_vec dir)
         }
         lam = 0.3 * nx + 0.2 * ny + 0.93 * nz;
         alb = (hz >= c->band_z0 && hz < c->band_z1) ? c->band_albedo : c->albedo;
+        *label = RD_LABEL_ROBOT;
         return alb * (0.35 + 0.65 * (lam > 0.0 ? lam : 0.0));
     }
     if (tg <= tw) {
@@ -96,17 +97,22 @@ static double trace(const rd_scene *s, rd_vec dir)
                        0.4 * vnoise(X / 0.03, Y / 0.03, s->texture_seed) +
                        0.25 * vnoise(X / 0.25, Y / 0.25, s->texture_seed ^ 0x5555u);
             if (painted(X, Y)) {
+                *label = RD_LABEL_PAINT;
                 return s->paint * (1.0 + 0.3 * s->texture * n);
             }
+            *label = RD_LABEL_CARPET;
             return s->carpet * (1.0 + s->texture * n);
         }
+        *label = RD_LABEL_FLOOR;
         return s->floor * (1.0 + 0.5 * s->texture * vnoise(X / 0.1, Y / 0.1, s->texture_seed));
     }
     {
         double z = p.z + tw * dir.z;
         if (z > s->wall_h) {
+            *label = RD_LABEL_CEILING;
             return s->ceiling;
         }
+        *label = RD_LABEL_WALL;
         return (z >= s->wall_band_z0 && z < s->wall_band_z1) ? s->wall_band : s->wall;
     }
 }
@@ -129,7 +135,7 @@ static void blur_rows(double *dst, const double *src, int w, int h, const double
     }
 }
 
-void rd_render(const rd_scene *s, uint8_t *img)
+void rd_render(const rd_scene *s, uint8_t *img, uint8_t *labels)
 {
     const int w = s->cam.width, h = s->cam.height;
     double *a = malloc((size_t)w * (size_t)h * sizeof(double));
@@ -144,11 +150,17 @@ void rd_render(const rd_scene *s, uint8_t *img)
     for (y = 0; y < h; y++) {
         for (x = 0; x < w; x++) {
             double acc = 0.0, du = x - s->cam.cx, dv = y - s->cam.cy, illum;
+            int label = 0;
             for (j = 0; j < SS; j++) {
                 for (i = 0; i < SS; i++) {
                     double u = x - 0.5 + (i + 0.5) / SS, v = y - 0.5 + (j + 0.5) / SS;
-                    acc += trace(s, rd_ray(&s->cam, u, v));
+                    acc += trace(s, rd_ray(&s->cam, u, v), &label);
                 }
+            }
+            if (labels != NULL) {
+                /* The surface at the pixel centre. */
+                trace(s, rd_ray(&s->cam, x, y), &label);
+                labels[(size_t)y * (size_t)w + (size_t)x] = (uint8_t)label;
             }
             illum = 1.0 + s->grad_x * du / (0.5 * w) + s->grad_y * dv / (0.5 * h);
             illum *= 1.0 - s->vignette * (du * du + dv * dv) / rmax2;

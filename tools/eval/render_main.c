@@ -15,10 +15,12 @@
 static void usage(FILE *f)
 {
     fputs("usage: symline-render --set SET [--seed N] [--count N] [--first K] [--size WxH]\n"
-          "                      [--preview] OUTDIR\n"
+          "                      [--preview] [--labels] OUTDIR\n"
           "SET: normal | dark | overexposed | occluded | circle.\n"
           "Writes OUTDIR/SET_NNN.{pgm,lines.txt,arcs.txt,dontcare.txt} for NNN = K..K+N-1\n"
-          "(defaults: seed 1, count 10, first 0, size 320x240); --preview adds SET_NNN.png.\n"
+          "(defaults: seed 1, count 10, first 0, size 320x240); --preview adds SET_NNN.png;\n"
+          "--labels adds SET_NNN.labels.pgm, the surface at each pixel centre: 0 carpet,\n"
+          "1 paint, 2 floor, 3 wall, 4 ceiling, 5 robot (cylinder).\n"
           "The same seed, set, index and size always give the same files.\n",
           f);
 }
@@ -71,7 +73,7 @@ int main(int argc, char **argv)
 {
     rd_set set = RD_NSETS;
     unsigned long seed = 1, count = 10, first = 0, k;
-    int w = 320, h = 240, preview = 0, i;
+    int w = 320, h = 240, preview = 0, labels = 0, i;
     const char *outdir = NULL;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -81,6 +83,8 @@ int main(int argc, char **argv)
             return 0;
         } else if (strcmp(a, "--preview") == 0) {
             preview = 1;
+        } else if (strcmp(a, "--labels") == 0) {
+            labels = 1;
         } else if (strcmp(a, "--set") == 0 && v) {
             if (rd_set_parse(v, &set) != 0) {
                 fprintf(stderr, "symline-render: unknown set '%s'\n", v);
@@ -127,14 +131,15 @@ int main(int argc, char **argv)
         rd_scene s;
         ev_paths lines, arcs, dc;
         uint8_t *img = malloc((size_t)w * (size_t)h);
+        uint8_t *lab = labels ? malloc((size_t)w * (size_t)h) : NULL;
         char base[4096], path[4200], err[512];
         int rc = 0;
-        if (img == NULL) {
+        if (img == NULL || (labels && lab == NULL)) {
             return 1;
         }
         snprintf(base, sizeof(base), "%s/%s_%03lu", outdir, rd_set_name(set), k);
         rd_scene_random(&s, set, w, h, image_seed(seed, set, (unsigned)k, w, h));
-        rd_render(&s, img);
+        rd_render(&s, img, lab);
         ev_paths_init(&lines);
         ev_paths_init(&arcs);
         ev_paths_init(&dc);
@@ -143,6 +148,13 @@ int main(int argc, char **argv)
         if (imgio_write_gray(path, img, (uint32_t)w, (uint32_t)h, (uint32_t)w, err, sizeof(err)) != 0) {
             fprintf(stderr, "symline-render: %s\n", err);
             rc = 1;
+        }
+        if (labels) {
+            snprintf(path, sizeof(path), "%s.labels.pgm", base);
+            if (imgio_write_gray(path, lab, (uint32_t)w, (uint32_t)h, (uint32_t)w, err, sizeof(err)) != 0) {
+                fprintf(stderr, "symline-render: %s\n", err);
+                rc = 1;
+            }
         }
         if (preview) {
             snprintf(path, sizeof(path), "%s.png", base);
@@ -161,6 +173,7 @@ int main(int argc, char **argv)
         ev_paths_free(&arcs);
         ev_paths_free(&dc);
         free(img);
+        free(lab);
         if (rc) {
             return 1;
         }

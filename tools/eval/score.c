@@ -3,6 +3,7 @@
  */
 #include "score.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,11 +25,11 @@ static void finish(ev_score *s)
 void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
                     double tol, ev_score *out)
 {
-    ev_score_paths_report(gt, dontcare, det, tol, out, NULL);
+    ev_score_paths_report(gt, dontcare, det, tol, out, NULL, NULL);
 }
 
 void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
-                           double tol, ev_score *out, FILE *pieces)
+                           double tol, ev_score *out, FILE *pieces, const ev_labels *labels)
 {
     ev_index gix, dcix, dix;
     ev_pt *ds = NULL, *gs = NULL;
@@ -63,6 +64,13 @@ void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const e
         }
         out->det_counted++;
         out->det_hits += (size_t)near_gt;
+        if (!near_gt && labels != NULL) {
+            long x = lround(ds[i].x), y = lround(ds[i].y);
+            if (x >= 0 && y >= 0 && x < labels->width && y < labels->height) {
+                unsigned v = labels->px[(size_t)y * (size_t)labels->width + (size_t)x];
+                out->fp_label[v < EV_NLABELS ? v : EV_NLABELS - 1]++;
+            }
+        }
     }
 
     ng = ev_sample(gt, EV_SAMPLE_STEP, &gs, NULL);

@@ -12,6 +12,13 @@
 #include "paths.h"
 
 #define EV_SAMPLE_STEP 0.5
+#define EV_NLABELS 8 /* label values 0..7 counted; larger ones count as 7 */
+
+/* A label image (one byte per pixel, stride = width), e.g. rendered surfaces. */
+typedef struct ev_labels {
+    const unsigned char *px;
+    int width, height;
+} ev_labels;
 
 typedef struct ev_score {
     double p, r, f1;
@@ -24,6 +31,8 @@ typedef struct ev_score {
     size_t curve_matched, curve_ok; /* detected pieces matched to circle GT; of those, kind "curve" */
     /* The same four counts weighted by length: samples of those pieces. */
     size_t line_matched_s, line_ok_s, curve_matched_s, curve_ok_s;
+    /* With a label image: wrong detected samples by the label under them. */
+    size_t fp_label[EV_NLABELS];
 } ev_score;
 
 /* max(2, 3*width/640) pixels. */
@@ -38,9 +47,11 @@ void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths
                     double tol, ev_score *out);
 
 /* Same; when pieces is not NULL, one line per detected piece goes there (its
-   samples near straight and near circle ground truth, and its class). */
+   samples near straight and near circle ground truth, and its class); when labels
+   is not NULL, fp_label counts the wrong samples by the label at their nearest pixel
+   (samples outside the label image are not counted there). */
 void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
-                           double tol, ev_score *out, FILE *pieces);
+                           double tol, ev_score *out, FILE *pieces, const ev_labels *labels);
 
 /*
  * Binary line mask (nonzero = line pixel, width*height bytes, stride = width):

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "evio.h"
 #include "imgio.h"
@@ -26,6 +27,9 @@ static void usage(FILE *f)
           "gtjson: prints NAME's ground truth as detection JSON (lines as kind \"line\",\n"
           "      circle pieces as kind \"curve\" with a polyline): a perfect detector.\n"
           "Samples every 0.5 px; tolerance max(2, 3*width/640) px unless --tol.\n"
+          "With NAME.labels.pgm (symline-render --labels), gt mode prints a second line:\n"
+          "wrong detected samples by surface, fp_carpet fp_paint fp_floor fp_wall\n"
+          "fp_ceiling fp_robot.\n"
           "Prints one line of key=value pairs: f1 p r, sample counts, and the\n"
           "classification counts line_matched line_ok curve_matched curve_ok and the\n"
           "same weighted by length (samples): line_matched_s line_ok_s curve_matched_s curve_ok_s.\n"
@@ -35,7 +39,7 @@ static void usage(FILE *f)
           f);
 }
 
-static void print_score(const ev_score *s, double tol)
+static void print_score(const ev_score *s, double tol, int with_labels)
 {
     printf("f1=%.6f p=%.6f r=%.6f tol=%.3f det_samples=%zu det_counted=%zu det_hits=%zu "
            "gt_samples=%zu gt_hits=%zu line_matched=%zu line_ok=%zu curve_matched=%zu "
@@ -43,6 +47,15 @@ static void print_score(const ev_score *s, double tol)
            s->f1, s->p, s->r, tol, s->det_samples, s->det_counted, s->det_hits, s->gt_samples,
            s->gt_hits, s->line_matched, s->line_ok, s->curve_matched, s->curve_ok,
            s->line_matched_s, s->line_ok_s, s->curve_matched_s, s->curve_ok_s);
+    if (with_labels) {
+        /* Rendered surfaces (symline-render --labels) under the wrong samples. */
+        static const char *const names[] = {"carpet", "paint", "floor", "wall", "ceiling", "robot"};
+        int k;
+        for (k = 0; k < (int)(sizeof(names) / sizeof(names[0])); k++) {
+            printf("%sfp_%s=%zu", k ? " " : "", names[k], s->fp_label[k]);
+        }
+        putchar('\n');
+    }
 }
 
 static int mode_gt(const char *name, const char *detpath, double tol)
@@ -50,7 +63,9 @@ static int mode_gt(const char *name, const char *detpath, double tol)
     ev_paths gt, dc, det;
     ev_score s;
     char path[4096];
-    int w = 0, h = 0, jw, jh, rc = 1;
+    int w = 0, h = 0, jw, jh, rc = 1, have_lab = 0;
+    imgio_gray lab;
+    ev_labels labels;
     ev_paths_init(&gt);
     ev_paths_init(&dc);
     ev_paths_init(&det);
@@ -81,10 +96,26 @@ static int mode_gt(const char *name, const char *detpath, double tol)
         }
         tol = ev_tolerance(w);
     }
-    ev_score_paths_report(&gt, &dc, &det, tol, &s, g_pieces ? stdout : NULL);
-    print_score(&s, tol);
+    snprintf(path, sizeof(path), "%s.labels.pgm", name);
+    if (access(path, R_OK) == 0) {
+        char err[512];
+        if (imgio_read_gray(path, &lab, err, sizeof(err)) != 0) {
+            fprintf(stderr, "symline-score: %s\n", err);
+            goto out;
+        }
+        have_lab = 1;
+        labels.px = lab.px;
+        labels.width = (int)lab.width;
+        labels.height = (int)lab.height;
+    }
+    ev_score_paths_report(&gt, &dc, &det, tol, &s, g_pieces ? stdout : NULL,
+                          have_lab ? &labels : NULL);
+    print_score(&s, tol, have_lab);
     rc = 0;
 out:
+    if (have_lab) {
+        imgio_free(&lab);
+    }
     ev_paths_free(&gt);
     ev_paths_free(&dc);
     ev_paths_free(&det);
@@ -111,7 +142,7 @@ static int mode_mask(const char *maskpath, const char *detpath, double tol)
         tol = ev_tolerance((int)m.width);
     }
     ev_score_mask(m.px, (int)m.width, (int)m.height, &det, tol, &s);
-    print_score(&s, tol);
+    print_score(&s, tol, 0);
     imgio_free(&m);
     ev_paths_free(&det);
     return 0;
@@ -137,7 +168,7 @@ static int mode_pair(const char *refpath, const char *detpath, double tol)
     }
     /* The reference's kinds stand for ground-truth classes. */
     ev_score_paths(&ref, NULL, &det, tol, &s);
-    print_score(&s, tol);
+    print_score(&s, tol, 0);
     rc = 0;
 out:
     ev_paths_free(&ref);
