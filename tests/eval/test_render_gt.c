@@ -1,8 +1,8 @@
 /*
  * The renderer's ground truth agrees with its image: on clean renders (no noise,
  * blur, lighting or texture) the pixel under every ground-truth sample is painted,
- * and the paint across the line is centred on the ground truth (the brightness
- * centroid along the normal lies within a fraction of a pixel of it).
+ * and labelled paint, and the paint across the line is centred on the ground truth
+ * (the brightness centroid along the normal lies within a fraction of a pixel of it).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -80,10 +80,12 @@ static void check_scene(rd_set set, int w, int h, uint64_t seed)
     rd_scene s;
     ev_paths lines, arcs, dc;
     ev_pt *smp;
-    size_t n, k, painted = 0;
+    size_t n, k, painted = 0, labelled = 0;
     uint8_t *img = malloc((size_t)w * (size_t)h);
+    uint8_t *lab = malloc((size_t)w * (size_t)h);
     double thr;
     assert_non_null(img);
+    assert_non_null(lab);
     rd_scene_random(&s, set, w, h, seed);
     s.noise = 0.0;
     s.blur = 0.01;
@@ -92,7 +94,7 @@ static void check_scene(rd_set set, int w, int h, uint64_t seed)
     if (s.gain * s.paint > 0.95) {
         s.gain = 0.95 / s.paint; /* keep paint below clipping so coverage shows */
     }
-    rd_render(&s, img, NULL);
+    rd_render(&s, img, lab);
     ev_paths_init(&lines);
     ev_paths_init(&arcs);
     ev_paths_init(&dc);
@@ -107,6 +109,7 @@ static void check_scene(rd_set set, int w, int h, uint64_t seed)
         long x = lround(smp[k].x), y = lround(smp[k].y);
         assert_true(x >= 0 && y >= 0 && x < w && y < h);
         painted += img[(size_t)y * (size_t)w + (size_t)x] >= thr;
+        labelled += lab[(size_t)y * (size_t)w + (size_t)x] == RD_LABEL_PAINT;
     }
     {
         /* Perspective and pixel sampling move the centroid by a tenth of a pixel or
@@ -116,10 +119,12 @@ static void check_scene(rd_set set, int w, int h, uint64_t seed)
                rd_set_name(set), w, h, (unsigned long long)seed, painted, n, med);
         /* Ends next to a dark occluder are the only expected misses. */
         assert_true((double)painted >= 0.97 * (double)n);
+        assert_true((double)labelled >= 0.97 * (double)n);
         assert_true(med < 0.3);
     }
     free(smp);
     free(img);
+    free(lab);
     ev_paths_free(&lines);
     ev_paths_free(&arcs);
     ev_paths_free(&dc);
