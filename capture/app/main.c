@@ -96,14 +96,19 @@ static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint
         fprintf(stderr, "symline-capture: the detector rejects a %ux%u frame with these settings\n", w, h);
         return -1;
     }
-    /* Room for about twice the line points of a pass (detect.h); a quarter of the pixels is ample. */
-    point_cap = (uint32_t)((uint64_t)w * h / 4u + 4096u);
+    /* The same storage as `symline lines`, so both report the same result for the same frame:
+     * the point list doubles as scratch for a pass's line points (detect.h), which can
+     * approach two per pixel with the paper's filter on textured frames. */
+    {
+        const uint64_t want = 2u * (uint64_t)w * h + 1024u;
+        point_cap = want > 0x3fffffffu ? 0x3fffffffu : (uint32_t)want;
+    }
     free(d->ws);
     free(d->pts);
     d->ws = malloc(need);
     d->pts = malloc((size_t)point_cap * sizeof *d->pts);
     if (d->segs == NULL) {
-        d->segs = malloc(1024u * sizeof *d->segs);
+        d->segs = malloc(8192u * sizeof *d->segs);
     }
     if (d->ws == NULL || d->pts == NULL || d->segs == NULL) {
         fprintf(stderr, "symline-capture: out of memory for the detector\n");
@@ -113,7 +118,7 @@ static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint
     d->width = w;
     d->height = h;
     d->res.segments = d->segs;
-    d->res.segment_cap = 1024u;
+    d->res.segment_cap = 8192u;
     d->res.points = d->pts;
     d->res.point_cap = point_cap;
     return 0;
