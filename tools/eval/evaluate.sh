@@ -18,6 +18,7 @@
 #   --sizes "WxH .." rendered sizes (default "320x240 640x480")
 #   --opts "..."     extra options for every `symline lines` run
 #   --per-image      also print one row per image
+#   --overlays       also draw the detections on every real frame (OUT/overlay/FILTER/NAME.png)
 #   --jobs N         parallel jobs (default 2)
 set -eu
 
@@ -36,6 +37,7 @@ SEED=2026
 SIZES="320x240 640x480"
 OPTS=
 PER_IMAGE=0
+OVERLAYS=0
 JOBS=2
 while [ $# -gt 0 ]; do
     case $1 in
@@ -47,6 +49,7 @@ while [ $# -gt 0 ]; do
         --sizes) SIZES=$2; shift 2 ;;
         --opts) OPTS=$2; shift 2 ;;
         --per-image) PER_IMAGE=1; shift ;;
+        --overlays) OVERLAYS=1; shift ;;
         --jobs) JOBS=$2; shift 2 ;;
         *) echo "evaluate.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
     esac
@@ -170,6 +173,18 @@ for f in $FILTERS; do
             echo failed >> "$1.err"
         fi' < "$OUT/detect.$f.todo"
 done
+if [ "$OVERLAYS" -eq 1 ] && [ -n "$FRAMES" ]; then
+    for f in $FILTERS; do
+        fo=
+        [ "$f" = default ] || fo="--filter $f"
+        mkdir -p "$OUT/overlay/$f"
+        for name in $FRAMES; do
+            # shellcheck disable=SC2086
+            "$BIN/symline" overlay $fo $OPTS "$FIELD/$name.pgm" "$OUT/overlay/$f/$name.png" ||
+                echo "evaluate.sh: overlay of $name failed" >&2
+        done
+    done
+fi
 FAILS=$(find "$OUT/det" -name '*.err' -exec grep -l '^failed$' {} + 2>/dev/null | wc -l)
 
 # ---- scoring and tables ----
