@@ -250,6 +250,44 @@ static void test_mask(void **state)
     ev_paths_free(&det);
 }
 
+static void test_labels(void **state)
+{
+    /* 40x30 label image: paint (1) on rows 13..17 (5 px wide) from x 5 to 34, a wall (3) row 2. */
+    unsigned char lab[40 * 30] = {0};
+    ev_labels labels;
+    ev_paths gt, det;
+    ev_score s;
+    int x, y, w, h;
+    (void)state;
+    for (y = 13; y <= 17; y++) {
+        for (x = 5; x <= 34; x++) {
+            lab[y * 40 + x] = 1;
+        }
+    }
+    for (x = 0; x < 40; x++) {
+        lab[2 * 40 + x] = 3;
+    }
+    labels.px = lab;
+    labels.width = 40;
+    labels.height = 30;
+    ev_paths_init(&gt);
+    ev_paths_init(&det);
+    seg(&gt, EV_TAG_LINE, 10, 15, 30, 15); /* 41 samples */
+    assert_int_equal(ev_parse_detections("{\"segments\":[{\"x0\":10,\"y0\":15,\"x1\":20,\"y1\":15},"
+                                         "{\"x0\":0,\"y0\":2,\"x1\":9,\"y1\":2}]}",
+                                         "t", &det, &w, &h),
+                     0);
+    ev_score_paths_report(&gt, NULL, &det, 2.0, &s, NULL, &labels);
+    /* Wrong samples: the 19 on the wall row. */
+    assert_int_equal(s.fp_label[3], 19);
+    assert_int_equal(s.fp_label[0] + s.fp_label[1], 0);
+    /* All 41 ground-truth samples are 5 px wide (bucket 4-8); x 10..22 are found. */
+    assert_int_equal(s.gt_width_n[2], 41);
+    assert_int_equal(s.gt_width_hits[2], 25);
+    ev_paths_free(&gt);
+    ev_paths_free(&det);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -258,6 +296,7 @@ int main(void)
         cmocka_unit_test(test_half_length), cmocka_unit_test(test_dontcare),
         cmocka_unit_test(test_curve_polyline), cmocka_unit_test(test_empty),
         cmocka_unit_test(test_json),        cmocka_unit_test(test_mask),
+        cmocka_unit_test(test_labels),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

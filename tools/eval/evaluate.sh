@@ -329,6 +329,38 @@ for f in $FILTERS; do
     echo
 done
 
+# Recall by painted line width (from the rendered label images).
+for f in $FILTERS; do
+    echo "## Recall by painted line width: $f"
+    echo
+    echo "Share of ground-truth samples found, by the painted width across the line (pixels,"
+    echo "measured on the rendered labels, +-1 px), with the number of samples."
+    echo
+    echo "| set | < 2 px | 2-4 px | 4-8 px | 8-16 px | >= 16 px |"
+    echo "|---|---:|---:|---:|---:|---:|"
+    grep "^$f " "$PER" | awk '/gtw_lt2=/ {
+            split($2, a, "/"); set = a[1]
+            for (i = 3; i <= NF; i++) {
+                split($i, kv, "=")
+                if (kv[1] ~ /^gtw_/) { split(kv[2], hn, "/"); hit[set, kv[1]] += hn[1]; num[set, kv[1]] += hn[2] }
+            }
+            if (!(set in seen)) { seen[set] = 1; order[++n] = set }
+        }
+        END {
+            split("gtw_lt2 gtw_2to4 gtw_4to8 gtw_8to16 gtw_ge16", names, " ")
+            for (k = 1; k <= n; k++) {
+                s = order[k]
+                printf "| %s |", s
+                for (j = 1; j <= 5; j++) {
+                    t = num[s, names[j]]
+                    printf " %s |", t ? sprintf("%.3f (%d)", hit[s, names[j]] / t, t) : "-"
+                }
+                printf "\n"
+            }
+        }'
+    echo
+done
+
 echo "## Targets"
 echo
 echo "| filter | synthetic sets with mean F1 >= 0.90 | frames with all three stability F1 >= 0.95 |"

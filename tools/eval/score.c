@@ -22,6 +22,45 @@ static void finish(ev_score *s)
     s->f1 = (s->p + s->r) > 0.0 ? 2.0 * s->p * s->r / (s->p + s->r) : 0.0;
 }
 
+/* Label at the pixel nearest to (x, y), or -1 outside. */
+static int label_at(const ev_labels *lab, double x, double y)
+{
+    long xi = lround(x), yi = lround(y);
+    if (xi < 0 || yi < 0 || xi >= lab->width || yi >= lab->height) {
+        return -1;
+    }
+    return lab->px[(size_t)yi * (size_t)lab->width + (size_t)xi];
+}
+
+/* Painted width across ground-truth sample i: the run of paint-labelled pixels along
+   the normal (direction from the neighbouring samples of the same piece). */
+static double paint_width(const ev_labels *lab, const ev_pt *s, const size_t *piece, size_t n,
+                          size_t i)
+{
+    size_t a = (i > 0 && piece[i - 1] == piece[i]) ? i - 1 : i;
+    size_t b = (i + 1 < n && piece[i + 1] == piece[i]) ? i + 1 : i;
+    double dx = s[b].x - s[a].x, dy = s[b].y - s[a].y, len = hypot(dx, dy), w = 0.0, o;
+    int side;
+    if (len <= 0.0 || label_at(lab, s[i].x, s[i].y) != EV_LABEL_PAINT) {
+        return 0.0;
+    }
+    for (side = -1; side <= 1; side += 2) {
+        for (o = 0.25; o < 128.0; o += 0.25) {
+            if (label_at(lab, s[i].x - side * o * dy / len, s[i].y + side * o * dx / len) !=
+                EV_LABEL_PAINT) {
+                break;
+            }
+        }
+        w += o;
+    }
+    return w;
+}
+
+static int width_bucket(double w)
+{
+    return w < 2.0 ? 0 : w < 4.0 ? 1 : w < 8.0 ? 2 : w < 16.0 ? 3 : 4;
+}
+
 void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
                     double tol, ev_score *out)
 {
@@ -33,7 +72,7 @@ void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const e
 {
     ev_index gix, dcix, dix;
     ev_pt *ds = NULL, *gs = NULL;
-    size_t *dpiece = NULL, nd, ng, i;
+    size_t *dpiece = NULL, *gpiece = NULL, nd, ng, i;
     size_t *near_line = calloc(det->npieces + 1, sizeof(size_t));
     size_t *near_curve = calloc(det->npieces + 1, sizeof(size_t));
     size_t *nsamp = calloc(det->npieces + 1, sizeof(size_t));
@@ -73,10 +112,16 @@ void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const e
         }
     }
 
-    ng = ev_sample(gt, EV_SAMPLE_STEP, &gs, NULL);
+    ng = ev_sample(gt, EV_SAMPLE_STEP, &gs, &gpiece);
     out->gt_samples = ng;
     for (i = 0; i < ng; i++) {
-        out->gt_hits += (size_t)ev_index_near(&dix, gs[i], NULL);
+        int hit = ev_index_near(&dix, gs[i], NULL);
+        out->gt_hits += (size_t)hit;
+        if (labels != NULL) {
+            int b = width_bucket(paint_width(labels, gs, gpiece, ng, i));
+            out->gt_width_n[b]++;
+            out->gt_width_hits[b] += (size_t)hit;
+        }
     }
 
     /* A piece is matched when at least half its samples lie near ground truth;
@@ -120,6 +165,7 @@ void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const e
     free(ds);
     free(gs);
     free(dpiece);
+    free(gpiece);
     free(near_line);
     free(near_curve);
     free(nsamp);

@@ -13,6 +13,8 @@
 
 #define EV_SAMPLE_STEP 0.5
 #define EV_NLABELS 8 /* label values 0..7 counted; larger ones count as 7 */
+#define EV_LABEL_PAINT 1 /* the label of painted lines (symline-render --labels) */
+#define EV_NWIDTHS 5
 
 /* A label image (one byte per pixel, stride = width), e.g. rendered surfaces. */
 typedef struct ev_labels {
@@ -31,8 +33,11 @@ typedef struct ev_score {
     size_t curve_matched, curve_ok; /* detected pieces matched to circle GT; of those, kind "curve" */
     /* The same four counts weighted by length: samples of those pieces. */
     size_t line_matched_s, line_ok_s, curve_matched_s, curve_ok_s;
-    /* With a label image: wrong detected samples by the label under them. */
+    /* With a label image: wrong detected samples by the label under them, and ground
+       truth samples (and those found) by painted width across the line, in pixels
+       [0,2) [2,4) [4,8) [8,16) [16,inf) (width from the paint labels, +-1 px). */
     size_t fp_label[EV_NLABELS];
+    size_t gt_width_n[EV_NWIDTHS], gt_width_hits[EV_NWIDTHS];
 } ev_score;
 
 /* max(2, 3*width/640) pixels. */

@@ -29,7 +29,8 @@ static void usage(FILE *f)
           "Samples every 0.5 px; tolerance max(2, 3*width/640) px unless --tol.\n"
           "With NAME.labels.pgm (symline-render --labels), gt mode prints a second line:\n"
           "wrong detected samples by surface, fp_carpet fp_paint fp_floor fp_wall\n"
-          "fp_ceiling fp_robot.\n"
+          "fp_ceiling fp_robot; and a third: ground-truth samples found / all by painted\n"
+          "width in pixels, gtw_lt2 gtw_2to4 gtw_4to8 gtw_8to16 gtw_ge16.\n"
           "Prints one line of key=value pairs: f1 p r, sample counts, and the\n"
           "classification counts line_matched line_ok curve_matched curve_ok and the\n"
           "same weighted by length (samples): line_matched_s line_ok_s curve_matched_s curve_ok_s.\n"
@@ -55,6 +56,13 @@ static void print_score(const ev_score *s, double tol, int with_labels)
             printf("%sfp_%s=%zu", k ? " " : "", names[k], s->fp_label[k]);
         }
         putchar('\n');
+        {
+            static const char *const wn[EV_NWIDTHS] = {"lt2", "2to4", "4to8", "8to16", "ge16"};
+            for (k = 0; k < EV_NWIDTHS; k++) {
+                printf("%sgtw_%s=%zu/%zu", k ? " " : "", wn[k], s->gt_width_hits[k], s->gt_width_n[k]);
+            }
+            putchar('\n');
+        }
     }
 }
 
