@@ -1,11 +1,7 @@
 /*
- * symline_detect(): configuration, workspace and the passes over axes and
- * scales. Each pass collects its line points into the caller's point storage
- * (raster order, strip processing), traces them from the storage's free
- * tail, turns the chains into segments and compacts the points it keeps
- * down to where the pass began. Parts of a chain that an earlier pass (finer
- * scale, or the horizontal axis at the same scale) already reported are
- * left out, so one physical line is reported once.
+ * symline_detect(): configuration, workspace, the frame statistics of the
+ * adaptive thresholds, the passes over axes and scales (pass.c), and the
+ * final merge (merge.c).
  */
 #include "detect_internal.h"
 
@@ -90,13 +86,18 @@ static symline_axis axis_of(const symline_config *c, uint32_t i)
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
 }
 
+/* A pass's workspace: its state, the row index, and the collection's rings
+ * (reused by the tracer's state afterwards). Small state lives here rather
+ * than on the stack, which must stay within a firmware's budget. */
 static size_t pass_ws_size(const sl_pass *p, uint32_t width)
 {
-    return sl_align_up(((size_t)p->h + 1u) * sizeof(uint32_t)) + SL_ALIGN +
-           sl_collect_ws_size(p, width);
+    size_t c = sl_collect_ws_size(p, width);
+    const size_t t = sl_align_up(sizeof(sl_tracer)) + SL_ALIGN;
+    return sl_align_up(sizeof(sl_pass)) + SL_ALIGN + sl_align_up(((size_t)p->h + 1u) * 4u) +
+           SL_ALIGN + (c > t ? c : t);
 }
 
-size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const symline_config *cfg)
+SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const symline_config *cfg)
 {
     uint32_t L, l, a;
     size_t best = 0u;
@@ -117,140 +118,34 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
     return best;
 }
 
-/* State of one detection shared by the passes. */
-typedef struct detect_run {
-    const symline_config *cfg;
-    symline_result *r;
-    uint32_t nseg;    /* segments so far */
-    uint32_t prev_seg; /* segments of earlier passes: [0, prev_seg) */
-    uint8_t truncated;
-} detect_run;
-
-static int covered(const detect_run *d, const symline_point *q, uint32_t level)
-{
-    const int32_t x = sl_q8(q->x, level), y = sl_q8(q->y, level);
-    const int32_t tol = 512 + (int32_t)(((1u << level) - 1u) << 8);
-    uint32_t i;
-    for (i = 0; i < d->prev_seg; i++) {
-        if (sl_near_segment(&d->r->segments[i], d->r->points, x, y, tol)) {
-            return 1;
-        }
-    }
-    return 0;
-}
-
-/* One piece of a chain (grid coordinates, absolute storage index `at`). */
-static void emit(detect_run *d, const sl_pass *p, uint32_t at, uint32_t n)
-{
-    symline_point *q = d->r->points + at;
-    const uint32_t half = (1u << p->level) >> 1;
-    symline_segment *s;
-    uint32_t i;
-    if ((n << p->level) < d->cfg->min_length || n < 2u) {
-        return;
-    }
-    if (d->nseg >= d->r->segment_cap) {
-        d->truncated = 1u;
-        return;
-    }
-    s = &d->r->segments[d->nseg++];
-    sl_fit(q, n, p->level, d->cfg->curve_dev_q8, s);
-    s->axis = (uint8_t)p->axis;
-    s->first = at;
-    s->count = n;
-    for (i = 0; i < n; i++) {
-        q[i].x = (uint16_t)(((uint32_t)q[i].x << p->level) + half);
-        q[i].y = (uint16_t)(((uint32_t)q[i].y << p->level) + half);
-    }
-}
-
-/* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
-static void chain(detect_run *d, const sl_pass *p, uint32_t at, uint32_t n)
-{
-    const symline_point *c = d->r->points + at;
-    uint32_t i = 0u;
-    while (i < n) {
-        uint32_t j, s;
-        while (i < n && covered(d, &c[i], p->level)) {
-            i++;
-        }
-        j = i;
-        while (j < n && !covered(d, &c[j], p->level)) {
-            j++;
-        }
-        for (s = i; s < j;) {
-            const uint32_t len = sl_corner_cut(c + s, j - s);
-            emit(d, p, at + s, len);
-            s += len;
-        }
-        i = j;
-    }
-}
-
-/* Runs one pass; points of earlier passes occupy [0, *npts). */
-static void run_pass(detect_run *d, const symline_image *img, const sl_pass *p, uint8_t *ws,
-                     size_t ws_size, uint32_t *npts)
-{
-    symline_result *r = d->r;
-    const uint32_t base = *npts;
-    uint8_t *cur = ws, *end = ws + ws_size;
-    uint32_t *row_start = (uint32_t *)sl_carve(&cur, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
-    uint32_t n = 0u, tail, cnt, k, w;
-    uint8_t cut = 0u;
-    sl_tracer t;
-    const uint32_t first_seg = d->nseg;
-    (void)sl_collect(img, p, cur, (size_t)(end - cur), r->points + base, r->point_cap - base, &n,
-                     row_start, &d->truncated);
-    sl_tracer_init(&t, r->points + base, n, row_start, p->h);
-    tail = base + n;
-    while (tail < r->point_cap &&
-           sl_tracer_next(&t, r->points + tail, r->point_cap - tail, &cnt, &cut)) {
-        chain(d, p, tail, cnt);
-        tail += cnt;
-    }
-    if (cut || (tail >= r->point_cap && n > 0u)) {
-        d->truncated = 1u;
-    }
-    /* Keep only the points the new segments use, right after the earlier ones. */
-    w = base;
-    for (k = first_seg; k < d->nseg; k++) {
-        symline_segment *s = &r->segments[k];
-        uint32_t i;
-        for (i = 0; i < s->count; i++) {
-            r->points[w + i] = r->points[s->first + i];
-        }
-        s->first = w;
-        w += s->count;
-    }
-    *npts = w;
-    d->prev_seg = d->nseg;
-}
-
 /* Mean and standard deviation (Q4) of the frame's gray values: one read of
  * the frame, summed per row so a row's sums stay in 32 bits. */
-static void frame_stats(const symline_image *img, uint32_t *mean, uint32_t *sigma_q4)
+SL_NOINLINE static void frame_stats(const symline_image *img, uint32_t *mean, uint32_t *sigma_q4)
 {
-    uint64_t sum = 0u, sq = 0u, n, var_q8;
+    uint64_t sum = 0u, sq = 0u;
+    const uint64_t n = (uint64_t)img->width * img->height;
+    int64_t var_q8;
     uint32_t x, y;
+    *mean = 0u;
+    *sigma_q4 = 0u;
+    if (n == 0u) {
+        return;
+    }
     for (y = 0; y < img->height; y++) {
         const uint8_t *row = img->data + (size_t)y * img->stride;
-        uint32_t rs = 0u;
-        uint64_t rq = 0u;
+        uint32_t rs = 0u, rq = 0u; /* 255^2 * 65535 < 2^32 */
         for (x = 0; x < img->width; x++) {
-            rs += row[x];
-            rq += (uint32_t)row[x] * row[x];
+            const uint32_t v = row[x];
+            rs += v;
+            rq += v * v;
         }
         sum += rs;
         sq += rq;
     }
-    n = (uint64_t)img->width * img->height;
     *mean = (uint32_t)((sum + n / 2u) / n);
-    /* var = sq/n - (sum/n)^2, in Q8: (256 sq n - 256 sum^2) / n^2, kept in 64 bits. */
-    var_q8 = ((sq << 8) / n) - (((sum << 4) / n) * ((sum << 4) / n));
-    if ((int64_t)var_q8 < 0) {
-        var_q8 = 0u;
-    }
-    *sigma_q4 = (uint32_t)sl_isqrt64(var_q8);
+    /* var = sq/n - (sum/n)^2, in Q8 (rounding may make it slightly negative). */
+    var_q8 = (int64_t)((sq << 8) / n) - (int64_t)(((sum << 4) / n) * ((sum << 4) / n));
+    *sigma_q4 = var_q8 > 0 ? (uint32_t)sl_isqrt64((uint64_t)var_q8) : 0u;
 }
 
 /* The adaptive thresholds folded into a pass. */
@@ -271,12 +166,46 @@ static void adapt(sl_pass *p, const symline_config *cfg, uint32_t mean, uint32_t
     }
 }
 
+/* Every pass, fine scale first, horizontal before vertical; returns the
+ * number of points kept. Kept apart from symline_detect() so that the pass
+ * state and the merge are never on the stack together. */
+SL_NOINLINE static uint32_t run_passes(const symline_image *img, const symline_config *cfg,
+                                       uint8_t *ws, size_t ws_size, sl_run *d)
+{
+    uint32_t L, l, a, npts = 0u;
+    uint8_t *cur = ws, *const end = ws + ws_size;
+    sl_pass *p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
+    L = level_count(cfg, img->width, img->height);
+    for (l = 0; l < L && p != NULL; l++) {
+        for (a = 0; a < axis_count(cfg); a++) {
+            uint8_t *rest = cur;
+            uint32_t *row_start;
+            uint32_t n = 0u;
+            sl_tracer *t;
+            sl_pass_setup(p, cfg, axis_of(cfg, a), l, img->width, img->height);
+            if (cfg->adaptive) {
+                adapt(p, cfg, d->mean, d->sigma_q4);
+            }
+            row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
+            /* The collection's rings are free again once it returns: the tracer's
+             * state takes their place. */
+            (void)sl_collect(img, p, rest, (size_t)(end - rest), d->r->points + npts,
+                             d->r->point_cap - npts, &n, row_start, &d->truncated);
+            t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
+            if (row_start == NULL || t == NULL) {
+                return npts; /* not reached: the workspace size was checked */
+            }
+            sl_trace_pass(d, p, row_start, n, t, &npts);
+        }
+    }
+    return npts;
+}
+
 symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
                               size_t ws_size, symline_result *out)
 {
     symline_status st = symline_image_check(img);
-    detect_run d;
-    uint32_t L, l, a, npts = 0u, mean = 0u, sigma_q4 = 0u;
+    sl_run d;
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -299,23 +228,13 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.nseg = 0u;
     d.prev_seg = 0u;
     d.truncated = 0u;
-    out->segment_count = 0u;
+    d.mean = 0u;
+    d.sigma_q4 = 0u;
     if (cfg->adaptive) {
-        frame_stats(img, &mean, &sigma_q4);
+        frame_stats(img, &d.mean, &d.sigma_q4);
     }
-    L = level_count(cfg, img->width, img->height);
-    for (l = 0; l < L; l++) {
-        for (a = 0; a < axis_count(cfg); a++) {
-            sl_pass p;
-            sl_pass_setup(&p, cfg, axis_of(cfg, a), l, img->width, img->height);
-            if (cfg->adaptive) {
-                adapt(&p, cfg, mean, sigma_q4);
-            }
-            run_pass(&d, img, &p, (uint8_t *)ws, ws_size, &npts);
-        }
-    }
+    out->point_count = run_passes(img, cfg, (uint8_t *)ws, ws_size, &d);
     out->segment_count = d.nseg;
-    out->point_count = npts;
     if (cfg->merge_gap != 0u) {
         const uint32_t gap = cfg->merge_gap == 0xFFFFFFFFu ? img->width / 8u : cfg->merge_gap;
         sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);

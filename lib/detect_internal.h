@@ -9,6 +9,14 @@
 #include "symline/detect.h"
 #include "internal.h"
 
+/* Keeps a helper with a large frame out of its caller's frame, so the deepest
+ * stack path stays short (measured by tools/firmware/check.sh). */
+#if defined(__GNUC__)
+#define SL_NOINLINE __attribute__((noinline))
+#else
+#define SL_NOINLINE
+#endif
+
 /* Marks a point of the raster list as visited by the tracer (y is never 65535). */
 #define SL_VISITED 0xFFFFu
 
@@ -113,6 +121,12 @@ static inline int32_t sl_q8(uint32_t v, uint32_t level)
     return (int32_t)(((v << level) << 8) + (((1u << level) - 1u) << 7));
 }
 
+/* Distance (Q8) of (px, py) to the line through a with direction (dx, dy), all Q8. */
+uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py);
+
+/* Curve test: max_dev above thr and above 1/32 of the chord. */
+int sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr);
+
 /* Length of the first piece of chain p[0..n-1] before a sharp corner (n if none). */
 uint32_t sl_corner_cut(const symline_point *p, uint32_t n);
 
@@ -125,7 +139,23 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
 int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
                     int32_t tol_q8);
 
-/* Merges collinear line segments of r (points kept contiguous by rotation). */
+/* merge.c: merges collinear line segments of r (points kept contiguous by rotation). */
 void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8);
+
+/* pass.c: state of one detection shared by its passes. */
+typedef struct sl_run {
+    const symline_config *cfg;
+    symline_result *r;
+    uint32_t nseg;     /* segments so far */
+    uint32_t prev_seg; /* segments of earlier passes: [0, prev_seg) */
+    uint32_t mean, sigma_q4; /* frame statistics for the adaptive thresholds */
+    uint8_t truncated;
+} sl_run;
+
+/* pass.c: traces a pass's raster list of n points, stored at *npts after the
+ * points of earlier passes, makes its segments and compacts their points
+ * (new total in *npts). t: tracer state in the caller's workspace. */
+void sl_trace_pass(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint32_t n,
+                   sl_tracer *t, uint32_t *npts);
 
 #endif /* SYMLINE_DETECT_INTERNAL_H */

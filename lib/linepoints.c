@@ -66,9 +66,18 @@ static uint32_t h_gray_rows(const sl_pass *p)
     return h_delta(p) + p->k + p->m + 1u;
 }
 
+/* State of the horizontal-axis rings (kept in the workspace). */
+typedef struct hring {
+    const symline_image *img;
+    const sl_pass *p;
+    uint8_t *map;  /* map_rows rows of w */
+    uint8_t *gray; /* gray_rows rows of w (levels > 0) */
+    uint32_t map_rows, gray_rows;
+} hring;
+
 size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
 {
-    size_t n = 6u * SL_ALIGN;
+    size_t n = (size_t)6u * SL_ALIGN;
     const size_t w = p->w;
     n += sl_align_up(w * sizeof(uint32_t)); /* energies */
     if (p->level > 0u) {
@@ -81,11 +90,12 @@ size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
         }
         return n;
     }
+    n += sl_align_up(sizeof(hring)) + sl_align_up(sizeof(symline_colrun)) + (size_t)2u * SL_ALIGN;
     n += symline_colrun_buffer_size(p->w);
     n += sl_align_up(w * sizeof(symline_extremum));
-    n += sl_align_up(w * h_map_rows(p));
+    n += sl_align_up(w * (size_t)h_map_rows(p));
     if (p->level > 0u) {
-        n += sl_align_up(w * h_gray_rows(p));
+        n += sl_align_up(w * (size_t)h_gray_rows(p));
     }
     n += sl_align_up((2u * (size_t)p->m + 1u) * sizeof(const uint8_t *));
     return n;
@@ -160,7 +170,7 @@ static int a_near_row(const uint8_t *map, uint32_t n, uint32_t x, uint32_t d)
     return 0;
 }
 
-static symline_status collect_vertical(const symline_image *img, const sl_pass *p, uint8_t *cur,
+SL_NOINLINE static symline_status collect_vertical(const symline_image *img, const sl_pass *p, uint8_t *cur,
                                        uint8_t *end, symline_point *pts, uint32_t cap,
                                        uint32_t *n, uint32_t *row_start, uint8_t *truncated)
 {
@@ -211,13 +221,6 @@ static symline_status collect_vertical(const symline_image *img, const sl_pass *
 
 /* ---- horizontal axis: down the columns, over rings ---- */
 
-typedef struct hring {
-    const symline_image *img;
-    const sl_pass *p;
-    uint8_t *map;  /* map_rows rows of w */
-    uint8_t *gray; /* gray_rows rows of w (levels > 0) */
-    uint32_t map_rows, gray_rows;
-} hring;
 
 static const uint8_t *h_row(const hring *r, uint32_t y)
 {
@@ -270,15 +273,18 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
     }
 }
 
-static symline_status collect_horizontal(const symline_image *img, const sl_pass *p,
+SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, const sl_pass *p,
                                          uint8_t *cur, uint8_t *end, symline_point *pts,
                                          uint32_t cap, uint32_t *n, uint32_t *row_start,
                                          uint8_t *truncated)
 {
-    hring r;
-    symline_colrun cr;
+    hring *rp = (hring *)sl_carve(&cur, end, sizeof(hring));
+    symline_colrun *cr = (symline_colrun *)sl_carve(&cur, end, sizeof(symline_colrun));
     const uint32_t w = p->w, h = p->h, m = p->m;
     const uint32_t delta = h_delta(p);
+    if (rp == NULL || cr == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
     const size_t cr_bytes = symline_colrun_buffer_size(w);
     uint32_t *E = (uint32_t *)sl_carve(&cur, end, (size_t)w * sizeof(uint32_t));
     void *cr_buf = sl_carve(&cur, end, cr_bytes);
@@ -287,62 +293,62 @@ static symline_status collect_horizontal(const symline_image *img, const sl_pass
     const uint8_t **rows;
     uint16_t *acc = NULL;
     uint32_t t, y, produced = 0u, i;
-    r.img = img;
-    r.p = p;
-    r.map_rows = h_map_rows(p);
-    r.gray_rows = h_gray_rows(p);
-    r.map = (uint8_t *)sl_carve(&cur, end, (size_t)w * r.map_rows);
-    r.gray = NULL;
+    rp->img = img;
+    rp->p = p;
+    rp->map_rows = h_map_rows(p);
+    rp->gray_rows = h_gray_rows(p);
+    rp->map = (uint8_t *)sl_carve(&cur, end, (size_t)w * rp->map_rows);
+    rp->gray = NULL;
     if (p->level > 0u) {
-        r.gray = (uint8_t *)sl_carve(&cur, end, (size_t)w * r.gray_rows);
+        rp->gray = (uint8_t *)sl_carve(&cur, end, (size_t)w * rp->gray_rows);
         acc = (uint16_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
-        if (r.gray == NULL || acc == NULL) {
+        if (rp->gray == NULL || acc == NULL) {
             return SYMLINE_ERR_BUFFER;
         }
     }
     rows = (const uint8_t **)sl_carve(&cur, end, (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
-    if (E == NULL || cr_buf == NULL || ev == NULL || r.map == NULL || rows == NULL) {
+    if (E == NULL || cr_buf == NULL || ev == NULL || rp->map == NULL || rows == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    (void)symline_colrun_init(&cr, w, cr_buf, cr_bytes);
+    (void)symline_colrun_init(cr, w, cr_buf, cr_bytes);
     for (t = 0; t < h; t++) {
         uint32_t count = 0u, j;
         if (p->level > 0u) {
             const uint32_t need = (t + m < h) ? t + m : h - 1u;
             while (produced <= need) {
-                sl_grid_row(img, p, produced, acc, r.gray + (size_t)(produced % r.gray_rows) * w);
+                sl_grid_row(img, p, produced, acc, rp->gray + (size_t)(produced % rp->gray_rows) * w);
                 produced++;
             }
         }
         for (j = 0; j <= 2u * m; j++) {
             const uint32_t yy = t + j; /* row t - m + j, offset by m to stay unsigned */
-            rows[j] = (yy >= m && yy - m < h) ? h_row(&r, yy - m) : NULL;
+            rows[j] = (yy >= m && yy - m < h) ? h_row(rp, yy - m) : NULL;
         }
         (void)symline_energy_across(rows, m, w, E);
         if (t >= 1u) {
-            uint8_t *mr = h_map(&r, t - 1u);
+            uint8_t *mr = h_map(rp, t - 1u);
             for (i = 0; i < w; i++) {
                 mr[i] = SYMLINE_MAP_NONE;
             }
         }
-        (void)symline_colrun_push(&cr, E, ev, w, &count);
+        (void)symline_colrun_push(cr, E, ev, w, &count);
         for (i = 0; i < count; i++) {
             if (t - 1u - ev[i].y <= p->lag) {
-                h_map(&r, ev[i].y)[ev[i].x] = ev[i].kind;
+                h_map(rp, ev[i].y)[ev[i].x] = ev[i].kind;
             }
         }
         if (t >= delta) {
-            h_decide(&r, t - delta, pts, cap, n, row_start, truncated);
+            h_decide(rp, t - delta, pts, cap, n, row_start, truncated);
         }
     }
     {
-        uint8_t *mr = h_map(&r, h - 1u);
+        uint8_t *mr = h_map(rp, h - 1u);
         for (i = 0; i < w; i++) {
             mr[i] = SYMLINE_MAP_NONE;
         }
     }
     for (y = (h > delta) ? h - delta : 0u; y < h; y++) {
-        h_decide(&r, y, pts, cap, n, row_start, truncated);
+        h_decide(rp, y, pts, cap, n, row_start, truncated);
     }
     row_start[h] = *n;
     return SYMLINE_OK;

@@ -1,6 +1,6 @@
 /*
- * From traced chains to segments: corner cuts, fit and classification,
- * nearness to earlier segments, and the merge of collinear pieces.
+ * From traced chains to segments: corner cuts, fit and classification, and
+ * nearness to earlier segments.
  *
  * All geometry is integer: coordinates in Q8 pixels (int32), products in
  * int64, lengths through an integer square root.
@@ -81,20 +81,33 @@ uint32_t sl_corner_cut(const symline_point *p, uint32_t n)
 }
 
 /* Distance (Q8) of point (px, py) to the line through a with direction (dx, dy), all Q8. */
-static uint32_t line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
-                             int32_t py)
+static inline uint32_t line_dist(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py)
 {
     const int64_t wx = (int64_t)px - ax, wy = (int64_t)py - ay;
-    const uint64_t len = sl_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
-    int64_t cross;
+    uint64_t len = sl_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    int64_t c;
+    uint64_t cross;
     if (len == 0u) {
         return (uint32_t)sl_isqrt64((uint64_t)(wx * wx + wy * wy));
     }
-    cross = wx * dy - wy * dx;
-    if (cross < 0) {
-        cross = -cross;
+    c = wx * dy - wy * dx;
+    cross = (uint64_t)(c < 0 ? -c : c);
+    /* A 32-bit division (no 64-bit division helper on small cores): drop the
+     * same low bits of both; the quotient keeps well under 1/256 px of error
+     * for any chord longer than a pixel. */
+    while (cross > 0xFFFFFFFFu) {
+        cross >>= 1;
+        len >>= 1;
     }
-    return (uint32_t)((uint64_t)cross / len);
+    if (len == 0u) {
+        return 0xFFFFFFFFu;
+    }
+    return (uint32_t)cross / (uint32_t)len;
+}
+
+uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py)
+{
+    return line_dist(ax, ay, dx, dy, px, py);
 }
 
 static uint32_t max_dev_q8(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
@@ -103,7 +116,7 @@ static uint32_t max_dev_q8(const symline_point *p, uint32_t n, uint32_t level, i
     uint32_t i, best = 0u;
     for (i = 0; i < n; i++) {
         const uint32_t d =
-            line_dist_q8(x0, y0, x1 - x0, y1 - y0, sl_q8(p[i].x, level), sl_q8(p[i].y, level));
+            sl_line_dist_q8(x0, y0, x1 - x0, y1 - y0, sl_q8(p[i].x, level), sl_q8(p[i].y, level));
         if (d > best) {
             best = d;
         }
@@ -114,11 +127,12 @@ static uint32_t max_dev_q8(const symline_point *p, uint32_t n, uint32_t level, i
 /* A curve bends away from its chord by more than the threshold and by more
  * than 1/32 of the chord: a straight line's pixel steps and noise stay near
  * 1-2 px however long it is, while an arc's sagitta grows with its chord. */
-static int sl_is_curve(const symline_segment *s, uint32_t thr)
+int sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
+                       uint32_t thr)
 {
-    const int64_t dx = (int64_t)s->x1 - s->x0, dy = (int64_t)s->y1 - s->y0;
+    const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
     const uint64_t chord = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
-    return s->max_dev > thr && (uint64_t)s->max_dev * 32u > chord;
+    return max_dev > thr && (uint64_t)max_dev * 32u > chord;
 }
 
 /* Shifts the pair right until both magnitudes are below 2^bits (keeps the ratio). */
@@ -135,56 +149,68 @@ static void shrink(int64_t *a, int64_t *b, unsigned bits)
  * Least-squares line through the points (principal axis of their scatter),
  * in integers: the ends become the first and last point projected onto it,
  * which gives sub-pixel ends and removes the one-pixel jitter of traced
- * points. Returns 0 when the scatter has no direction (all points equal).
+ * points. Long chains are sampled (at most 2048 points) so that every sum and
+ * every division stays in 32 bits; only products use 64 bits. Returns 0 when
+ * the scatter has no direction (all points equal).
  */
-static int ls_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
+#define SL_FIT_SAMPLES 2048u
+SL_NOINLINE static int ls_ends(const symline_point *p, uint32_t n, uint32_t level,
+                               symline_segment *s)
 {
-    int64_t sx = 0, sy = 0, a = 0, b = 0, c = 0, mx, my, r, lam, vx, vy, vv, dot;
-    uint32_t i;
-    /* Means in Q8 of full resolution. */
-    for (i = 0; i < n; i++) {
-        sx += sl_q8(p[i].x, level);
-        sy += sl_q8(p[i].y, level);
+    /* Coordinates in Q4 full resolution, relative to the first point. */
+    const int32_t ox = sl_q8(p[0].x, level), oy = sl_q8(p[0].y, level);
+    const uint32_t step = n / SL_FIT_SAMPLES + 1u;
+    int32_t sx = 0, sy = 0, mx, my, ux, uy;
+    int64_t a = 0, b = 0, c = 0, r, lam, vx, vy, len;
+    uint32_t i, cnt = 0u;
+    for (i = 0; i < n; i += step) {
+        sx += (sl_q8(p[i].x, level) - ox) / 16;
+        sy += (sl_q8(p[i].y, level) - oy) / 16;
+        cnt++;
     }
-    mx = sx / (int64_t)n;
-    my = sy / (int64_t)n;
-    /* Second moments in Q4 (products fit: |d| < 2^21, n < 2^21). */
-    for (i = 0; i < n; i++) {
-        const int64_t dx = ((int64_t)sl_q8(p[i].x, level) - mx) / 16;
-        const int64_t dy = ((int64_t)sl_q8(p[i].y, level) - my) / 16;
+    mx = sx / (int32_t)cnt;
+    my = sy / (int32_t)cnt;
+    for (i = 0; i < n; i += step) {
+        const int64_t dx = (sl_q8(p[i].x, level) - ox) / 16 - mx;
+        const int64_t dy = (sl_q8(p[i].y, level) - oy) / 16 - my;
         a += dx * dx;
         b += dx * dy;
         c += dy * dy;
     }
     while (a >= ((int64_t)1 << 30) || c >= ((int64_t)1 << 30) || b >= ((int64_t)1 << 30) ||
            b <= -((int64_t)1 << 30)) {
-        a /= 2;
+        a >>= 1;
         b /= 2;
-        c /= 2;
+        c >>= 1;
     }
     r = (int64_t)sl_isqrt64((uint64_t)((a - c) * (a - c) / 4 + b * b));
     lam = (a + c) / 2 + r;
-    if (a >= c) {
-        vx = lam - c;
-        vy = b;
-    } else {
-        vx = b;
-        vy = lam - a;
-    }
-    if (vx == 0 && vy == 0) {
-        return 0;
-    }
+    vx = a >= c ? lam - c : b;
+    vy = a >= c ? b : lam - a;
     shrink(&vx, &vy, 15);
-    vv = vx * vx + vy * vy;
-    if (vv == 0) {
+    len = (int64_t)sl_isqrt64((uint64_t)(vx * vx + vy * vy));
+    if (len == 0) {
         return 0;
     }
-    dot = ((int64_t)s->x0 - mx) * vx + ((int64_t)s->y0 - my) * vy;
-    s->x0 = (int32_t)(mx + dot * vx / vv);
-    s->y0 = (int32_t)(my + dot * vy / vv);
-    dot = ((int64_t)s->x1 - mx) * vx + ((int64_t)s->y1 - my) * vy;
-    s->x1 = (int32_t)(mx + dot * vx / vv);
-    s->y1 = (int32_t)(my + dot * vy / vv);
+    /* Unit direction in Q15 (32-bit divisions). */
+    ux = (int32_t)(vx * 32768) / (int32_t)len;
+    uy = (int32_t)(vy * 32768) / (int32_t)len;
+    for (i = 0; i < 2u; i++) {
+        const symline_point *q = &p[i == 0u ? 0u : n - 1u];
+        const int64_t qx = (sl_q8(q->x, level) - ox) / 16 - mx;
+        const int64_t qy = (sl_q8(q->y, level) - oy) / 16 - my;
+        const int64_t t = qx * ux + qy * uy; /* Q4 * Q15 */
+        /* Back to Q8 absolute: mean + t*u, Q4*Q15*Q15 -> Q8 is a shift by 26. */
+        const int32_t ex = ox + mx * 16 + (int32_t)((t * ux) >> 26);
+        const int32_t ey = oy + my * 16 + (int32_t)((t * uy) >> 26);
+        if (i == 0u) {
+            s->x0 = ex;
+            s->y0 = ey;
+        } else {
+            s->x1 = ex;
+            s->y1 = ey;
+        }
+    }
     return 1;
 }
 
@@ -197,20 +223,18 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
     s->x1 = sl_q8(p[n - 1u].x, level);
     s->y1 = sl_q8(p[n - 1u].y, level);
     s->max_dev = max_dev_q8(p, n, level, s->x0, s->y0, s->x1, s->y1);
-    s->kind = (uint8_t)(sl_is_curve(s, thr) ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
-    if (s->kind == SYMLINE_KIND_LINE && n >= 3u) {
-        symline_segment f = *s;
-        if (ls_ends(p, n, level, &f)) {
-            f.max_dev = max_dev_q8(p, n, level, f.x0, f.y0, f.x1, f.y1);
-            *s = f;
-        }
+    s->kind = (uint8_t)(sl_is_curve(s->x0, s->y0, s->x1, s->y1, s->max_dev, thr)
+                            ? SYMLINE_KIND_CURVE
+                            : SYMLINE_KIND_LINE);
+    if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
+        s->max_dev = max_dev_q8(p, n, level, s->x0, s->y0, s->x1, s->y1);
     }
     s->level = (uint8_t)level;
     s->reserved = 0u;
 }
 
 /* 1 when (px, py) lies within tol of the segment a-b (all Q8). */
-static int near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px, int32_t py,
+static inline int near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px, int32_t py,
                       int32_t tol)
 {
     int64_t dx, dy, wx, wy, t, dd;
@@ -231,7 +255,22 @@ static int near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px
         const int64_t ex = (int64_t)px - bx, ey = (int64_t)py - by;
         return ex * ex + ey * ey <= (int64_t)tol * tol;
     }
-    return line_dist_q8(ax, ay, bx - ax, by - ay, px, py) <= (uint32_t)tol;
+    /* Inside the chord: |w x d| <= tol |d|, squared. Coarsen all lengths alike
+     * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
+     * no square root and no division, so this stays cheap and shallow. */
+    {
+        int64_t t2 = tol;
+        while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 || wx > 32767 ||
+               wx < -32767 || wy > 32767 || wy < -32767 || t2 > 32767) {
+            dx /= 2;
+            dy /= 2;
+            wx /= 2;
+            wy /= 2;
+            t2 /= 2;
+        }
+        t = wx * dy - wy * dx;
+        return (uint64_t)(t * t) <= (uint64_t)(t2 * t2) * (uint64_t)(dx * dx + dy * dy);
+    }
 }
 
 /* Curves are followed through every SL_POLY_STEP-th point. */
@@ -253,161 +292,4 @@ int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t 
         }
     }
     return 0;
-}
-
-/* ---- merge of collinear pieces ---- */
-
-static void reverse_pts(symline_point *p, uint32_t n)
-{
-    uint32_t i;
-    for (i = 0; i < n / 2u; i++) {
-        const symline_point t = p[i];
-        p[i] = p[n - 1u - i];
-        p[n - 1u - i] = t;
-    }
-}
-
-static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
-{
-    const int64_t dx = (int64_t)ax - bx, dy = (int64_t)ay - by;
-    return (uint64_t)(dx * dx + dy * dy);
-}
-
-/* Largest distance of a segment's points (full-resolution integers) to a chord. */
-static uint32_t dev_of_points(const symline_point *p, uint32_t n, int32_t x0, int32_t y0,
-                              int32_t x1, int32_t y1)
-{
-    uint32_t i, best = 0u;
-    for (i = 0; i < n; i++) {
-        const uint32_t d =
-            line_dist_q8(x0, y0, x1 - x0, y1 - y0, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8);
-        if (d > best) {
-            best = d;
-        }
-    }
-    return best;
-}
-
-/* Tries to merge line b into line a; 1 when the geometry allows it (ends set in *ends). */
-static int mergeable(const symline_segment *a, const symline_segment *b, const symline_point *pts,
-                     uint64_t gap2, uint32_t dev_q8, uint32_t curve_q8, int32_t ends[4],
-                     uint32_t *dev)
-{
-    const int32_t ex[4] = {a->x0, a->x1, b->x0, b->x1};
-    const int32_t ey[4] = {a->y0, a->y1, b->y0, b->y1};
-    const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
-    const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
-    uint64_t g = dist2(a->x0, a->y0, b->x0, b->y0), t;
-    int64_t lo, hi, proj;
-    uint32_t i, ilo = 0u, ihi = 0u, d1, d2;
-    t = dist2(a->x0, a->y0, b->x1, b->y1);
-    g = t < g ? t : g;
-    t = dist2(a->x1, a->y1, b->x0, b->y0);
-    g = t < g ? t : g;
-    t = dist2(a->x1, a->y1, b->x1, b->y1);
-    g = t < g ? t : g;
-    if (g > gap2) {
-        return 0;
-    }
-    if (line_dist_q8(a->x0, a->y0, adx, ady, b->x0, b->y0) > dev_q8 ||
-        line_dist_q8(a->x0, a->y0, adx, ady, b->x1, b->y1) > dev_q8 ||
-        line_dist_q8(b->x0, b->y0, bdx, bdy, a->x0, a->y0) > dev_q8 ||
-        line_dist_q8(b->x0, b->y0, bdx, bdy, a->x1, a->y1) > dev_q8) {
-        return 0;
-    }
-    /* New ends: the extreme end points along the longer piece. */
-    {
-        const int a_longer =
-            dist2(a->x0, a->y0, a->x1, a->y1) >= dist2(b->x0, b->y0, b->x1, b->y1);
-        const int32_t dx = a_longer ? adx : bdx;
-        const int32_t dy = a_longer ? ady : bdy;
-        lo = hi = (int64_t)ex[0] * dx + (int64_t)ey[0] * dy;
-        for (i = 1u; i < 4u; i++) {
-            proj = (int64_t)ex[i] * dx + (int64_t)ey[i] * dy;
-            if (proj < lo) {
-                lo = proj;
-                ilo = i;
-            }
-            if (proj > hi) {
-                hi = proj;
-                ihi = i;
-            }
-        }
-    }
-    ends[0] = ex[ilo];
-    ends[1] = ey[ilo];
-    ends[2] = ex[ihi];
-    ends[3] = ey[ihi];
-    d1 = dev_of_points(pts + a->first, a->count, ends[0], ends[1], ends[2], ends[3]);
-    d2 = dev_of_points(pts + b->first, b->count, ends[0], ends[1], ends[2], ends[3]);
-    *dev = d1 > d2 ? d1 : d2;
-    {
-        symline_segment m = *a;
-        m.x0 = ends[0];
-        m.y0 = ends[1];
-        m.x1 = ends[2];
-        m.y1 = ends[3];
-        m.max_dev = *dev;
-        return !sl_is_curve(&m, curve_q8);
-    }
-}
-
-/* Moves segment j's points right behind segment i's (i < j, ranges ordered), removes j. */
-static void absorb(symline_result *r, uint32_t i, uint32_t j)
-{
-    symline_segment *a = &r->segments[i];
-    const symline_segment b = r->segments[j];
-    const uint32_t mid0 = a->first + a->count;
-    const uint32_t midn = b.first - mid0;
-    uint32_t k;
-    reverse_pts(r->points + mid0, midn);
-    reverse_pts(r->points + b.first, b.count);
-    reverse_pts(r->points + mid0, midn + b.count);
-    for (k = i + 1u; k < j; k++) {
-        r->segments[k].first += b.count;
-    }
-    a->count += b.count;
-    for (k = j; k + 1u < r->segment_count; k++) {
-        r->segments[k] = r->segments[k + 1u];
-    }
-    r->segment_count--;
-}
-
-void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8)
-{
-    const uint64_t gap2 = ((uint64_t)gap_px << 8) * ((uint64_t)gap_px << 8);
-    uint32_t i, j;
-    int changed = 1;
-    while (changed) {
-        changed = 0;
-        for (i = 0; i < r->segment_count; i++) {
-            if (r->segments[i].kind != SYMLINE_KIND_LINE) {
-                continue;
-            }
-            for (j = i + 1u; j < r->segment_count; j++) {
-                int32_t ends[4];
-                uint32_t dev;
-                symline_segment *a = &r->segments[i];
-                const symline_segment *b = &r->segments[j];
-                const uint32_t lv = a->level > b->level ? a->level : b->level;
-                const uint32_t thr = curve_dev_q8 + (((1u << lv) - 1u) << 7);
-                if (b->kind != SYMLINE_KIND_LINE) {
-                    continue;
-                }
-                if (!mergeable(a, b, r->points, gap2, dev_q8 + (((1u << lv) - 1u) << 7), thr,
-                               ends, &dev)) {
-                    continue;
-                }
-                a->x0 = ends[0];
-                a->y0 = ends[1];
-                a->x1 = ends[2];
-                a->y1 = ends[3];
-                a->max_dev = dev;
-                a->level = (uint8_t)lv;
-                absorb(r, i, j);
-                changed = 1;
-                j = i; /* the grown segment may now reach pieces it missed */
-            }
-        }
-    }
 }

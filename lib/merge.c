@@ -1,0 +1,182 @@
+/*
+ * The merge of collinear line pieces that an occluder (a robot, a ball) or a
+ * junction split: close ends, each piece on the other's line, and the joined
+ * piece still straight. The joined piece's points are made contiguous in the
+ * point storage by rotating the points in between (three reversals), so a
+ * segment is always one range of points.
+ */
+#include "detect_internal.h"
+
+static void reverse_pts(symline_point *p, uint32_t n)
+{
+    uint32_t i;
+    /* Field by field: a struct swap may become a libc memcpy call. */
+    for (i = 0; i < n / 2u; i++) {
+        const uint16_t x = p[i].x, y = p[i].y;
+        p[i].x = p[n - 1u - i].x;
+        p[i].y = p[n - 1u - i].y;
+        p[n - 1u - i].x = x;
+        p[n - 1u - i].y = y;
+    }
+}
+
+static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
+{
+    const int64_t dx = (int64_t)ax - bx, dy = (int64_t)ay - by;
+    return (uint64_t)(dx * dx + dy * dy);
+}
+
+/* Largest distance of a segment's points (full-resolution integers) to a chord. */
+static uint32_t dev_of_points(const symline_point *p, uint32_t n, int32_t x0, int32_t y0,
+                              int32_t x1, int32_t y1)
+{
+    uint32_t i, best = 0u;
+    for (i = 0; i < n; i++) {
+        const uint32_t d =
+            sl_line_dist_q8(x0, y0, x1 - x0, y1 - y0, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8);
+        best = d > best ? d : best;
+    }
+    return best;
+}
+
+/* Squared distance between the closest ends of a and b. */
+static uint64_t end_gap2(const symline_segment *a, const symline_segment *b)
+{
+    uint64_t g = dist2(a->x0, a->y0, b->x0, b->y0), t;
+    t = dist2(a->x0, a->y0, b->x1, b->y1);
+    g = t < g ? t : g;
+    t = dist2(a->x1, a->y1, b->x0, b->y0);
+    g = t < g ? t : g;
+    t = dist2(a->x1, a->y1, b->x1, b->y1);
+    return t < g ? t : g;
+}
+
+/* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
+static void end_of(const symline_segment *a, const symline_segment *b, uint32_t i, int32_t *x,
+                   int32_t *y)
+{
+    const symline_segment *s = i < 2u ? a : b;
+    *x = (i & 1u) ? s->x1 : s->x0;
+    *y = (i & 1u) ? s->y1 : s->y0;
+}
+
+/* Whether line b may join line a: close ends, each piece on the other's line,
+ * and the joined piece still a line. Sets the joined ends and max_dev. */
+SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment *b, const symline_point *pts,
+                     uint64_t gap2, uint32_t dev_q8, uint32_t curve_q8, int32_t ends[4],
+                     uint32_t *dev)
+{
+    const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
+    const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
+    const int a_longer = dist2(a->x0, a->y0, a->x1, a->y1) >= dist2(b->x0, b->y0, b->x1, b->y1);
+    const int32_t dx = a_longer ? adx : bdx;
+    const int32_t dy = a_longer ? ady : bdy;
+    int64_t lo = 0, hi = 0;
+    uint32_t i, d2;
+    if (end_gap2(a, b) > gap2) {
+        return 0;
+    }
+    if (sl_line_dist_q8(a->x0, a->y0, adx, ady, b->x0, b->y0) > dev_q8 ||
+        sl_line_dist_q8(a->x0, a->y0, adx, ady, b->x1, b->y1) > dev_q8 ||
+        sl_line_dist_q8(b->x0, b->y0, bdx, bdy, a->x0, a->y0) > dev_q8 ||
+        sl_line_dist_q8(b->x0, b->y0, bdx, bdy, a->x1, a->y1) > dev_q8) {
+        return 0;
+    }
+    /* New ends: the extreme end points along the longer piece. */
+    for (i = 0; i < 4u; i++) {
+        int32_t x, y;
+        int64_t proj;
+        end_of(a, b, i, &x, &y);
+        proj = (int64_t)x * dx + (int64_t)y * dy;
+        if (i == 0u || proj < lo) {
+            lo = proj;
+            ends[0] = x;
+            ends[1] = y;
+        }
+        if (i == 0u || proj > hi) {
+            hi = proj;
+            ends[2] = x;
+            ends[3] = y;
+        }
+    }
+    *dev = dev_of_points(pts + a->first, a->count, ends[0], ends[1], ends[2], ends[3]);
+    d2 = dev_of_points(pts + b->first, b->count, ends[0], ends[1], ends[2], ends[3]);
+    *dev = d2 > *dev ? d2 : *dev;
+    return !sl_is_curve(ends[0], ends[1], ends[2], ends[3], *dev, curve_q8);
+}
+
+/* Field-by-field copy (a struct assignment may become a libc memcpy call). */
+static void copy_segment(symline_segment *d, const symline_segment *s)
+{
+    d->x0 = s->x0;
+    d->y0 = s->y0;
+    d->x1 = s->x1;
+    d->y1 = s->y1;
+    d->max_dev = s->max_dev;
+    d->first = s->first;
+    d->count = s->count;
+    d->kind = s->kind;
+    d->axis = s->axis;
+    d->level = s->level;
+    d->reserved = s->reserved;
+}
+
+/* Moves segment j's points right behind segment i's (i < j, ranges ordered), removes j. */
+static void absorb(symline_result *r, uint32_t i, uint32_t j)
+{
+    symline_segment *a = &r->segments[i];
+    const uint32_t b_first = r->segments[j].first, b_count = r->segments[j].count;
+    const uint32_t mid0 = a->first + a->count;
+    const uint32_t midn = b_first - mid0;
+    uint32_t k;
+    reverse_pts(r->points + mid0, midn);
+    reverse_pts(r->points + b_first, b_count);
+    reverse_pts(r->points + mid0, midn + b_count);
+    for (k = i + 1u; k < j; k++) {
+        r->segments[k].first += b_count;
+    }
+    a->count += b_count;
+    for (k = j; k + 1u < r->segment_count; k++) {
+        copy_segment(&r->segments[k], &r->segments[k + 1u]);
+    }
+    r->segment_count--;
+}
+
+void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8)
+{
+    const uint64_t gap2 = ((uint64_t)gap_px << 8) * ((uint64_t)gap_px << 8);
+    uint32_t i, j;
+    int changed = 1;
+    while (changed) {
+        changed = 0;
+        for (i = 0; i < r->segment_count; i++) {
+            if (r->segments[i].kind != SYMLINE_KIND_LINE) {
+                continue;
+            }
+            for (j = i + 1u; j < r->segment_count; j++) {
+                int32_t ends[4];
+                uint32_t dev;
+                symline_segment *a = &r->segments[i];
+                const symline_segment *b = &r->segments[j];
+                const uint32_t lv = a->level > b->level ? a->level : b->level;
+                const uint32_t thr = curve_dev_q8 + (((1u << lv) - 1u) << 7);
+                if (b->kind != SYMLINE_KIND_LINE) {
+                    continue;
+                }
+                if (!mergeable(a, b, r->points, gap2, dev_q8 + (((1u << lv) - 1u) << 7), thr,
+                               ends, &dev)) {
+                    continue;
+                }
+                a->x0 = ends[0];
+                a->y0 = ends[1];
+                a->x1 = ends[2];
+                a->y1 = ends[3];
+                a->max_dev = dev;
+                a->level = (uint8_t)lv;
+                absorb(r, i, j);
+                changed = 1;
+                j = i; /* the grown segment may now reach pieces it missed */
+            }
+        }
+    }
+}
