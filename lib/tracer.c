@@ -137,10 +137,13 @@ static void follow(sl_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_poi
 static void reverse(symline_point *p, uint32_t n)
 {
     uint32_t i;
+    /* Field by field: a struct swap may become a libc memcpy call. */
     for (i = 0; i < n / 2u; i++) {
-        const symline_point tmp = p[i];
-        p[i] = p[n - 1u - i];
-        p[n - 1u - i] = tmp;
+        const uint16_t x = p[i].x, y = p[i].y;
+        p[i].x = p[n - 1u - i].x;
+        p[i].y = p[n - 1u - i].y;
+        p[n - 1u - i].x = x;
+        p[n - 1u - i].y = y;
     }
 }
 
