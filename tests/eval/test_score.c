@@ -250,6 +250,53 @@ static void test_mask(void **state)
     ev_paths_free(&det);
 }
 
+/* The grid index answers exactly like a scan over every segment. */
+static void test_index_exact(void **state)
+{
+    ev_paths p;
+    ev_index ix;
+    unsigned long r = 12345;
+    int round, k, q, hits = 0;
+    (void)state;
+    for (round = 0; round < 20; round++) {
+        double tol = 1.0 + round * 0.4;
+        ev_paths_init(&p);
+        for (k = 0; k < 30; k++) {
+            int npts = 1 + (int)((r = r * 1103515245ul + 12345ul) >> 16) % 4, j;
+            ev_paths_begin(&p, k % 2);
+            for (j = 0; j < npts; j++) {
+                double x = (double)((r = r * 1103515245ul + 12345ul) >> 16 & 1023) / 2.0 - 100.0;
+                double y = (double)((r = r * 1103515245ul + 12345ul) >> 16 & 1023) / 3.0 - 50.0;
+                ev_paths_add(&p, x, y);
+            }
+        }
+        ev_index_build(&ix, &p, tol);
+        for (q = 0; q < 3000; q++) {
+            ev_pt pt;
+            size_t i, j;
+            int brute = 0;
+            pt.x = (double)((r = r * 1103515245ul + 12345ul) >> 16 & 4095) / 6.0 - 150.0;
+            pt.y = (double)((r = r * 1103515245ul + 12345ul) >> 16 & 4095) / 8.0 - 100.0;
+            for (i = 0; i < p.npieces && !brute; i++) {
+                const ev_pt *a = ev_piece_pts(&p, i);
+                size_t n = ev_piece_len(&p, i);
+                if (n == 1) {
+                    brute = ev_dist_point_seg(pt, a[0], a[0]) <= tol;
+                }
+                for (j = 0; j + 1 < n && !brute; j++) {
+                    brute = ev_dist_point_seg(pt, a[j], a[j + 1]) <= tol;
+                }
+            }
+            assert_int_equal(ev_index_near(&ix, pt, NULL), brute);
+            hits += brute;
+        }
+        ev_index_free(&ix);
+        ev_paths_free(&p);
+    }
+    printf("index: %d of 60000 queries near a segment\n", hits);
+    assert_true(hits > 3000 && hits < 57000); /* both answers well exercised */
+}
+
 static void test_labels(void **state)
 {
     /* 40x30 label image: paint (1) on rows 13..17 (5 px wide) from x 5 to 34, a wall (3) row 2. */
@@ -296,7 +343,7 @@ int main(void)
         cmocka_unit_test(test_half_length), cmocka_unit_test(test_dontcare),
         cmocka_unit_test(test_curve_polyline), cmocka_unit_test(test_empty),
         cmocka_unit_test(test_json),        cmocka_unit_test(test_mask),
-        cmocka_unit_test(test_labels),
+        cmocka_unit_test(test_labels),      cmocka_unit_test(test_index_exact),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
