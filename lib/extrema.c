@@ -180,10 +180,10 @@ symline_status symline_extrema(const symline_image *img, symline_axis axis, uint
         void *cr_buf = sl_carve(&cur, end, cr_bytes);
         ev = (symline_extremum *)sl_carve(&cur, end,
                                           (size_t)img->width * sizeof(symline_extremum));
-        if (cr_buf == NULL || ev == NULL) {
+        if (cr_buf == NULL || ev == NULL ||
+            symline_colrun_init(&cr, img->width, cr_buf, cr_bytes) != SYMLINE_OK) {
             return SYMLINE_ERR_BUFFER;
         }
-        (void)symline_colrun_init(&cr, img->width, cr_buf, cr_bytes);
     }
     for (y = 0; y < img->height; y++) {
         uint32_t count = 0u, k;

@@ -66,7 +66,7 @@ symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint
     }
     /* In-image pairs: for offset j, indices j .. n-1-j have both partners. */
     for (j = 1u; j <= m && 2u * j < n; j++) {
-        add_pair(q, q + 2u * j, m + 1u - j, n - 2u * j, E + j);
+        add_pair(q, q + (size_t)2u * j, m + 1u - j, n - 2u * j, E + j);
     }
     return SYMLINE_OK;
 }
