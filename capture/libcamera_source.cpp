@@ -86,6 +86,7 @@ struct lcsrc {
     std::deque<Request *> done;
     bool disconnected = false;
     Request *held = nullptr;
+    capsrc_result pending = CAPSRC_OK; /* a failed re-queue on release, reported by the next lc_next */
     uint64_t number = 0;
     bool have_seq = false;
     uint32_t last_seq = 0;
@@ -159,8 +160,8 @@ void lc_release(capsrc *src)
     if (c->held != nullptr) {
         Request *r = c->held;
         c->held = nullptr;
-        /* A failure resurfaces in the next capsrc_next (no request comes back). */
-        (void)requeue(src, c, r);
+        const capsrc_result q = requeue(src, c, r);
+        if (q != CAPSRC_OK && c->pending == CAPSRC_OK) c->pending = q;
     }
 }
 
@@ -170,6 +171,7 @@ capsrc_result lc_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
     const int64_t deadline = timeout_ms >= 0 ? capsrc_now_ns() + int64_t(timeout_ms) * 1000000 : 0;
     const uint64_t skipped_before = src->stats.skipped_stale;
     lc_release(src);
+    if (c->pending != CAPSRC_OK) return c->pending;
     for (;;) {
         std::deque<Request *> ready;
         bool lost;

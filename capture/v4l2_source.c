@@ -37,6 +37,7 @@ typedef struct v4l2src {
     int streaming;
     int freshest;
     int held;            /* index of the buffer the caller holds, -1 = none */
+    capsrc_result pending; /* a failed re-queue on release, reported by the next capsrc_next */
     uint8_t *unpacked;   /* luma of packed formats, width*height */
     uint64_t number;
     int have_seq;
@@ -105,9 +106,12 @@ static void v4l2_release(capsrc *src)
     v4l2src *v = src->impl;
     if (v->held >= 0) {
         int idx = v->held;
+        capsrc_result r;
         v->held = -1;
-        /* A failure here resurfaces as an error of the next capsrc_next (the queue runs dry). */
-        (void)requeue(src, v, (uint32_t)idx);
+        r = requeue(src, v, (uint32_t)idx);
+        if (r != CAPSRC_OK && v->pending == CAPSRC_OK) {
+            v->pending = r; /* release has no result: the next capsrc_next reports it */
+        }
     }
 }
 
@@ -201,6 +205,9 @@ static capsrc_result v4l2_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
     int64_t deadline = timeout_ms >= 0 ? capsrc_now_ns() + (int64_t)timeout_ms * 1000000 : 0;
     uint64_t skipped_before = src->stats.skipped_stale;
     v4l2_release(src);
+    if (v->pending != CAPSRC_OK) {
+        return v->pending;
+    }
     for (;;) {
         struct pollfd p;
         struct v4l2_buffer b;
