@@ -237,12 +237,12 @@ static void jsegment(jp *p, ev_paths *out)
     double c[4] = {0, 0, 0, 0};
     int have = 0, k;
     ev_paths poly;
-    ev_paths_init(&poly);
-    ev_paths_begin(&poly, EV_TAG_OTHER);
     if (!jlit(p, '{')) {
         jfail(p, "segment: '{' expected");
         return;
     }
+    ev_paths_init(&poly);
+    ev_paths_begin(&poly, EV_TAG_OTHER);
     if (!jlit(p, '}')) {
         do {
             jstring(p, key, sizeof(key));
@@ -402,6 +402,10 @@ int ev_pgm_size(const char *path, int *width, int *height)
         }
         v[i] = 0;
         while (c != EOF && isdigit(c)) {
+            if (v[i] > 10000000) {
+                fclose(f);
+                return -1;
+            }
             v[i] = v[i] * 10 + (c - '0');
             c = fgetc(f);
         }
