@@ -124,6 +124,14 @@ static inline int32_t sl_q8(uint32_t v, uint32_t level)
 /* Distance (Q8) of (px, py) to the line through a with direction (dx, dy), all Q8. */
 uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py);
 
+/* cross / len in Q8 with a 32-bit division (see segments.c). */
+uint32_t sl_div_q8(uint64_t cross, uint64_t len);
+
+/* Largest distance (Q8) of points p[0..n-1] (grid coordinates at `level`;
+ * level 0 for full-resolution points) to the chord (x0,y0)-(x1,y1) (Q8). */
+uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
+                    int32_t x1, int32_t y1);
+
 /* Curve test: max_dev above thr and above 1/32 of the chord. */
 int sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr);
 

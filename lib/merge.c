@@ -26,18 +26,6 @@ static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
     return (uint64_t)(dx * dx + dy * dy);
 }
 
-/* Largest distance of a segment's points (full-resolution integers) to a chord. */
-static uint32_t dev_of_points(const symline_point *p, uint32_t n, int32_t x0, int32_t y0,
-                              int32_t x1, int32_t y1)
-{
-    uint32_t i, best = 0u;
-    for (i = 0; i < n; i++) {
-        const uint32_t d =
-            sl_line_dist_q8(x0, y0, x1 - x0, y1 - y0, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8);
-        best = d > best ? d : best;
-    }
-    return best;
-}
 
 /* Squared distance between the closest ends of a and b. */
 static uint64_t end_gap2(const symline_segment *a, const symline_segment *b)
@@ -60,11 +48,10 @@ static void end_of(const symline_segment *a, const symline_segment *b, uint32_t 
     *y = (i & 1u) ? s->y1 : s->y0;
 }
 
-/* Whether line b may join line a: close ends, each piece on the other's line,
- * and the joined piece still a line. Sets the joined ends and max_dev. */
-SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment *b, const symline_point *pts,
-                     uint64_t gap2, uint32_t dev_q8, uint32_t curve_q8, int32_t ends[4],
-                     uint32_t *dev)
+/* Whether line b may join line a: close ends, each piece on the other's line.
+ * Sets the joined ends (the extreme ends along the longer piece). */
+SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment *b,
+                                 uint64_t gap2, uint32_t dev_q8, int32_t ends[4])
 {
     const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
     const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
@@ -72,7 +59,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
     const int32_t dx = a_longer ? adx : bdx;
     const int32_t dy = a_longer ? ady : bdy;
     int64_t lo = 0, hi = 0;
-    uint32_t i, d2;
+    uint32_t i;
     if (end_gap2(a, b) > gap2) {
         return 0;
     }
@@ -99,10 +86,20 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
             ends[3] = y;
         }
     }
-    *dev = dev_of_points(pts + a->first, a->count, ends[0], ends[1], ends[2], ends[3]);
-    d2 = dev_of_points(pts + b->first, b->count, ends[0], ends[1], ends[2], ends[3]);
-    *dev = d2 > *dev ? d2 : *dev;
-    return !sl_is_curve(ends[0], ends[1], ends[2], ends[3], *dev, curve_q8);
+    return 1;
+}
+
+/* The joined piece's max_dev, or 0xFFFFFFFF when it would be a curve. Kept
+ * apart from mergeable() so their frames are never on the stack together. */
+SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_segment *b,
+                                       const symline_point *pts, const int32_t ends[4],
+                                       uint32_t curve_q8)
+{
+    uint32_t d = sl_max_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    const uint32_t d2 =
+        sl_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    d = d2 > d ? d2 : d;
+    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], d, curve_q8) ? 0xFFFFFFFFu : d;
 }
 
 /* Field-by-field copy (a struct assignment may become a libc memcpy call). */
@@ -163,8 +160,11 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 if (b->kind != SYMLINE_KIND_LINE) {
                     continue;
                 }
-                if (!mergeable(a, b, r->points, gap2, dev_q8 + (((1u << lv) - 1u) << 7), thr,
-                               ends, &dev)) {
+                if (!mergeable(a, b, gap2, dev_q8 + (((1u << lv) - 1u) << 7), ends)) {
+                    continue;
+                }
+                dev = joined_dev(a, b, r->points, ends, thr);
+                if (dev == 0xFFFFFFFFu) {
                     continue;
                 }
                 a->x0 = ends[0];

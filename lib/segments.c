@@ -81,17 +81,8 @@ uint32_t sl_corner_cut(const symline_point *p, uint32_t n)
 }
 
 /* Distance (Q8) of point (px, py) to the line through a with direction (dx, dy), all Q8. */
-static inline uint32_t line_dist(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py)
+uint32_t sl_div_q8(uint64_t cross, uint64_t len)
 {
-    const int64_t wx = (int64_t)px - ax, wy = (int64_t)py - ay;
-    uint64_t len = sl_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
-    int64_t c;
-    uint64_t cross;
-    if (len == 0u) {
-        return (uint32_t)sl_isqrt64((uint64_t)(wx * wx + wy * wy));
-    }
-    c = wx * dy - wy * dx;
-    cross = (uint64_t)(c < 0 ? -c : c);
     /* A 32-bit division (no 64-bit division helper on small cores): drop the
      * same low bits of both; the quotient keeps well under 1/256 px of error
      * for any chord longer than a pixel. */
@@ -107,21 +98,38 @@ static inline uint32_t line_dist(int32_t ax, int32_t ay, int32_t dx, int32_t dy,
 
 uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py)
 {
-    return line_dist(ax, ay, dx, dy, px, py);
+    const int64_t wx = (int64_t)px - ax, wy = (int64_t)py - ay;
+    uint64_t len = sl_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    int64_t c;
+    uint64_t cross;
+    if (len == 0u) {
+        return (uint32_t)sl_isqrt64((uint64_t)(wx * wx + wy * wy));
+    }
+    c = wx * dy - wy * dx;
+    cross = (uint64_t)(c < 0 ? -c : c);
+    return sl_div_q8(cross, len);
 }
 
-static uint32_t max_dev_q8(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
-                           int32_t y0, int32_t x1, int32_t y1)
+
+uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
+                    int32_t x1, int32_t y1)
 {
-    uint32_t i, best = 0u;
+    const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
+    const uint64_t len = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
+    uint64_t best = 0u;
+    uint32_t i;
+    /* The largest cross product first, one square root and one division at the end. */
     for (i = 0; i < n; i++) {
-        const uint32_t d =
-            sl_line_dist_q8(x0, y0, x1 - x0, y1 - y0, sl_q8(p[i].x, level), sl_q8(p[i].y, level));
-        if (d > best) {
-            best = d;
-        }
+        const int64_t wx = (int64_t)sl_q8(p[i].x, level) - x0;
+        const int64_t wy = (int64_t)sl_q8(p[i].y, level) - y0;
+        const int64_t c = len == 0u ? wx * wx + wy * wy : wx * dy - wy * dx;
+        const uint64_t a = (uint64_t)(c < 0 ? -c : c);
+        best = a > best ? a : best;
     }
-    return best;
+    if (len == 0u) {
+        return (uint32_t)sl_isqrt64(best);
+    }
+    return sl_div_q8(best, len);
 }
 
 /* A curve bends away from its chord by more than the threshold and by more
@@ -222,12 +230,12 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
     s->y0 = sl_q8(p[0].y, level);
     s->x1 = sl_q8(p[n - 1u].x, level);
     s->y1 = sl_q8(p[n - 1u].y, level);
-    s->max_dev = max_dev_q8(p, n, level, s->x0, s->y0, s->x1, s->y1);
+    s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
     s->kind = (uint8_t)(sl_is_curve(s->x0, s->y0, s->x1, s->y1, s->max_dev, thr)
                             ? SYMLINE_KIND_CURVE
                             : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
-        s->max_dev = max_dev_q8(p, n, level, s->x0, s->y0, s->x1, s->y1);
+        s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
     }
     s->level = (uint8_t)level;
     s->reserved = 0u;
@@ -235,42 +243,43 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
 
 /* 1 when (px, py) lies within tol of the segment a-b (all Q8). */
 static inline int near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px, int32_t py,
-                      int32_t tol)
+                             int32_t tol)
 {
-    int64_t dx, dy, wx, wy, t, dd;
+    /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
+    int32_t dx, dy, wx, wy, t2;
+    int64_t t, dd, c;
     if ((px < ax - tol && px < bx - tol) || (px > ax + tol && px > bx + tol) ||
         (py < ay - tol && py < by - tol) || (py > ay + tol && py > by + tol)) {
         return 0;
     }
-    dx = (int64_t)bx - ax;
-    dy = (int64_t)by - ay;
-    wx = (int64_t)px - ax;
-    wy = (int64_t)py - ay;
-    t = wx * dx + wy * dy;
-    dd = dx * dx + dy * dy;
+    dx = bx - ax;
+    dy = by - ay;
+    wx = px - ax;
+    wy = py - ay;
+    t = (int64_t)wx * dx + (int64_t)wy * dy;
+    dd = (int64_t)dx * dx + (int64_t)dy * dy;
     if (t <= 0 || dd == 0) {
-        return wx * wx + wy * wy <= (int64_t)tol * tol;
+        return (int64_t)wx * wx + (int64_t)wy * wy <= (int64_t)tol * tol;
     }
     if (t >= dd) {
-        const int64_t ex = (int64_t)px - bx, ey = (int64_t)py - by;
-        return ex * ex + ey * ey <= (int64_t)tol * tol;
+        const int32_t ex = px - bx, ey = py - by;
+        return (int64_t)ex * ex + (int64_t)ey * ey <= (int64_t)tol * tol;
     }
     /* Inside the chord: |w x d| <= tol |d|, squared. Coarsen all lengths alike
      * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
      * no square root and no division, so this stays cheap and shallow. */
-    {
-        int64_t t2 = tol;
-        while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 || wx > 32767 ||
-               wx < -32767 || wy > 32767 || wy < -32767 || t2 > 32767) {
-            dx /= 2;
-            dy /= 2;
-            wx /= 2;
-            wy /= 2;
-            t2 /= 2;
-        }
-        t = wx * dy - wy * dx;
-        return (uint64_t)(t * t) <= (uint64_t)(t2 * t2) * (uint64_t)(dx * dx + dy * dy);
+    t2 = tol;
+    while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 || wx > 32767 ||
+           wx < -32767 || wy > 32767 || wy < -32767 || t2 > 32767) {
+        dx /= 2;
+        dy /= 2;
+        wx /= 2;
+        wy /= 2;
+        t2 /= 2;
     }
+    c = (int64_t)wx * dy - (int64_t)wy * dx;
+    return (uint64_t)(c * c) <=
+           (uint64_t)((int64_t)t2 * t2) * (uint64_t)((int64_t)dx * dx + (int64_t)dy * dy);
 }
 
 /* Curves are followed through every SL_POLY_STEP-th point. */
