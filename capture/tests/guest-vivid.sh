@@ -176,7 +176,8 @@ recovers() {
 check after-errors-ok recovers
 fatal_error() {
     background /dev/video1 "Inject Fatal Streaming Error" TERM
-    [ $rc -eq 1 ] && grep -q "device lost during VIDIOC_DQBUF" /tmp/bg.err
+    # vb2 fails the next DQBUF or QBUF with EIO, whichever comes first.
+    [ $rc -eq 1 ] && grep -q "device lost during VIDIOC_D*Q*BUF (Input/output error); stopping" /tmp/bg.err
 }
 check fatal-streaming-error fatal_error
 disconnect() {
