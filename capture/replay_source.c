@@ -1,6 +1,6 @@
 /*
- * Replay source: reads one file per frame with imgio, on demand, so a long
- * recording needs the memory of one frame.
+ * Replay source: reads one file per frame with imgio (or one frame of a Y4M
+ * stream), on demand, so a long recording needs the memory of one frame.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "replay_source.h"
@@ -15,6 +15,7 @@
 #include <time.h>
 
 #include "imgio.h"
+#include "y4m_reader.h"
 
 typedef struct replay {
     char **files;
@@ -26,7 +27,15 @@ typedef struct replay {
     imgio_gray img;     /* the frame currently handed out */
     int holding;
     uint64_t number;
+    y4m_reader *y4m;    /* set when replaying a .y4m stream instead of image files */
+    uint32_t y4m_index; /* frame index within the stream */
 } replay;
+
+static int has_suffix(const char *name, const char *suffix)
+{
+    size_t n = strlen(name), k = strlen(suffix);
+    return n > k && strcasecmp(name + n - k, suffix) == 0;
+}
 
 static int has_image_suffix(const char *name)
 {
@@ -149,6 +158,41 @@ static void replay_release(capsrc *src)
     }
 }
 
+/* The next frame of a Y4M stream (pacing already done by the caller). */
+static capsrc_result y4m_next(capsrc *src, replay *r, capsrc_frame *frame)
+{
+    char err[512];
+    const uint8_t *luma = NULL;
+    const int64_t t0 = capsrc_now_ns();
+    int got = y4m_read(r->y4m, &luma, err, sizeof err);
+    if (got == 0 && r->loop && r->y4m_index > 0) {
+        if (y4m_rewind(r->y4m) != 0) {
+            capsrc_set_error(src, "replay: cannot rewind the Y4M stream");
+            return CAPSRC_ERROR;
+        }
+        r->y4m_index = 0;
+        got = y4m_read(r->y4m, &luma, err, sizeof err);
+    }
+    if (got == 0) {
+        return CAPSRC_END;
+    }
+    if (got < 0) {
+        capsrc_set_error(src, "replay: %s", err);
+        return CAPSRC_ERROR;
+    }
+    frame->luma = luma;
+    frame->width = y4m_width(r->y4m);
+    frame->height = y4m_height(r->y4m);
+    frame->stride = frame->width;
+    frame->number = r->number++;
+    frame->sequence = r->y4m_index++;
+    frame->timestamp_ns = t0;
+    frame->skipped = 0;
+    frame->convert_ns = 0;
+    src->stats.delivered++;
+    return CAPSRC_OK;
+}
+
 static capsrc_result replay_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
 {
     replay *r = src->impl;
@@ -156,7 +200,7 @@ static capsrc_result replay_next(capsrc *src, capsrc_frame *frame, int timeout_m
     const char *file;
     int64_t t0;
     replay_release(src);
-    if (r->next >= r->count) {
+    if (r->y4m == NULL && r->next >= r->count) {
         if (!r->loop) {
             return CAPSRC_END;
         }
@@ -185,6 +229,9 @@ static capsrc_result replay_next(capsrc *src, capsrc_frame *frame, int timeout_m
             r->due_ns = capsrc_now_ns() + r->period_ns;
         }
     }
+    if (r->y4m != NULL) {
+        return y4m_next(src, r, frame);
+    }
     file = r->files[r->next];
     t0 = capsrc_now_ns();
     if (imgio_read_gray(file, &r->img, err, sizeof err) != 0) {
@@ -209,6 +256,7 @@ static capsrc_result replay_next(capsrc *src, capsrc_frame *frame, int timeout_m
 static void replay_free(replay *r)
 {
     size_t i;
+    y4m_close(r->y4m);
     for (i = 0; i < r->count; i++) {
         free(r->files[i]);
     }
@@ -240,7 +288,13 @@ capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen)
         replay_free(r);
         return NULL;
     }
-    if (S_ISDIR(st.st_mode)) {
+    if (has_suffix(opt->path, ".y4m")) {
+        r->y4m = y4m_open(opt->path, err, errlen);
+        if (r->y4m == NULL) {
+            replay_free(r);
+            return NULL;
+        }
+    } else if (S_ISDIR(st.st_mode)) {
         if (scan_dir(r, opt->path, err, errlen) != 0) {
             replay_free(r);
             return NULL;
@@ -256,7 +310,7 @@ capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen)
         replay_free(r);
         return NULL;
     }
-    if (r->count == 0) {
+    if (r->y4m == NULL && r->count == 0) {
         snprintf(err, errlen, "%s: no .pgm or .png frames found", opt->path);
         replay_free(r);
         return NULL;
@@ -271,7 +325,12 @@ capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen)
         replay_free(r);
         return NULL;
     }
-    snprintf(src->description, sizeof src->description, "replay %s: %zu frame file%s%s", opt->path,
-             r->count, r->count == 1 ? "" : "s", r->loop ? ", looping" : "");
+    if (r->y4m != NULL) {
+        snprintf(src->description, sizeof src->description, "replay %s: YUV4MPEG2 %ux%u%s", opt->path,
+                 y4m_width(r->y4m), y4m_height(r->y4m), r->loop ? ", looping" : "");
+    } else {
+        snprintf(src->description, sizeof src->description, "replay %s: %zu frame file%s%s", opt->path,
+                 r->count, r->count == 1 ? "" : "s", r->loop ? ", looping" : "");
+    }
     return src;
 }

@@ -9,8 +9,9 @@
 
 typedef struct replay_options {
     const char *path; /* a directory (its *.pgm / *.png files in name order), one image
-                         file, or a text file listing one image path per line (relative
-                         paths are taken from the list's folder; '#' starts a comment) */
+                         file, a YUV4MPEG2 stream (*.y4m, luma of each frame), or a text
+                         file listing one image path per line (relative paths are taken
+                         from the list's folder; '#' starts a comment) */
     uint32_t fps_num; /* pace delivery at fps_num/fps_den frames per second; 0 = as fast as read */
     uint32_t fps_den;
     int loop;         /* 1 = start over after the last frame */

@@ -97,8 +97,8 @@ static void usage(FILE *f)
           "  --camera ID|INDEX      libcamera camera, by id or by index (0 = first)\n"
           "  --list-cameras         print the cameras libcamera sees, then exit\n"
 #endif
-          "  --replay PATH          folder of .pgm/.png frames (name order), one image, or a\n"
-          "                         text file listing one image path per line\n"
+          "  --replay PATH          folder of .pgm/.png frames (name order), one image, a\n"
+          "                         .y4m stream, or a text file listing one image path per line\n"
           "\n"
           "Capture:\n"
           "  --frames N             stop after N frames (0 = until stopped; default)\n"

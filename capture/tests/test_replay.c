@@ -62,7 +62,7 @@ static int setup(void **state)
 
 static int teardown(void **state)
 {
-    const char *names[] = {"a.pgm", "b.pgm", "c.pgm", "notes.txt", "list.txt", "empty.txt"};
+    const char *names[] = {"a.pgm", "b.pgm", "c.pgm", "notes.txt", "list.txt", "empty.txt", "clip.y4m"};
     char path[512];
     size_t i;
     (void)state;
@@ -198,6 +198,85 @@ static void test_errors(void **state)
     capsrc_close(NULL);
 }
 
+/* A 4x2 Y4M stream: frame k has luma 100+k, chroma 128. */
+static void write_y4m(const char *name, const char *colour, int frames, int chroma, int truncate_last)
+{
+    char path[512];
+    FILE *f;
+    int k, i;
+    path_in(path, sizeof path, name);
+    f = fopen(path, "wb");
+    assert_non_null(f);
+    fprintf(f, "YUV4MPEG2 W4 H2 F30:1 Ip A1:1%s%s\n", colour[0] ? " C" : "", colour);
+    for (k = 0; k < frames; k++) {
+        fputs(k == 1 ? "FRAME Ixyz\n" : "FRAME\n", f);
+        for (i = 0; i < 8 - (truncate_last && k == frames - 1 ? 3 : 0); i++) fputc(100 + k, f);
+        for (i = 0; i < chroma && !(truncate_last && k == frames - 1); i++) fputc(128, f);
+    }
+    fclose(f);
+}
+
+static void expect_y4m_frame(capsrc *src, uint64_t number, uint8_t value)
+{
+    capsrc_frame f;
+    uint32_t i;
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_OK);
+    assert_int_equal(f.number, number);
+    assert_int_equal(f.width, 4);
+    assert_int_equal(f.height, 2);
+    for (i = 0; i < 8; i++) {
+        assert_int_equal(f.luma[i], value);
+    }
+}
+
+static void test_y4m(void **state)
+{
+    char path[512], err[256];
+    capsrc_frame f;
+    replay_options o;
+    capsrc *src;
+    (void)state;
+    path_in(path, sizeof path, "clip.y4m");
+
+    write_y4m("clip.y4m", "", 3, 4, 0); /* no C tag: 4:2:0 */
+    src = open_replay(path, 0);
+    assert_non_null(strstr(src->description, "YUV4MPEG2 4x2"));
+    expect_y4m_frame(src, 0, 100);
+    expect_y4m_frame(src, 1, 101);
+    expect_y4m_frame(src, 2, 102);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_END);
+    capsrc_close(src);
+
+    write_y4m("clip.y4m", "mono", 2, 0, 0);
+    src = open_replay(path, 1);
+    expect_y4m_frame(src, 0, 100);
+    expect_y4m_frame(src, 1, 101);
+    expect_y4m_frame(src, 2, 100); /* looped */
+    capsrc_close(src);
+
+    write_y4m("clip.y4m", "444", 2, 16, 0);
+    src = open_replay(path, 0);
+    expect_y4m_frame(src, 0, 100);
+    expect_y4m_frame(src, 1, 101);
+    capsrc_close(src);
+
+    write_y4m("clip.y4m", "420jpeg", 2, 4, 1);
+    src = open_replay(path, 0);
+    expect_y4m_frame(src, 0, 100);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_ERROR);
+    assert_non_null(strstr(capsrc_error(src), "frame 1 is truncated"));
+    capsrc_close(src);
+
+    memset(&o, 0, sizeof o);
+    o.path = path;
+    write_y4m("clip.y4m", "420p10", 1, 8, 0);
+    assert_null(replay_source_open(&o, err, sizeof err));
+    assert_non_null(strstr(err, "C420p10 not supported"));
+    write_text("clip.y4m", "P5\n4 2\n255\n");
+    assert_null(replay_source_open(&o, err, sizeof err));
+    assert_non_null(strstr(err, "not a YUV4MPEG2 file"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -206,6 +285,7 @@ int main(void)
         cmocka_unit_test(test_list_file),
         cmocka_unit_test(test_single_file),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_y4m),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -1,0 +1,153 @@
+/*
+ * YUV4MPEG2 reader: header "YUV4MPEG2 W<w> H<h> [C<tag>] ...", then per frame
+ * "FRAME[ params]\n" followed by the planes.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "y4m_reader.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct y4m_reader {
+    FILE *f;
+    char path[256];
+    uint32_t width, height;
+    uint64_t chroma;   /* bytes after the luma plane of each frame */
+    long data_start;   /* file offset of the first FRAME */
+    uint8_t *luma;
+    uint64_t frames;   /* frames read since the start (for messages) */
+};
+
+/* Reads one header line (without '\n') of at most cap-1 bytes; -1 at EOF or when too long. */
+static int read_line(FILE *f, char *buf, size_t cap)
+{
+    size_t n = 0;
+    int c;
+    while ((c = fgetc(f)) != EOF && c != '\n') {
+        if (n + 1 >= cap) {
+            return -1;
+        }
+        buf[n++] = (char)c;
+    }
+    buf[n] = '\0';
+    return (c == EOF && n == 0) ? -1 : (c == EOF ? -2 : 0);
+}
+
+static uint64_t chroma_bytes(const char *tag, uint32_t w, uint32_t h)
+{
+    const uint64_t cw = (w + 1u) / 2u, ch = (h + 1u) / 2u;
+    if (strcmp(tag, "420jpeg") == 0 || strcmp(tag, "420paldv") == 0 || strcmp(tag, "420mpeg2") == 0 ||
+        strcmp(tag, "420") == 0) {
+        return 2u * cw * ch;
+    }
+    if (strcmp(tag, "422") == 0) {
+        return 2u * cw * h;
+    }
+    if (strcmp(tag, "444") == 0) {
+        return 2u * (uint64_t)w * h;
+    }
+    if (strcmp(tag, "mono") == 0) {
+        return 0;
+    }
+    return UINT64_MAX;
+}
+
+y4m_reader *y4m_open(const char *path, char *err, size_t errlen)
+{
+    char line[512], tag[32] = "420jpeg";
+    char *tok, *save = NULL;
+    y4m_reader *r = calloc(1, sizeof *r);
+    if (r == NULL) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    snprintf(r->path, sizeof r->path, "%s", path);
+    r->f = fopen(path, "rb");
+    if (r->f == NULL) {
+        snprintf(err, errlen, "%s: cannot open", path);
+        free(r);
+        return NULL;
+    }
+    if (read_line(r->f, line, sizeof line) != 0 || strncmp(line, "YUV4MPEG2 ", 10) != 0) {
+        snprintf(err, errlen, "%s: not a YUV4MPEG2 file", path);
+        y4m_close(r);
+        return NULL;
+    }
+    for (tok = strtok_r(line + 10, " ", &save); tok != NULL; tok = strtok_r(NULL, " ", &save)) {
+        if (tok[0] == 'W') {
+            r->width = (uint32_t)strtoul(tok + 1, NULL, 10);
+        } else if (tok[0] == 'H') {
+            r->height = (uint32_t)strtoul(tok + 1, NULL, 10);
+        } else if (tok[0] == 'C') {
+            snprintf(tag, sizeof tag, "%s", tok + 1);
+        }
+    }
+    if (r->width == 0 || r->height == 0 || r->width > 65535u || r->height > 65535u) {
+        snprintf(err, errlen, "%s: bad frame size %ux%u in the header", path, r->width, r->height);
+        y4m_close(r);
+        return NULL;
+    }
+    r->chroma = chroma_bytes(tag, r->width, r->height);
+    if (r->chroma == UINT64_MAX) {
+        snprintf(err, errlen, "%s: colour space C%s not supported (8-bit 420, 422, 444 or mono)", path, tag);
+        y4m_close(r);
+        return NULL;
+    }
+    r->data_start = ftell(r->f);
+    r->luma = malloc((size_t)r->width * r->height);
+    if (r->luma == NULL) {
+        snprintf(err, errlen, "out of memory");
+        y4m_close(r);
+        return NULL;
+    }
+    return r;
+}
+
+uint32_t y4m_width(const y4m_reader *r)
+{
+    return r->width;
+}
+
+uint32_t y4m_height(const y4m_reader *r)
+{
+    return r->height;
+}
+
+int y4m_read(y4m_reader *r, const uint8_t **luma, char *err, size_t errlen)
+{
+    char line[512];
+    const size_t n = (size_t)r->width * r->height;
+    int lr = read_line(r->f, line, sizeof line);
+    if (lr == -1 && feof(r->f)) {
+        return 0;
+    }
+    if (lr != 0 || strncmp(line, "FRAME", 5) != 0 || (line[5] != '\0' && line[5] != ' ')) {
+        snprintf(err, errlen, "%s: frame %llu: expected a FRAME header", r->path, (unsigned long long)r->frames);
+        return -1;
+    }
+    if (fread(r->luma, 1, n, r->f) != n || fseek(r->f, (long)r->chroma, SEEK_CUR) != 0) {
+        snprintf(err, errlen, "%s: frame %llu is truncated", r->path, (unsigned long long)r->frames);
+        return -1;
+    }
+    r->frames++;
+    *luma = r->luma;
+    return 1;
+}
+
+int y4m_rewind(y4m_reader *r)
+{
+    r->frames = 0;
+    return fseek(r->f, r->data_start, SEEK_SET) == 0 ? 0 : -1;
+}
+
+void y4m_close(y4m_reader *r)
+{
+    if (r != NULL) {
+        if (r->f != NULL) {
+            fclose(r->f);
+        }
+        free(r->luma);
+        free(r);
+    }
+}
