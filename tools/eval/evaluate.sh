@@ -13,7 +13,7 @@
 #   --out DIR        work folder for renders and detections (default: REPO/out/eval)
 #   --filter NAME    a column to compare: "default" (no --filter option) or a value of
 #                    `symline lines --filter`; repeat for several (default: paper, default)
-#   --count N        images per rendered set and size (default 10)
+#   --count N        images per rendered set and size (default 20)
 #   --seed N         renderer seed (default 2026)
 #   --sizes "WxH .." rendered sizes (default "320x240 640x480")
 #   --opts "..."     extra options for every `symline lines` run
@@ -32,7 +32,7 @@ REPO=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$REPO/build
 OUT=$REPO/out/eval
 FILTERS=
-COUNT=10
+COUNT=20
 SEED=2026
 SIZES="320x240 640x480"
 OPTS=
