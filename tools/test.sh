@@ -1,27 +1,48 @@
 #!/bin/sh
-# The whole test suite, as CI runs it: host build + every CTest test, the same
-# suite under AddressSanitizer + UndefinedBehaviorSanitizer, and the firmware
-# and capture integration steps when their scripts are present in this checkout.
-# Installs what it needs (apt-get, as root) when missing.
+# The whole test suite, as CI runs it:
+#   1. host build and every CTest test (preset default);
+#   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (preset asan);
+#   3. firmware checks: cross builds, no float / no malloc on the symbol table,
+#      stack and size budgets, static analysis, tests on an emulated Cortex-M4;
+#   4. the capture integration test on real kernel drivers (vivid, vimc) under qemu.
+# Installs what it needs (apt-get, as root) when missing. Every step runs even
+# when an earlier one failed; the exit status is non-zero if any failed.
 #   tools/test.sh          everything
-#   tools/test.sh --host   host build and CTest only (fast)
-set -eu
+#   tools/test.sh --host   step 1 only (fast)
+set -u
 cd "$(dirname "$0")/.."
 mode=${1:-all}
 jobs=$(nproc 2>/dev/null || echo 2)
+failed=""
 
-step() { printf '\n==== %s ====\n' "$*"; }
+step() { printf '\n==== %s ====\n' "$1"; }
+record() { [ "$1" -eq 0 ] || failed="$failed
+  - $2"; }
 
-tools/deps.sh test
+tools/deps.sh test || exit 1
 
-step "host build and tests (preset default)"
-cmake --preset default >/dev/null
-cmake --build --preset default -j "$jobs"
-ctest --preset default -j "$jobs" -LE integration
+step "1. host build and tests (preset default)"
+{ cmake --preset default >/dev/null && cmake --build --preset default -j "$jobs" &&
+    ctest --preset default -j "$jobs"; }
+record $? "host build and tests"
 
-[ "$mode" = "--host" ] && exit 0
+if [ "$mode" != "--host" ]; then
+    step "2. sanitizers (preset asan: ASan + UBSan)"
+    { cmake --preset asan >/dev/null && cmake --build --preset asan -j "$jobs" &&
+        ctest --preset asan -j "$jobs"; }
+    record $? "tests under ASan + UBSan"
 
-step "sanitizers (preset asan: ASan + UBSan)"
-cmake --preset asan >/dev/null
-cmake --build --preset asan -j "$jobs"
-ctest --preset asan -j "$jobs"
+    step "3. firmware (cross builds, symbols, stack, size, static analysis, emulated Cortex-M4)"
+    sh tools/firmware/check.sh
+    record $? "firmware checks"
+
+    step "4. capture on real kernel drivers (vivid, vimc under qemu)"
+    sh capture/tests/run-vivid.sh --cache build/capture-cache
+    record $? "capture integration"
+fi
+
+if [ -n "$failed" ]; then
+    printf '\ntools/test.sh: FAILED:%s\n' "$failed"
+    exit 1
+fi
+printf '\ntools/test.sh: every step passed\n'
