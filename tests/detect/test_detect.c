@@ -478,6 +478,59 @@ static void workspace_figures(void **state)
     }
 }
 
+/* A line seen by both axes (45 degrees) or at several scales (wide) is reported once. */
+static uint32_t count_segments_on(const uint8_t *px, uint32_t w, uint32_t h)
+{
+    symline_image img;
+    symline_config cfg;
+    symline_segment segs[64];
+    symline_result r;
+    size_t wsn;
+    void *ws;
+    uint32_t n;
+    img.width = w;
+    img.height = h;
+    img.stride = w;
+    img.data = px;
+    symline_config_default(&cfg);
+    wsn = symline_detect_workspace_size(w, h, &cfg);
+    ws = malloc(wsn);
+    r.segments = segs;
+    r.segment_cap = 64;
+    r.points = (symline_point *)malloc(100000u * sizeof(symline_point));
+    r.point_cap = 100000;
+    assert_int_equal(symline_detect(&img, &cfg, ws, wsn, &r), SYMLINE_OK);
+    assert_int_equal(r.truncated, 0);
+    n = r.segment_count;
+    free(ws);
+    free(r.points);
+    return n;
+}
+
+static void reported_once(void **state)
+{
+    const uint32_t w = 320, h = 240;
+    uint8_t *px = (uint8_t *)malloc((size_t)w * h);
+    uint32_t x, y, s = 777u;
+    (void)state;
+    /* A 3 px line at 45 degrees on a noisy carpet: both axes see it. */
+    for (y = 0; y < h; y++) {
+        for (x = 0; x < w; x++) {
+            const int32_t d = (int32_t)x - (int32_t)y - 40;
+            px[y * w + x] = (uint8_t)((d >= -1 && d <= 1) ? 200u : 70u + tu_rand(&s) % 10u);
+        }
+    }
+    assert_int_equal(count_segments_on(px, w, h), 1);
+    /* A 14 px wide horizontal line: found at a coarse scale only, once. */
+    for (y = 0; y < h; y++) {
+        for (x = 0; x < w; x++) {
+            px[y * w + x] = (uint8_t)((y >= 100u && y < 114u) ? 210u : 70u + tu_rand(&s) % 10u);
+        }
+    }
+    assert_int_equal(count_segments_on(px, w, h), 1);
+    free(px);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -486,6 +539,7 @@ int main(void)
         cmocka_unit_test(truncation_never_overflows),
         cmocka_unit_test(stride_and_workspace_do_not_matter),
         cmocka_unit_test(workspace_figures),
+        cmocka_unit_test(reported_once),
         cmocka_unit_test(strip_identity_synthetic),
         cmocka_unit_test(strip_identity_real),
     };
