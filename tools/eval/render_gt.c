@@ -225,6 +225,41 @@ static void emit_runs(const rd_scene *s, const walk *w, int circle, ev_paths *li
     }
 }
 
+/* Keeps the part of [*t0, *t1] where a + b*t >= 0. */
+static void clip_affine(double a, double b, double *t0, double *t1)
+{
+    if (b == 0.0) {
+        if (a < 0.0) {
+            *t1 = *t0 - 1.0;
+        }
+    } else if (b > 0.0) {
+        *t0 = fmax(*t0, -a / b);
+    } else {
+        *t1 = fmin(*t1, -a / b);
+    }
+}
+
+/* The parameter interval of a straight field line that projects into the image (in
+   front of the camera): the frustum is convex, so it is one interval; every bound is
+   affine in the parameter. Empty when *t0 > *t1. */
+static void frustum_interval(const rd_camera *cam, const curve *c, double *t0, double *t1)
+{
+    /* d(t) = P(t) - pos = d0 + t*dd; camera coordinates are dot products with the axes. */
+    double d0x = c->x0 - cam->pos.x, d0y = c->y0 - cam->pos.y, d0z = -cam->pos.z;
+    double z0 = d0x * cam->fwd.x + d0y * cam->fwd.y + d0z * cam->fwd.z;
+    double zb = c->dx * cam->fwd.x + c->dy * cam->fwd.y;
+    double x0 = d0x * cam->right.x + d0y * cam->right.y + d0z * cam->right.z;
+    double xb = c->dx * cam->right.x + c->dy * cam->right.y;
+    double y0 = d0x * cam->down.x + d0y * cam->down.y + d0z * cam->down.z;
+    double yb = c->dx * cam->down.x + c->dy * cam->down.y;
+    double umax = cam->width - 1 - cam->cx, vmax = cam->height - 1 - cam->cy;
+    clip_affine(z0 - 1e-6, zb, t0, t1);                                 /* in front */
+    clip_affine(cam->cx * z0 + cam->f * x0, cam->cx * zb + cam->f * xb, t0, t1); /* u >= 0 */
+    clip_affine(umax * z0 - cam->f * x0, umax * zb - cam->f * xb, t0, t1);       /* u <= W-1 */
+    clip_affine(cam->cy * z0 + cam->f * y0, cam->cy * zb + cam->f * yb, t0, t1); /* v >= 0 */
+    clip_affine(vmax * z0 - cam->f * y0, vmax * zb - cam->f * yb, t0, t1);       /* v <= H-1 */
+}
+
 void rd_ground_truth(const rd_scene *s, ev_paths *lines, ev_paths *arcs, ev_paths *dontcare)
 {
     walk w = {NULL, 0, 0};
@@ -237,9 +272,17 @@ void rd_ground_truth(const rd_scene *s, ev_paths *lines, ev_paths *arcs, ev_path
         c.len = hypot(x1 - c.x0, y1 - c.y0);
         c.dx = (x1 - c.x0) / c.len;
         c.dy = (y1 - c.y0) / c.len;
-        w.n = 0;
-        walk_curve(s, &c, 0.0, c.len, &w);
-        emit_runs(s, &w, 0, lines, arcs, dontcare);
+        {
+            /* Only the part in the image can be visible: walk just that. */
+            double t0 = 0.0, t1 = c.len;
+            frustum_interval(&s->cam, &c, &t0, &t1);
+            if (t0 >= t1) {
+                continue;
+            }
+            w.n = 0;
+            walk_curve(s, &c, t0, t1, &w);
+            emit_runs(s, &w, 0, lines, arcs, dontcare);
+        }
     }
     /* The circle is closed: start the walk at a class border so no run wraps around. */
     c.id = RD_NSEG;

@@ -36,13 +36,23 @@ static double vnoise(double x, double y, uint64_t seed)
 static int painted(double X, double Y)
 {
     int i;
-    double r = hypot(X, Y);
+    double r;
+    /* Every line lies within the touch and goal lines' outer edges. */
+    if (fabs(X) > 4.5 + RD_LINE_HALF || fabs(Y) > 3.0 + RD_LINE_HALF) {
+        return 0;
+    }
+    r = hypot(X, Y);
     if (fabs(r - RD_CIRCLE_R) <= RD_LINE_HALF) {
         return 1;
     }
     for (i = 0; i < RD_NSEG; i++) {
         double x0, y0, x1, y1, dx, dy, len, t, d;
         rd_field_segment(i, &x0, &y0, &x1, &y1);
+        /* Cheap reject: outside the segment's box grown by half a line width. */
+        if (X < fmin(x0, x1) - RD_LINE_HALF || X > fmax(x0, x1) + RD_LINE_HALF ||
+            Y < fmin(y0, y1) - RD_LINE_HALF || Y > fmax(y0, y1) + RD_LINE_HALF) {
+            continue;
+        }
         dx = x1 - x0;
         dy = y1 - y0;
         len = hypot(dx, dy);
