@@ -5,8 +5,11 @@
  *   capture-check press DEVICE NAME    press the button control called NAME
  *                                      (vivid's error injection controls)
  *   capture-check set DEVICE NAME V    set the integer or menu control NAME to V
- *   capture-check bars PGM [REF.pgm]   the frame shows vivid's 75% colour bars;
- *                                      with REF: same luma as REF within 2
+ *   capture-check bars PGM [REF.pgm] [=Y0,...,Y7]
+ *                                      the frame shows vivid's 75% colour bars
+ *                                      (eight uniform bars, luma falling left to
+ *                                      right); with REF: same luma as REF within 2;
+ *                                      with =Y0,...: each bar's luma within 3 of Yi
  *   capture-check json FILE N          FILE holds N lines, each a well-formed JSON
  *                                      object with the per-frame keys, frame
  *                                      numbers 0..N-1 and rising sequence numbers
@@ -72,12 +75,24 @@ static int set_control(const char *dev, const char *name, int button, int32_t va
  * bar. The on-screen text sits at the top: rows from 3/4 of the height down
  * are pure bars.
  */
-static int bars(const char *path, const char *ref)
+static int bars(const char *path, const char *ref, const char *expect)
 {
+    long want[8];
     imgio_gray img, rimg;
     char err[512];
     uint32_t b, y, x;
     int prev = 256, rc = 0;
+    if (expect != NULL) {
+        char *end = NULL;
+        for (b = 0; b < 8; b++) {
+            want[b] = strtol(expect, &end, 10);
+            if (end == expect || (b < 7 && *end != ',') || (b == 7 && *end != '\0')) {
+                return fail("bad expected bar list '%s'%ld", expect, 0);
+            }
+            expect = end + 1;
+        }
+        expect = "";
+    }
     if (imgio_read_gray(path, &img, err, sizeof err) != 0) {
         return fail("%s%ld", err, 0);
     }
@@ -114,6 +129,10 @@ static int bars(const char *path, const char *ref)
         }
         if (rc == 0 && hi - lo > 2) {
             fprintf(stderr, "capture-check: %s: bar %u not uniform (luma %d..%d)\n", path, b, lo, hi);
+            rc = 1;
+        }
+        if (rc == 0 && expect != NULL && (lo < want[b] - 3 || hi > want[b] + 3)) {
+            fprintf(stderr, "capture-check: %s: bar %u luma %d..%d, expected %ld\n", path, b, lo, hi, want[b]);
             rc = 1;
         }
         if (rc == 0 && lo >= prev) {
@@ -175,12 +194,21 @@ int main(int argc, char **argv)
     if (argc == 5 && strcmp(argv[1], "set") == 0) {
         return set_control(argv[2], argv[3], 0, (int32_t)strtol(argv[4], NULL, 10));
     }
-    if ((argc == 3 || argc == 4) && strcmp(argv[1], "bars") == 0) {
-        return bars(argv[2], argc == 4 ? argv[3] : NULL);
+    if (argc >= 3 && argc <= 5 && strcmp(argv[1], "bars") == 0) {
+        const char *ref = NULL, *expect = NULL;
+        int i;
+        for (i = 3; i < argc; i++) {
+            if (argv[i][0] == '=') {
+                expect = argv[i] + 1;
+            } else {
+                ref = argv[i];
+            }
+        }
+        return bars(argv[2], ref, expect);
     }
     if (argc == 4 && strcmp(argv[1], "json") == 0) {
         return json(argv[2], argv[3]);
     }
-    fputs("usage: capture-check press DEVICE NAME | set DEVICE NAME VALUE | bars PGM [REF.pgm] | json FILE N\n", stderr);
+    fputs("usage: capture-check press DEVICE NAME | set DEVICE NAME VALUE | bars PGM [REF.pgm] [=Y0,...,Y7] | json FILE N\n", stderr);
     return 2;
 }

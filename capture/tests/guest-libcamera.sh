@@ -19,7 +19,7 @@ lc_list() {
 check libcamera-list-vimc lc_list
 
 lc_capture() {
-    fmt=$1
+    local fmt=$1 out
     out=/tmp/lc-$fmt
     symline-capture-lc --summary-every 0 --timeout 10000 --camera 0 --format "$fmt" --width 640 --height 480 \
         --frames 5 --all-frames --record 4 "$out" >"$out.json" 2>"$out.err"

@@ -12,7 +12,7 @@ mount -t tmpfs tmpfs /tmp
 pass=0
 fail=0
 check() {
-    name=$1
+    local name=$1
     shift
     if "$@" >/tmp/check.log 2>&1; then
         echo "SYMLINE-CHECK $name PASS"
@@ -41,32 +41,44 @@ done
 
 cap() { symline-capture --summary-every 0 --timeout 3000 "$@"; }
 
-# One format: 5 frames arrive, JSON well-formed, luma shows the colour bars
-# and (for all but the reference) matches the GREY frame.
+# One format: 5 frames arrive, JSON well-formed, the luma shows vivid's 75%
+# colour bars at the expected levels and matches the reference capture of the
+# same kind pixel for pixel (within 2).
 format_check() {
-    dev=$1; fmt=$2; ref=$3
+    local dev=$1 fmt=$2 expect=$3 ref=$4 out
     out=/tmp/$fmt-${dev#/dev/}
     cap --device "$dev" --format "$fmt" --width 640 --height 360 --frames 5 --all-frames \
         --record 4 "$out" >"$out.json" 2>"$out.err" || { cat "$out.err"; return 1; }
     cat "$out.err"
     grep -q " $fmt 640x360 " "$out.err" || { echo "format $fmt 640x360 not reported"; return 1; }
     capture-check json "$out.json" 5 || return 1
-    capture-check bars "$out/frame000004.pgm" $ref
+    capture-check bars "$out/frame000004.pgm" "=$expect" $ref
 }
-ref=/tmp/GREY-video0/frame000004.pgm
-check format-GREY format_check /dev/video0 GREY
-for f in NV12 NV21 YU12 YV12 NV16 NV61 422P YUYV YVYU UYVY VYUY; do
-    check format-$f format_check /dev/video0 $f $ref
+# Expected bar levels, from the bars' R, G, B in {0, 190} (75% of full scale):
+# vivid's GREY is full-range BT.709 luma; its YUV formats are limited-range
+# BT.601, 16 + 219/255 * (0.299 R + 0.587 G + 0.114 B); RGB formats are
+# converted by symline-capture with the BT.601 weights imgio uses.
+grey_levels=190,176,150,136,54,40,14,0
+yuv_levels=179,161,130,112,83,65,35,16
+rgb_levels=190,168,133,112,78,57,22,0
+check format-GREY format_check /dev/video0 GREY $grey_levels
+echo "SYMLINE-INFO GREY $(capture-check bars /tmp/GREY-video0/frame000004.pgm)"
+check format-NV12 format_check /dev/video0 NV12 $yuv_levels
+echo "SYMLINE-INFO NV12 $(capture-check bars /tmp/NV12-video0/frame000004.pgm)"
+yuv_ref=/tmp/NV12-video0/frame000004.pgm
+for f in NV21 YU12 YV12 NV16 NV61 422P YUYV YVYU UYVY VYUY; do
+    check format-$f format_check /dev/video0 $f $yuv_levels $yuv_ref
 done
-# RGB: converted with BT.601 weights from full-range RGB, so the bars are
-# brighter than vivid's limited-range GREY: bars checked without the reference.
-for f in RGB3 BGR3 XR24 AR24 XB24 AB24; do
-    check format-$f format_check /dev/video0 $f
+check format-RGB3 format_check /dev/video0 RGB3 $rgb_levels
+echo "SYMLINE-INFO RGB3 $(capture-check bars /tmp/RGB3-video0/frame000004.pgm)"
+for f in BGR3 XR24 AR24 XB24 AB24; do
+    check format-$f format_check /dev/video0 $f $rgb_levels /tmp/RGB3-video0/frame000004.pgm
 done
+check mplane-GREY format_check /dev/video1 GREY $grey_levels /tmp/GREY-video0/frame000004.pgm
 # NM16 is left out: vivid (6.1) fills its luma plane wrongly (the white bar reads
 # 16..34 at the bottom); NM61 takes the same path through symline-capture.
-for f in GREY NV12 NM12 NM21 YM12 YM21 NM61 YM16 YUYV UYVY; do
-    check mplane-$f format_check /dev/video1 $f $ref
+for f in NV12 NM12 NM21 YM12 YM21 NM61 YM16 YUYV UYVY; do
+    check mplane-$f format_check /dev/video1 $f $yuv_levels $yuv_ref
 done
 
 # Size and frame interval requests: the granted values are reported.
@@ -120,7 +132,7 @@ sed -n 's/^symline-capture: stopped/SYMLINE-INFO 5fps-GREY: stopped/p' /tmp/GREY
 # Runs symline-capture in the background, presses a vivid control after 1 s,
 # stops it with a signal after 2 s; the exit status is in $rc, stderr in /tmp/bg.err.
 background() {
-    dev=$1; control=$2; sig=$3
+    local dev=$1 control=$2 sig=$3
     # Started directly (not through a shell function) so that $! is its own pid.
     symline-capture --summary-every 0 --timeout 3000 --device "$dev" --format GREY --width 640 --height 360 \
         --frames 0 --all-frames >/tmp/bg.json 2>/tmp/bg.err &
