@@ -134,7 +134,7 @@ sed -n 's/^symline-capture: stopped/SYMLINE-INFO 5fps-GREY: stopped/p' /tmp/GREY
 background() {
     local dev=$1 control=$2 sig=$3
     # Started directly (not through a shell function) so that $! is its own pid.
-    symline-capture --summary-every 0 --timeout 3000 --device "$dev" --format GREY --width 640 --height 360 \
+    symline-capture --summary-every 1 --timeout 3000 --device "$dev" --format GREY --width 640 --height 360 \
         --frames 0 --all-frames >/tmp/bg.json 2>/tmp/bg.err &
     pid=$!
     sleep 1
@@ -147,7 +147,9 @@ background() {
 }
 sigterm() {
     background /dev/video0 "" TERM
-    [ $rc -eq 0 ] && grep -q "stopped (SIGTERM)" /tmp/bg.err && ! grep -q "error" /tmp/bg.json
+    # Also the periodic summary (every second here).
+    [ $rc -eq 0 ] && grep -q "stopped (SIGTERM)" /tmp/bg.err && ! grep -q "error" /tmp/bg.json &&
+        grep -q "^symline-capture: [0-9.]* fps, latency mean [0-9.-]* ms max" /tmp/bg.err
 }
 check sigterm-exit-0 sigterm
 sigint() {
