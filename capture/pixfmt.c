@@ -102,15 +102,17 @@ uint64_t pixfmt_min_stride(const pixfmt_info *fmt, uint32_t width)
 static void rgb_to_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src_stride, uint32_t width,
                         uint32_t height, uint8_t *dst, uint32_t dst_stride)
 {
-    uint32_t x, y;
-    const uint32_t bpp = fmt->bytes_per_pixel;
+    uint32_t y;
+    const size_t bpp = fmt->bytes_per_pixel, n = width;
+    const size_t ro = fmt->r, go = fmt->g, bo = fmt->b;
     for (y = 0; y < height; y++) {
         const uint8_t *s = src + (size_t)y * src_stride;
         uint8_t *d = dst + (size_t)y * dst_stride;
-        for (x = 0; x < width; x++) {
-            const uint8_t *p = s + (size_t)x * bpp;
+        size_t x;
+        for (x = 0; x < n; x++) {
+            const uint8_t *p = s + x * bpp;
             /* The same rounding as imgio's colour conversion, so replayed PNGs and live frames agree. */
-            d[x] = (uint8_t)((299u * p[fmt->r] + 587u * p[fmt->g] + 114u * p[fmt->b] + 500u) / 1000u);
+            d[x] = (uint8_t)((299u * p[ro] + 587u * p[go] + 114u * p[bo] + 500u) / 1000u);
         }
     }
 }
@@ -118,18 +120,21 @@ static void rgb_to_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src
 void pixfmt_unpack_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src_stride,
                         uint32_t width, uint32_t height, uint8_t *dst, uint32_t dst_stride)
 {
-    uint32_t x, y;
+    uint32_t y;
+    size_t x;
+    const size_t n = width;
     const uint32_t off = fmt->luma_offset;
     if (fmt->layout == PIXFMT_PACKED_RGB) {
         rgb_to_luma(fmt, src, src_stride, width, height, dst, dst_stride);
         return;
     }
     for (y = 0; y < height; y++) {
-        /* Every second byte, from a fixed phase: a gather the compiler turns into shuffles. */
+        /* Every second byte, from a fixed phase: with a size_t index (no wrap-around)
+         * the compiler turns this into vector shuffles. */
         const uint8_t *s = src + (size_t)y * src_stride + off;
         uint8_t *d = dst + (size_t)y * dst_stride;
-        for (x = 0; x < width; x++) {
-            d[x] = s[2u * x];
+        for (x = 0; x < n; x++) {
+            d[x] = s[2 * x];
         }
     }
 }
