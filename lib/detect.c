@@ -18,11 +18,11 @@ void symline_config_default(symline_config *cfg)
     cfg->adaptive = 1u;
     cfg->bright_sigma10 = 0;
     cfg->ridge_sigma10 = 10u;
-    cfg->side_sigma10 = 100;
+    cfg->side_sigma10 = 15;
     cfg->a_distance = 0u;
     cfg->contrast_pct = 0u;
     cfg->contrast_min = 3u;
-    cfg->contrast_asym_pct = 0u;
+    cfg->contrast_asym_pct = 150u;
     cfg->min_length = 12u;
     cfg->curve_dev_q8 = 512u;
     cfg->merge_gap = 0xFFFFFFFFu;
@@ -47,7 +47,7 @@ static symline_status check_config(const symline_config *c)
     if (c->illumination > 255u || c->adaptive > 1u || c->bright_sigma10 < -100 ||
         c->bright_sigma10 > 100 || c->ridge_sigma10 > 100u || c->side_sigma10 < -100 ||
         c->side_sigma10 > 100 || c->a_distance > 32u || c->contrast_pct > 100u ||
-        c->contrast_min > 255u || c->contrast_asym_pct > 1000u ||  c->min_length > SYMLINE_MAX_DIM ||
+        c->contrast_min > 255u || c->contrast_asym_pct > 1000u || c->min_length > SYMLINE_MAX_DIM ||
         c->curve_dev_q8 > (SYMLINE_MAX_DIM << 8) || c->merge_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
         return SYMLINE_ERR_CONFIG;
     }

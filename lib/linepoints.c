@@ -43,6 +43,12 @@ void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_
             acc[x] = (uint16_t)(acc[x] + r[x]);
         }
     }
+    if (s == 2u) { /* the common first step, as a plain lane loop */
+        for (x = 0; x < p->w; x++) {
+            out[x] = (uint8_t)(((uint32_t)acc[2u * x] + acc[2u * x + 1u] + 2u) >> 2);
+        }
+        return;
+    }
     for (x = 0; x < p->w; x++) {
         uint32_t sum = 0u;
         for (d = 0; d < s; d++) {
@@ -332,9 +338,15 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
             }
         }
         (void)symline_colrun_push(cr, E, ev, w, &count);
-        for (i = 0; i < count; i++) {
-            if (t - 1u - ev[i].y <= p->lag) {
-                h_map(rp, ev[i].y)[ev[i].x] = ev[i].kind;
+        if (count > 0u) {
+            /* Ring slot of row t-1 once per row; an event's row is at most lag above it. */
+            const uint32_t last = (t - 1u) % rp->map_rows;
+            for (i = 0; i < count; i++) {
+                const uint32_t back = t - 1u - ev[i].y;
+                if (back <= p->lag) {
+                    const uint32_t slot = last >= back ? last - back : last + rp->map_rows - back;
+                    rp->map[(size_t)slot * w + ev[i].x] = ev[i].kind;
+                }
             }
         }
         if (t >= delta) {

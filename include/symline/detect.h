@@ -95,7 +95,7 @@ typedef struct symline_config {
     int32_t side_sigma10;  /* adaptive, contrast filter: both sides of the ridge
                               must stay at or below mean + side_sigma10/10 *
                               sigma (a line lies on the darker carpet, not on a
-                              bright wall), -100..100; 100 = off; default 100 */
+                              bright wall), -100..100; 100 = off; default 15 */
     uint32_t a_distance;   /* paper filter: largest distance (px, at the pass's
                               scale) of the A point across the line, 1..32;
                               default 0 = the radius */
@@ -106,7 +106,7 @@ typedef struct symline_config {
     uint32_t contrast_asym_pct; /* contrast filter: the ridge height must also reach
                               this % of |lo - hi|, so a bright band between two
                               different surfaces (a wall's edge) is not taken
-                              for a line on the carpet, 0..1000; default 0 */
+                              for a line on the carpet, 0..1000; default 150 */
     uint32_t min_length;   /* shortest reported piece, px along its points;
                               default 12 */
     uint32_t curve_dev_q8; /* curve threshold on max_dev, Q8 px; default 512 (2 px) */
