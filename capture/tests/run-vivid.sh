@@ -115,7 +115,7 @@ initrd=$cache/initramfs-vivid.cpio.gz
 
 echo "run-vivid: booting $kver under qemu (TCG)" >&2
 start=$(date +%s)
-timeout 900 qemu-system-x86_64 -accel tcg -m 512 -nographic -no-reboot -nic none \
+timeout 300 qemu-system-x86_64 -accel tcg -m 512 -nographic -no-reboot -nic none \
     -kernel "$kimage" -initrd "$initrd" -append "console=ttyS0 quiet panic=-1" >"$log" 2>&1 || true
 end=$(date +%s)
 
