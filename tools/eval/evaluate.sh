@@ -195,17 +195,18 @@ echo "# symline line detection: evaluation"
 echo
 echo "Data: $DATA; rendered sets: seed $SEED, $COUNT images per set and size; build: $BIN"
 echo "Columns per filter: mean per-image F1, precision P, recall R (SPEC 7: samples every"
-echo "0.5 px, tolerance max(2, 3*width/640) px); cls = classification accuracy over detected"
-echo "pieces matched to ground truth (line GT as kind line, circle GT as kind curve): share"
-echo "of pieces / share weighted by length (number of matched pieces). Set 'given' ="
-echo "DATA_DIR/synth; the others are rendered, NAME-WIDTH. Filters: $FILTERS."
+echo "0.5 px, tolerance max(2, 3*width/640) px); classification of the detected pieces"
+echo "matched to ground truth: line = straight ground truth reported as kind line, curve ="
+echo "circle ground truth reported as kind curve, each as share of pieces / share weighted"
+echo "by length (number of matched pieces). Set 'given' = DATA_DIR/synth; the others are"
+echo "rendered, NAME-WIDTH. Filters: $FILTERS."
 echo
 
 hdr="| set | n |"
 sep="|---|---:|"
 for f in $FILTERS; do
-    hdr="$hdr $f F1 | P | R | cls |"
-    sep="$sep---:|---:|---:|---:|"
+    hdr="$hdr $f F1 | P | R | line | curve |"
+    sep="$sep---:|---:|---:|---:|---:|"
 done
 echo "## Synthetic scenes"
 echo
@@ -230,13 +231,15 @@ for sd in $set_dirs; do
             echo "$s" >> "$OUT/scores.tmp"
             echo "$f $label/$name $s" >> "$PER"
         done
-        cell=$(awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
+        cell=$(awk 'function share(ok, m, oks, ms) {
+                        return m ? sprintf("%.3f / %.3f (%d)", ok / m, oks / ms, m) : "- (0)" }
+                    { for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
                       n++; f1 += v["f1"]; p += v["p"]; r += v["r"]
-                      m += v["line_matched"] + v["curve_matched"]; ok += v["line_ok"] + v["curve_ok"]
-                      ms += v["line_matched_s"] + v["curve_matched_s"]; oks += v["line_ok_s"] + v["curve_ok_s"] }
-                    END { if (n == 0) { print "0 | - | - | - | - |"; exit }
-                          printf "%d | %.3f | %.3f | %.3f | %s / %s (%d) |\n", n, f1 / n, p / n, r / n,
-                                 m ? sprintf("%.3f", ok / m) : "-", ms ? sprintf("%.3f", oks / ms) : "-", m }' "$OUT/scores.tmp")
+                      lm += v["line_matched"]; lo += v["line_ok"]; cm += v["curve_matched"]; co += v["curve_ok"]
+                      lms += v["line_matched_s"]; los += v["line_ok_s"]; cms += v["curve_matched_s"]; cos_ += v["curve_ok_s"] }
+                    END { if (n == 0) { print "0 | - | - | - | - | - |"; exit }
+                          printf "%d | %.3f | %.3f | %.3f | %s | %s |\n", n, f1 / n, p / n, r / n,
+                                 share(lo, lm, los, lms), share(co, cm, cos_, cms) }' "$OUT/scores.tmp")
         n=${cell%% *}
         row="$row ${cell#* | }"
         echo "$f $label $(echo "$cell" | cut -d'|' -f2)" >> "$OUT/setf1.tmp"
