@@ -250,6 +250,40 @@ static void test_mask(void **state)
     ev_paths_free(&det);
 }
 
+static void test_ignore(void **state)
+{
+    /* Pixels with x >= 60 are ignored: the detection covers x 10..60 of a GT 10..110. */
+    static unsigned char ign[120 * 20];
+    ev_labels ignore;
+    ev_paths gt, det;
+    ev_score s;
+    ev_extras ex = {NULL, NULL, NULL};
+    int x, y, w, h;
+    (void)state;
+    for (y = 0; y < 20; y++) {
+        for (x = 60; x < 120; x++) {
+            ign[y * 120 + x] = 255;
+        }
+    }
+    ignore.px = ign;
+    ignore.width = 120;
+    ignore.height = 20;
+    ev_paths_init(&gt);
+    ev_paths_init(&det);
+    seg(&gt, EV_TAG_LINE, 10, 10, 110, 10);
+    assert_int_equal(ev_parse_detections("{\"segments\":[{\"x0\":10,\"y0\":10,\"x1\":60,\"y1\":10}]}",
+                                         "t", &det, &w, &h),
+                     0);
+    ex.ignore = &ignore;
+    ev_score_paths_ex(&gt, NULL, &det, 2.0, &s, &ex);
+    /* Samples at x < 59.5 remain (x = 59.5 rounds to pixel 60): 99 of each, all matched. */
+    assert_int_equal(s.gt_samples, 99);
+    assert_int_equal(s.det_counted, 99);
+    assert_true(s.f1 == 1.0);
+    ev_paths_free(&gt);
+    ev_paths_free(&det);
+}
+
 /* The grid index answers exactly like a scan over every segment. */
 static void test_index_exact(void **state)
 {
@@ -324,7 +358,11 @@ static void test_labels(void **state)
                                          "{\"x0\":0,\"y0\":2,\"x1\":9,\"y1\":2}]}",
                                          "t", &det, &w, &h),
                      0);
-    ev_score_paths_report(&gt, NULL, &det, 2.0, &s, NULL, &labels);
+    {
+        ev_extras ex = {NULL, NULL, NULL};
+        ex.labels = &labels;
+        ev_score_paths_ex(&gt, NULL, &det, 2.0, &s, &ex);
+    }
     /* Wrong samples: the 19 on the wall row. */
     assert_int_equal(s.fp_label[3], 19);
     assert_int_equal(s.fp_label[0] + s.fp_label[1], 0);
@@ -344,6 +382,7 @@ int main(void)
         cmocka_unit_test(test_curve_polyline), cmocka_unit_test(test_empty),
         cmocka_unit_test(test_json),        cmocka_unit_test(test_mask),
         cmocka_unit_test(test_labels),      cmocka_unit_test(test_index_exact),
+        cmocka_unit_test(test_ignore),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

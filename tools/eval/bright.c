@@ -11,11 +11,11 @@
 
 static void usage(FILE *f)
 {
-    fputs("usage: symline-bright [--mul K] [--add A] [--report] IN OUT\n"
+    fputs("usage: symline-bright [--mul K] [--add A] [--report] [--clipped MASK] IN OUT\n"
           "Writes clip(round(v*K + A), 0, 255) for every pixel v (K default 1, A default 0;\n"
           "round half up). OUT is PNG when it ends in .png, else PGM. --report prints\n"
           "\"pixels=N clipped_low=N clipped_high=N\": pixels whose value the clipping\n"
-          "changed (below 0, above 255).\n",
+          "changed (below 0, above 255). --clipped writes those pixels as 255, others 0.\n",
           f);
 }
 
@@ -23,6 +23,8 @@ int main(int argc, char **argv)
 {
     double mul = 1.0, add = 0.0;
     int i = 1, report = 0;
+    const char *clipped = NULL;
+    uint8_t *cmask = NULL;
     size_t low = 0, high = 0;
     imgio_gray img;
     char err[512];
@@ -41,6 +43,11 @@ int main(int argc, char **argv)
         if (i + 1 >= argc) {
             usage(stderr);
             return 2;
+        }
+        if (strcmp(argv[i], "--clipped") == 0) {
+            clipped = argv[i + 1];
+            i += 2;
+            continue;
         }
         if (strcmp(argv[i], "--mul") == 0) {
             mul = strtod(argv[i + 1], &end);
@@ -65,10 +72,20 @@ int main(int argc, char **argv)
         return 1;
     }
     n = (size_t)img.width * img.height;
+    if (clipped != NULL) {
+        cmask = calloc(n ? n : 1, 1);
+        if (cmask == NULL) {
+            imgio_free(&img);
+            return 1;
+        }
+    }
     for (k = 0; k < n; k++) {
         double v = floor((double)img.px[k] * mul + add + 0.5);
         low += v < 0.0;
         high += v > 255.0;
+        if (cmask != NULL && (v < 0.0 || v > 255.0)) {
+            cmask[k] = 255;
+        }
         img.px[k] = (uint8_t)(v < 0.0 ? 0.0 : (v > 255.0 ? 255.0 : v));
     }
     if (imgio_write_gray(argv[i + 1], img.px, img.width, img.height, img.width, err,
@@ -76,6 +93,15 @@ int main(int argc, char **argv)
         fprintf(stderr, "symline-bright: %s\n", err);
         imgio_free(&img);
         return 1;
+    }
+    if (cmask != NULL) {
+        int rc = imgio_write_gray(clipped, cmask, img.width, img.height, img.width, err, sizeof(err));
+        free(cmask);
+        if (rc != 0) {
+            fprintf(stderr, "symline-bright: %s\n", err);
+            imgio_free(&img);
+            return 1;
+        }
     }
     if (report) {
         printf("pixels=%zu clipped_low=%zu clipped_high=%zu\n", n, low, high);

@@ -146,8 +146,8 @@ if [ -d "$FIELD" ]; then
         name=$(basename "$img" .pgm)
         FRAMES="$FRAMES $name"
         "$BIN/symline-bright" --mul 0.5 "$img" "$TR/$name.x0.5.pgm"
-        "$BIN/symline-bright" --report --add 40 "$img" "$TR/$name.p40.pgm" > "$TR/$name.p40.clip"
-        "$BIN/symline-bright" --report --add -40 "$img" "$TR/$name.m40.pgm" > "$TR/$name.m40.clip"
+        "$BIN/symline-bright" --report --clipped "$TR/$name.p40.sat.pgm" --add 40 "$img" "$TR/$name.p40.pgm" > "$TR/$name.p40.clip"
+        "$BIN/symline-bright" --report --clipped "$TR/$name.m40.sat.pgm" --add -40 "$img" "$TR/$name.m40.pgm" > "$TR/$name.m40.clip"
         for f in $FILTERS; do
             add_job "$img" "$OUT/det/$f/field/$name.json" "$f"
             for v in x0.5 p40 m40; do
@@ -299,6 +299,43 @@ if [ -n "$FRAMES" ]; then
         for v in x0.5 p40 m40; do
             row="$row $(awk -v f="$f" -v v="$v" '$1 == f && $2 == v { n++; s += $3; if (n == 1 || $3 < m) m = $3 }
                                             END { if (n) printf "%.3f / %.3f", s / n, m; else printf "-" }' "$OUT/stab.tmp") |"
+        done
+    done
+    echo "$row"
+    echo
+    echo "### Stability outside saturated pixels"
+    echo
+    echo "As above, but samples (of both runs) on pixels that the change saturated are left"
+    echo "out (symline-score --ignore): how stable the detector is where the transformed frame"
+    echo "still holds the structure."
+    echo
+    hdr="| frame |"
+    sep="|---|"
+    for f in $FILTERS; do
+        hdr="$hdr $f +40 | -40 |"
+        sep="$sep---:|---:|"
+    done
+    echo "$hdr"
+    echo "$sep"
+    : > "$OUT/stabsat.tmp"
+    for name in $FRAMES; do
+        row=
+        for f in $FILTERS; do
+            d=$OUT/det/$f/field
+            for v in p40 m40; do
+                s=$("$BIN/symline-score" --ignore "$TR/$name.$v.sat.pgm" pair "$d/$name.json" "$d/$name.$v.json")
+                f1=$(kv f1 "$s")
+                echo "$f $v $f1 $name" >> "$OUT/stabsat.tmp"
+                row="$row $(printf '%.3f' "$f1") |"
+            done
+        done
+        echo "| $name |$row"
+    done
+    row="| mean / min |"
+    for f in $FILTERS; do
+        for v in p40 m40; do
+            row="$row $(awk -v f="$f" -v v="$v" '$1 == f && $2 == v { n++; s += $3; if (n == 1 || $3 < m) m = $3 }
+                                            END { if (n) printf "%.3f / %.3f", s / n, m; else printf "-" }' "$OUT/stabsat.tmp") |"
         done
     done
     echo "$row"

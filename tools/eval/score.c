@@ -64,12 +64,21 @@ static int width_bucket(double w)
 void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
                     double tol, ev_score *out)
 {
-    ev_score_paths_report(gt, dontcare, det, tol, out, NULL, NULL);
+    ev_score_paths_ex(gt, dontcare, det, tol, out, NULL);
 }
 
-void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
-                           double tol, ev_score *out, FILE *pieces, const ev_labels *labels)
+/* 1 when the pixel nearest to q is nonzero in the ignore image. */
+static int ignored(const ev_labels *ign, ev_pt q)
 {
+    return ign != NULL && label_at(ign, q.x, q.y) > 0;
+}
+
+void ev_score_paths_ex(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
+                       double tol, ev_score *out, const ev_extras *extras)
+{
+    FILE *pieces = extras ? extras->pieces : NULL;
+    const ev_labels *labels = extras ? extras->labels : NULL;
+    const ev_labels *ign = extras ? extras->ignore : NULL;
     ev_index gix, dcix, dix;
     ev_pt *ds = NULL, *gs = NULL;
     size_t *dpiece = NULL, *gpiece = NULL, nd, ng, i;
@@ -101,6 +110,9 @@ void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const e
         if (dcix.paths != NULL && ev_index_near(&dcix, ds[i], NULL)) {
             continue; /* near a don't-care part: neither right nor wrong */
         }
+        if (ignored(ign, ds[i])) {
+            continue;
+        }
         out->det_counted++;
         out->det_hits += (size_t)near_gt;
         if (!near_gt && labels != NULL) {
@@ -113,9 +125,13 @@ void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const e
     }
 
     ng = ev_sample(gt, EV_SAMPLE_STEP, &gs, &gpiece);
-    out->gt_samples = ng;
     for (i = 0; i < ng; i++) {
-        int hit = ev_index_near(&dix, gs[i], NULL);
+        int hit;
+        if (ignored(ign, gs[i])) {
+            continue;
+        }
+        hit = ev_index_near(&dix, gs[i], NULL);
+        out->gt_samples++;
         out->gt_hits += (size_t)hit;
         if (labels != NULL) {
             int b = width_bucket(paint_width(labels, gs, gpiece, ng, i));

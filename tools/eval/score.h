@@ -51,12 +51,19 @@ double ev_tolerance(int width);
 void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
                     double tol, ev_score *out);
 
-/* Same; when pieces is not NULL, one line per detected piece goes there (its
-   samples near straight and near circle ground truth, and its class); when labels
-   is not NULL, fp_label counts the wrong samples by the label at their nearest pixel
-   (samples outside the label image are not counted there). */
-void ev_score_paths_report(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
-                           double tol, ev_score *out, FILE *pieces, const ev_labels *labels);
+/* Extras of one scoring run; any member may be NULL. */
+typedef struct ev_extras {
+    FILE *pieces;             /* one line per detected piece: samples near straight and
+                                 near circle ground truth, class */
+    const ev_labels *labels;  /* rendered surfaces: fp_label (wrong samples by the label at
+                                 their nearest pixel) and gt_width_* are filled */
+    const ev_labels *ignore;  /* nonzero pixels: samples (detected and ground truth) whose
+                                 nearest pixel is nonzero are left out of P and R */
+} ev_extras;
+
+/* ev_score_paths() with extras (NULL: none). */
+void ev_score_paths_ex(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
+                       double tol, ev_score *out, const ev_extras *extras);
 
 /*
  * Binary line mask (nonzero = line pixel, width*height bytes, stride = width):

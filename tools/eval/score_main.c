@@ -11,13 +11,35 @@
 #include "imgio.h"
 #include "score.h"
 
-static int g_pieces; /* --pieces: one line per detected piece before the score (gt mode) */
+static int g_pieces;            /* --pieces: one line per detected piece before the score (gt mode) */
+static const char *g_ignore;    /* --ignore IMG: samples on its nonzero pixels are left out */
+static imgio_gray g_ignore_img;
+static ev_labels g_ignore_lab;
+
+/* Loads --ignore; returns NULL when not given, or exits on an unreadable image. */
+static const ev_labels *ignore_image(void)
+{
+    char err[512];
+    if (g_ignore == NULL) {
+        return NULL;
+    }
+    if (g_ignore_lab.px == NULL) {
+        if (imgio_read_gray(g_ignore, &g_ignore_img, err, sizeof(err)) != 0) {
+            fprintf(stderr, "symline-score: %s\n", err);
+            exit(1);
+        }
+        g_ignore_lab.px = g_ignore_img.px;
+        g_ignore_lab.width = (int)g_ignore_img.width;
+        g_ignore_lab.height = (int)g_ignore_img.height;
+    }
+    return &g_ignore_lab;
+}
 
 static void usage(FILE *f)
 {
-    fputs("usage: symline-score [--pieces] [--tol PX] gt NAME DET.json\n"
+    fputs("usage: symline-score [--pieces] [--ignore IMG] [--tol PX] gt NAME DET.json\n"
           "       symline-score [--tol PX] mask MASK.pgm DET.json\n"
-          "       symline-score [--tol PX] pair REF.json DET.json\n"
+          "       symline-score [--ignore IMG] [--tol PX] pair REF.json DET.json\n"
           "       symline-score gtjson NAME\n"
           "\n"
           "gt:   ground truth NAME.lines.txt, NAME.arcs.txt, NAME.dontcare.txt (missing\n"
@@ -34,6 +56,8 @@ static void usage(FILE *f)
           "Prints one line of key=value pairs: f1 p r, sample counts, and the\n"
           "classification counts line_matched line_ok curve_matched curve_ok and the\n"
           "same weighted by length (samples): line_matched_s line_ok_s curve_matched_s curve_ok_s.\n"
+          "--ignore IMG (gt, pair): samples whose nearest pixel is nonzero in IMG count\n"
+          "      neither for precision nor for recall (e.g. pixels a brightness change saturated).\n"
           "--pieces (gt mode): first one line per detected piece: kind, length, samples near\n"
           "      straight and near circle ground truth, class (straight, circle, unmatched).\n"
           "Exit status: 0 ok, 1 unreadable input, 2 usage.\n",
@@ -116,8 +140,14 @@ static int mode_gt(const char *name, const char *detpath, double tol)
         labels.width = (int)lab.width;
         labels.height = (int)lab.height;
     }
-    ev_score_paths_report(&gt, &dc, &det, tol, &s, g_pieces ? stdout : NULL,
-                          have_lab ? &labels : NULL);
+    {
+        ev_extras ex;
+        memset(&ex, 0, sizeof(ex));
+        ex.pieces = g_pieces ? stdout : NULL;
+        ex.labels = have_lab ? &labels : NULL;
+        ex.ignore = ignore_image();
+        ev_score_paths_ex(&gt, &dc, &det, tol, &s, &ex);
+    }
     print_score(&s, tol, have_lab);
     rc = 0;
 out:
@@ -175,7 +205,12 @@ static int mode_pair(const char *refpath, const char *detpath, double tol)
         tol = ev_tolerance(rw);
     }
     /* The reference's kinds stand for ground-truth classes. */
-    ev_score_paths(&ref, NULL, &det, tol, &s);
+    {
+        ev_extras ex;
+        memset(&ex, 0, sizeof(ex));
+        ex.ignore = ignore_image();
+        ev_score_paths_ex(&ref, NULL, &det, tol, &s, &ex);
+    }
     print_score(&s, tol, 0);
     rc = 0;
 out:
@@ -236,18 +271,25 @@ int main(int argc, char **argv)
         usage(stdout);
         return 0;
     }
-    if (i < argc && strcmp(argv[i], "--pieces") == 0) {
-        g_pieces = 1;
-        i++;
-    }
-    if (i + 1 < argc && strcmp(argv[i], "--tol") == 0) {
-        char *end;
-        tol = strtod(argv[i + 1], &end);
-        if (*end != '\0' || !(tol > 0.0)) {
-            fprintf(stderr, "symline-score: --tol needs a positive number\n");
+    while (i < argc && argv[i][0] == '-' && argv[i][1] == '-') {
+        if (strcmp(argv[i], "--pieces") == 0) {
+            g_pieces = 1;
+            i++;
+        } else if (i + 1 < argc && strcmp(argv[i], "--ignore") == 0) {
+            g_ignore = argv[i + 1];
+            i += 2;
+        } else if (i + 1 < argc && strcmp(argv[i], "--tol") == 0) {
+            char *end;
+            tol = strtod(argv[i + 1], &end);
+            if (*end != '\0' || !(tol > 0.0)) {
+                fprintf(stderr, "symline-score: --tol needs a positive number\n");
+                return 2;
+            }
+            i += 2;
+        } else {
+            usage(stderr);
             return 2;
         }
-        i += 2;
     }
     if (argc - i == 2 && strcmp(argv[i], "gtjson") == 0) {
         return mode_gtjson(argv[i + 1]);
