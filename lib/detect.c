@@ -25,6 +25,7 @@ void symline_config_default(symline_config *cfg)
     cfg->contrast_asym_pct = 150u;
     cfg->min_length = 12u;
     cfg->curve_dev_q8 = 512u;
+    cfg->curve_bend_q8 = 80u;
     cfg->merge_gap = 0xFFFFFFFFu;
     cfg->merge_dev_q8 = 640u;
 }
@@ -48,7 +49,8 @@ static symline_status check_config(const symline_config *c)
         c->bright_sigma10 > 100 || c->ridge_sigma10 > 100u || c->side_sigma10 < -100 ||
         c->side_sigma10 > 100 || c->a_distance > 32u || c->contrast_pct > 100u ||
         c->contrast_min > 255u || c->contrast_asym_pct > 1000u || c->min_length > SYMLINE_MAX_DIM ||
-        c->curve_dev_q8 > (SYMLINE_MAX_DIM << 8) || c->merge_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
+        c->curve_dev_q8 > (SYMLINE_MAX_DIM << 8) || c->curve_bend_q8 > (SYMLINE_MAX_DIM << 8) ||
+        c->merge_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
         return SYMLINE_ERR_CONFIG;
     }
     return SYMLINE_OK;

@@ -142,6 +142,10 @@ uint32_t sl_corner_cut(const symline_point *p, uint32_t n);
 void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
             symline_segment *s);
 
+/* Bend of p[0..n-1] (grid coordinates): mean distance to the chord of the middle
+ * half minus that of the outer quarters, Q8 grid px, absolute. */
+uint32_t sl_bend_q8(const symline_point *p, uint32_t n);
+
 /* 1 when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
  * (its chord for lines, its points for curves). */
 int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,

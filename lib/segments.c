@@ -222,6 +222,48 @@ SL_NOINLINE static int ls_ends(const symline_point *p, uint32_t n, uint32_t leve
     return 1;
 }
 
+/*
+ * Bend of a piece: the mean signed distance to the chord of the points in the
+ * chord's middle half minus that of the points in its outer quarters (Q8 px
+ * of the pass's grid, absolute). Pixel steps and noise of a straight line average
+ * out (and a tilted chord cancels by symmetry), while an arc keeps about two
+ * thirds of its sagitta: a flat piece of the centre circle is told from a line
+ * even where its largest deviation stays under the curve threshold.
+ */
+uint32_t sl_bend_q8(const symline_point *p, uint32_t n)
+{
+    const int64_t x0 = p[0].x, y0 = p[0].y;
+    const int64_t dx = (int64_t)p[n - 1u].x - x0, dy = (int64_t)p[n - 1u].y - y0;
+    const int64_t dd = dx * dx + dy * dy;
+    const uint64_t len = sl_isqrt64((uint64_t)dd);
+    int64_t sm = 0, so = 0;
+    uint32_t nm = 0u, no = 0u, i, am, ao;
+    int32_t mm, mo, d;
+    for (i = 0; i < n; i++) {
+        const int64_t wx = (int64_t)p[i].x - x0, wy = (int64_t)p[i].y - y0;
+        const int64_t t = 4 * (wx * dx + wy * dy);
+        const int64_t c = wx * dy - wy * dx;
+        if (t >= dd && t <= 3 * dd) {
+            sm += c;
+            nm++;
+        } else {
+            so += c;
+            no++;
+        }
+    }
+    if (nm == 0u || no == 0u || len == 0u) {
+        return 0u;
+    }
+    /* Means in Q8 grid pixels: sum * 256 / (count * len). */
+    am = sl_div_q8((uint64_t)(sm < 0 ? -sm : sm) << 8, (uint64_t)nm * len);
+    ao = sl_div_q8((uint64_t)(so < 0 ? -so : so) << 8, (uint64_t)no * len);
+    mm = sm < 0 ? -(int32_t)(am >> 1) : (int32_t)(am >> 1);
+    mo = so < 0 ? -(int32_t)(ao >> 1) : (int32_t)(ao >> 1);
+    d = mm - mo; /* in Q7 to keep the difference in range */
+    d = d < 0 ? -d : d;
+    return (uint32_t)d << 1;
+}
+
 void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
             symline_segment *s)
 {

@@ -110,6 +110,10 @@ typedef struct symline_config {
     uint32_t min_length;   /* shortest reported piece, px along its points;
                               default 12 */
     uint32_t curve_dev_q8; /* curve threshold on max_dev, Q8 px; default 512 (2 px) */
+    uint32_t curve_bend_q8; /* also a curve: a piece whose middle half lies this far
+                              (mean, Q8 px of the pass's grid) off the chord
+                              compared with its outer quarters; tested at the
+                              two finest scales; 0 disables; default 80 (0.31 px) */
     uint32_t merge_gap;    /* merge collinear lines whose ends are at most this
                               far apart, px; 0 disables; default 0xFFFFFFFF =
                               width / 8 */

@@ -339,6 +339,29 @@ static void merge_collinear(void **state)
     assert_int_equal(pts[20].x, 50);
 }
 
+static void bend_tells_flat_arc_from_line(void **state)
+{
+    symline_point p[64];
+    symline_segment s;
+    uint32_t i;
+    (void)state;
+    /* A staircase line (slope 1/4): pixel steps average out. */
+    for (i = 0; i < 60u; i++) {
+        p[i].x = (uint16_t)(10u + i);
+        p[i].y = (uint16_t)(20u + i / 4u);
+    }
+    assert_true(sl_bend_q8(p, 60) < 40u);
+    /* A flat arc: y = 20 + round((x - 40)^2 / 400), sagitta 2 px over 60 px. */
+    for (i = 0; i < 60u; i++) {
+        const int32_t dx = (int32_t)i - 30;
+        p[i].x = (uint16_t)(10u + i);
+        p[i].y = (uint16_t)(20 + (dx * dx + 200) / 450);
+    }
+    sl_fit(p, 60, 0, 512, &s);
+    assert_int_equal(s.kind, SYMLINE_KIND_LINE); /* under the max_dev threshold ... */
+    assert_true(sl_bend_q8(p, 60) >= 80u);        /* ... but it bends */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -348,6 +371,7 @@ int main(void)
         cmocka_unit_test(closed_loop),     cmocka_unit_test(isolated_and_pairs),
         cmocka_unit_test(classification),  cmocka_unit_test(storage_exhaustion),
         cmocka_unit_test(fit_line_and_curve), cmocka_unit_test(merge_collinear),
+        cmocka_unit_test(bend_tells_flat_arc_from_line),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

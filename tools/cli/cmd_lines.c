@@ -40,6 +40,9 @@ static void lines_usage(FILE *f, const char *cmd)
             "                      (rejects bands between two different surfaces; 150)\n"
             "  --min-length PX     shortest reported piece (12)\n"
             "  --curve-dev Q8      curve threshold on max_dev, 1/256 px (512 = 2 px)\n"
+            "  --curve-bend Q8     also a curve: middle half this far off the chord\n"
+            "                      against the outer quarters, 1/256 px at the pass's\n"
+            "                      scale (80; 0 = off)\n"
             "  --merge-gap PX      merge collinear lines up to PX apart (default width/8,\n"
             "                      0 = no merging)\n"
             "  --merge-dev Q8      merge tolerance across the line, 1/256 px (640)\n"
@@ -131,6 +134,8 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
             rc = parse_u32_opt(argc, argv, &i, 0, 65535, &c->min_length);
         } else if (strcmp(o, "--curve-dev") == 0) {
             rc = parse_u32_opt(argc, argv, &i, 0, 65535u << 8, &c->curve_dev_q8);
+        } else if (strcmp(o, "--curve-bend") == 0) {
+            rc = parse_u32_opt(argc, argv, &i, 0, 65535u << 8, &c->curve_bend_q8);
         } else if (strcmp(o, "--merge-gap") == 0) {
             rc = parse_u32_opt(argc, argv, &i, 0, 65535, &c->merge_gap);
         } else if (strcmp(o, "--merge-dev") == 0) {
