@@ -125,8 +125,7 @@ size_t symline_extrema_workspace_size(uint32_t width, uint32_t height, symline_a
                                       uint32_t m)
 {
     size_t n;
-    if (width == 0u || width > SYMLINE_MAX_DIM || height == 0u || height > SYMLINE_MAX_DIM ||
-        sl_check_axis(axis) != SYMLINE_OK || sl_check_radius(m) != SYMLINE_OK) {
+    if (!sl_query_ok(width, height, axis, m)) {
         return 0u;
     }
     n = sl_align_up((size_t)width * sizeof(uint32_t)) + SL_ALIGN;
@@ -145,28 +144,10 @@ symline_status symline_extrema(const symline_image *img, symline_axis axis, uint
     uint32_t *E, y, x;
     symline_colrun cr;
     symline_extremum *ev = NULL;
-    symline_status st = symline_image_check(img);
-    if (st == SYMLINE_OK) {
-        st = sl_check_axis(axis);
-    }
-    if (st == SYMLINE_OK) {
-        st = sl_check_radius(m);
-    }
+    symline_status st =
+        sl_frame_begin(img, axis, m, map, map_stride, map_len, ws, ws_size, &cur, &end, &E);
     if (st != SYMLINE_OK) {
         return st;
-    }
-    if (map == NULL || ws == NULL) {
-        return SYMLINE_ERR_NULL;
-    }
-    st = sl_check_plane(img->width, img->height, map_stride, map_len);
-    if (st != SYMLINE_OK) {
-        return st;
-    }
-    cur = (uint8_t *)ws;
-    end = cur + ws_size;
-    E = (uint32_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint32_t));
-    if (E == NULL) {
-        return SYMLINE_ERR_BUFFER;
     }
     if (axis == SYMLINE_AXIS_VERTICAL) {
         for (y = 0; y < img->height; y++) {

@@ -60,4 +60,21 @@ static inline symline_status sl_check_axis(symline_axis axis)
                                                                                : SYMLINE_ERR_AXIS;
 }
 
+/* 1 when a workspace query's arguments are valid (sizes 1..65535, known axis, radius 1..255). */
+static inline int sl_query_ok(uint32_t width, uint32_t height, symline_axis axis, uint32_t m)
+{
+    return width != 0u && width <= SYMLINE_MAX_DIM && height != 0u && height <= SYMLINE_MAX_DIM &&
+           sl_check_axis(axis) == SYMLINE_OK && sl_check_radius(m) == SYMLINE_OK;
+}
+
+/*
+ * Start of every whole-frame operator call: checks the image, axis, radius
+ * and an output plane of height rows of width elements (out, out_stride,
+ * out_len), then carves one row of uint32_t energies from the workspace.
+ * On success *cur points past the carved row, ready for further carving.
+ */
+symline_status sl_frame_begin(const symline_image *img, symline_axis axis, uint32_t m,
+                              const void *out, uint32_t out_stride, size_t out_len, void *ws,
+                              size_t ws_size, uint8_t **cur, uint8_t **end, uint32_t **E);
+
 #endif /* SYMLINE_INTERNAL_H */

@@ -187,24 +187,41 @@ static symline_status energy_of_row(const symline_image *img, symline_axis axis,
     return symline_energy_across_image(img, y, m, E);
 }
 
-static symline_status check_frame_args(const symline_image *img, symline_axis axis, uint32_t m)
+static symline_status check_frame(const symline_image *img, symline_axis axis, uint32_t m)
 {
     symline_status st = symline_image_check(img);
+    if (st == SYMLINE_OK) {
+        st = sl_check_axis(axis);
+    }
+    return (st == SYMLINE_OK) ? sl_check_radius(m) : st;
+}
+
+symline_status sl_frame_begin(const symline_image *img, symline_axis axis, uint32_t m,
+                              const void *out, uint32_t out_stride, size_t out_len, void *ws,
+                              size_t ws_size, uint8_t **cur, uint8_t **end, uint32_t **E)
+{
+    symline_status st = check_frame(img, axis, m);
     if (st != SYMLINE_OK) {
         return st;
     }
-    st = sl_check_axis(axis);
+    if (out == NULL || ws == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    st = sl_check_plane(img->width, img->height, out_stride, out_len);
     if (st != SYMLINE_OK) {
         return st;
     }
-    return sl_check_radius(m);
+    *cur = (uint8_t *)ws;
+    *end = *cur + ws_size;
+    *E = (uint32_t *)sl_carve(cur, *end, (size_t)img->width * sizeof(uint32_t));
+    return (*E == NULL) ? SYMLINE_ERR_BUFFER : SYMLINE_OK;
 }
 
 symline_status symline_energy_frame(const symline_image *img, symline_axis axis, uint32_t m,
                                     uint32_t *E, uint32_t e_stride, size_t e_len)
 {
     uint32_t y;
-    symline_status st = check_frame_args(img, axis, m);
+    symline_status st = check_frame(img, axis, m);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -215,20 +232,16 @@ symline_status symline_energy_frame(const symline_image *img, symline_axis axis,
     if (st != SYMLINE_OK) {
         return st;
     }
-    for (y = 0; y < img->height; y++) {
+    for (y = 0; y < img->height && st == SYMLINE_OK; y++) {
         st = energy_of_row(img, axis, m, y, E + (size_t)y * e_stride);
-        if (st != SYMLINE_OK) {
-            return st;
-        }
     }
-    return SYMLINE_OK;
+    return st;
 }
 
 size_t symline_symmetry_workspace_size(uint32_t width, uint32_t height, symline_axis axis,
                                        uint32_t m)
 {
-    if (width == 0u || width > SYMLINE_MAX_DIM || height == 0u || height > SYMLINE_MAX_DIM ||
-        sl_check_axis(axis) != SYMLINE_OK || sl_check_radius(m) != SYMLINE_OK) {
+    if (!sl_query_ok(width, height, axis, m)) {
         return 0u;
     }
     return sl_align_up((size_t)width * sizeof(uint32_t)) + SL_ALIGN;
@@ -240,22 +253,10 @@ symline_status symline_symmetry(const symline_image *img, symline_axis axis, uin
 {
     uint8_t *cur, *end;
     uint32_t *E, y;
-    symline_status st = check_frame_args(img, axis, m);
+    symline_status st =
+        sl_frame_begin(img, axis, m, out, out_stride, out_len, ws, ws_size, &cur, &end, &E);
     if (st != SYMLINE_OK) {
         return st;
-    }
-    if (out == NULL || ws == NULL) {
-        return SYMLINE_ERR_NULL;
-    }
-    st = sl_check_plane(img->width, img->height, out_stride, out_len);
-    if (st != SYMLINE_OK) {
-        return st;
-    }
-    cur = (uint8_t *)ws;
-    end = cur + ws_size;
-    E = (uint32_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint32_t));
-    if (E == NULL) {
-        return SYMLINE_ERR_BUFFER;
     }
     for (y = 0; y < img->height; y++) {
         st = energy_of_row(img, axis, m, y, E);
