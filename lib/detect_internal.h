@@ -146,6 +146,11 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
  * half minus that of the outer quarters, Q8 grid px, absolute. */
 uint32_t sl_bend_q8(const symline_point *p, uint32_t n);
 
+/* Makes line s (fitted to p[0..n-1] at `level`) a curve when its bend reaches
+ * bend_thr: kind, raw chord ends and max_dev. */
+void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,
+                   symline_segment *s);
+
 /* 1 when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
  * (its chord for lines, its points for curves). */
 int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,

@@ -45,7 +45,8 @@ void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_
     }
     if (s == 2u) { /* the common first step, as a plain lane loop */
         for (x = 0; x < p->w; x++) {
-            out[x] = (uint8_t)(((uint32_t)acc[2u * x] + acc[2u * x + 1u] + 2u) >> 2);
+            const uint16_t *pair = acc + (size_t)2u * x;
+            out[x] = (uint8_t)(((uint32_t)pair[0] + pair[1] + 2u) >> 2);
         }
         return;
     }

@@ -40,13 +40,8 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     /* A flat arc stays under the deviation threshold but bends: a curve too.
      * Only at the two finest scales: coarser grids step by 4 px and more. */
     if (s->kind == SYMLINE_KIND_LINE && d->cfg->curve_bend_q8 != 0u && p->level <= 1u &&
-        (n << p->level) >= 16u && sl_bend_q8(q, n) >= d->cfg->curve_bend_q8) {
-        s->kind = SYMLINE_KIND_CURVE;
-        s->x0 = sl_q8(q[0].x, p->level);
-        s->y0 = sl_q8(q[0].y, p->level);
-        s->x1 = sl_q8(q[n - 1u].x, p->level);
-        s->y1 = sl_q8(q[n - 1u].y, p->level);
-        s->max_dev = sl_max_dev(q, n, p->level, s->x0, s->y0, s->x1, s->y1);
+        (n << p->level) >= 16u) {
+        sl_bend_check(q, n, p->level, d->cfg->curve_bend_q8, s);
     }
     s->axis = (uint8_t)p->axis;
     s->first = at;

@@ -232,17 +232,18 @@ SL_NOINLINE static int ls_ends(const symline_point *p, uint32_t n, uint32_t leve
  */
 uint32_t sl_bend_q8(const symline_point *p, uint32_t n)
 {
-    const int64_t x0 = p[0].x, y0 = p[0].y;
-    const int64_t dx = (int64_t)p[n - 1u].x - x0, dy = (int64_t)p[n - 1u].y - y0;
-    const int64_t dd = dx * dx + dy * dy;
+    /* Grid coordinates: differences fit 32 bits, products 64. */
+    const int32_t x0 = p[0].x, y0 = p[0].y;
+    const int32_t dx = (int32_t)p[n - 1u].x - x0, dy = (int32_t)p[n - 1u].y - y0;
+    const int64_t dd = (int64_t)dx * dx + (int64_t)dy * dy;
     const uint64_t len = sl_isqrt64((uint64_t)dd);
     int64_t sm = 0, so = 0;
     uint32_t nm = 0u, no = 0u, i, am, ao;
     int32_t mm, mo, d;
     for (i = 0; i < n; i++) {
-        const int64_t wx = (int64_t)p[i].x - x0, wy = (int64_t)p[i].y - y0;
-        const int64_t t = 4 * (wx * dx + wy * dy);
-        const int64_t c = wx * dy - wy * dx;
+        const int32_t wx = (int32_t)p[i].x - x0, wy = (int32_t)p[i].y - y0;
+        const int64_t t = 4 * ((int64_t)wx * dx + (int64_t)wy * dy);
+        const int64_t c = (int64_t)wx * dy - (int64_t)wy * dx;
         if (t >= dd && t <= 3 * dd) {
             sm += c;
             nm++;
@@ -343,4 +344,19 @@ int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t 
         }
     }
     return 0;
+}
+
+void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,
+                   symline_segment *s)
+{
+    if (sl_bend_q8(p, n) < bend_thr) {
+        return;
+    }
+    /* A curve keeps the chord of its first and last point (no line fit). */
+    s->kind = SYMLINE_KIND_CURVE;
+    s->x0 = sl_q8(p[0].x, level);
+    s->y0 = sl_q8(p[0].y, level);
+    s->x1 = sl_q8(p[n - 1u].x, level);
+    s->y1 = sl_q8(p[n - 1u].y, level);
+    s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }
