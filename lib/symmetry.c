@@ -49,7 +49,7 @@ static void fill(uint32_t *E, uint32_t count, uint32_t value)
 
 symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
 {
-    uint32_t i, j;
+    uint32_t i, j, edge;
     if (q == NULL || E == NULL) {
         return SYMLINE_ERR_NULL;
     }
@@ -59,10 +59,18 @@ symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint
     if (sl_check_radius(m) != SYMLINE_OK) {
         return SYMLINE_ERR_RADIUS;
     }
-    /* Border term: pairs j > min(i, n-1-i) leave the row. Nonzero only within m of a border. */
-    for (i = 0; i < n; i++) {
-        const uint32_t k = (i < n - 1u - i) ? i : n - 1u - i;
-        E[i] = border_energy(m, k);
+    /*
+     * Border term: pairs j > min(i, n-1-i) leave the row, so it is nonzero only
+     * within m pixels of either end; the middle starts at 0. (The two ends
+     * overlap when n < 2m; both loops then write the same values.)
+     */
+    fill(E, n, 0u);
+    edge = (m < n) ? m : n;
+    for (i = 0; i < edge; i++) {
+        E[i] = border_energy(m, (i < n - 1u - i) ? i : n - 1u - i);
+    }
+    for (i = n - edge; i < n; i++) {
+        E[i] = border_energy(m, (i < n - 1u - i) ? i : n - 1u - i);
     }
     /* In-image pairs: for offset j, indices j .. n-1-j have both partners. */
     for (j = 1u; j <= m && 2u * j < n; j++) {
