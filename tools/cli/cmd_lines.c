@@ -166,25 +166,38 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     return 0;
 }
 
-static void put_px(imgio_rgb *o, int32_t x, int32_t y, const uint8_t rgb[3])
+/* Pen half-width in pixels: 1-pixel marks vanish on large frames. */
+static int32_t pen_radius(const imgio_rgb *o)
 {
-    if (x >= 0 && y >= 0 && (uint32_t)x < o->width && (uint32_t)y < o->height) {
-        uint8_t *p = o->px + ((size_t)y * o->width + (size_t)x) * 3u;
-        p[0] = rgb[0];
-        p[1] = rgb[1];
-        p[2] = rgb[2];
+    return o->width >= 480u ? 1 : 0;
+}
+
+static void put_px(imgio_rgb *o, int32_t cx, int32_t cy, const uint8_t rgb[3])
+{
+    const int32_t r = pen_radius(o);
+    int32_t x, y;
+    for (y = cy - r; y <= cy + r; y++) {
+        for (x = cx - r; x <= cx + r; x++) {
+            if (x >= 0 && y >= 0 && (uint32_t)x < o->width && (uint32_t)y < o->height) {
+                uint8_t *p = o->px + ((size_t)y * o->width + (size_t)x) * 3u;
+                p[0] = rgb[0];
+                p[1] = rgb[1];
+                p[2] = rgb[2];
+            }
+        }
     }
 }
 
-/* Line from a to b (pixels); dotted: 3 on, 3 off. */
+/* Line from a to b (pixels); dotted: dashes as long as the gaps, 3 pen widths each. */
 static void draw_line(imgio_rgb *o, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
                       const uint8_t rgb[3], int dotted, uint32_t *phase)
 {
+    const uint32_t dash = 3u * (2u * (uint32_t)pen_radius(o) + 1u);
     const int32_t dx = abs(x1 - x0), dy = -abs(y1 - y0);
     const int32_t sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
     int32_t err = dx + dy;
     for (;;) {
-        if (!dotted || (*phase / 3u) % 2u == 0u) {
+        if (!dotted || (*phase / dash) % 2u == 0u) {
             put_px(o, x0, y0, rgb);
         }
         (*phase)++;
