@@ -42,8 +42,16 @@ ktree=$1
 kver=$2
 kimage=$ktree/boot/vmlinuz-$kver
 
+# A cached build tree of another checkout is started afresh.
+fresh_build_dir() {
+    if [ -f "$1/CMakeCache.txt" ] && ! grep -q "^CMAKE_HOME_DIRECTORY:INTERNAL=$src\$" "$1/CMakeCache.txt"; then
+        rm -rf "$1"
+    fi
+}
+
 # Guest build: static, PGM only (no libpng in the guest).
 gbuild=$cache/guest-build
+fresh_build_dir "$gbuild"
 cmake -S "$src" -B "$gbuild" -DCMAKE_BUILD_TYPE=Release -DSYMLINE_BUILD_TESTS=OFF \
     -DCMAKE_DISABLE_FIND_PACKAGE_PNG=ON -DCMAKE_EXE_LINKER_FLAGS=-static \
     -DSYMLINE_WITH_LIBCAMERA=OFF -DSYMLINE_WERROR=ON >/dev/null
@@ -91,6 +99,7 @@ if [ $with_libcamera = 1 ]; then
         touch "$ipa/.done"
     fi
     lbuild=$cache/guest-build-libcamera
+    fresh_build_dir "$lbuild"
     cmake -S "$src" -B "$lbuild" -DCMAKE_BUILD_TYPE=Release -DSYMLINE_BUILD_TESTS=OFF \
         -DCMAKE_DISABLE_FIND_PACKAGE_PNG=ON -DSYMLINE_WITH_LIBCAMERA=ON >/dev/null
     cmake --build "$lbuild" -j2 --target symline_capture_app >/dev/null
