@@ -32,6 +32,7 @@ static const det_opt det_opts[] = {
     {"--contrast-asym", 0, 1000, offsetof(symline_config, contrast_asym_pct), 0},
     {"--min-length", 0, 65535, offsetof(symline_config, min_length), 0},
     {"--curve-dev", 0, 65535u << 8, offsetof(symline_config, curve_dev_q8), 0},
+    {"--curve-bend", 0, 65535u << 8, offsetof(symline_config, curve_bend_q8), 0},
     {"--merge-gap", 0, 65535, offsetof(symline_config, merge_gap), 0},
     {"--merge-dev", 0, 65535u << 8, offsetof(symline_config, merge_dev_q8), 0},
 };
@@ -105,7 +106,7 @@ static void usage(FILE *f)
           "  --width W --height H   requested frame size (the granted size is reported)\n"
           "  --format FOURCC        GREY NV12 NV21 YU12 YV12 NV16 NV61 422P YUYV YVYU UYVY VYUY,\n"
           "                         multi-planar NM12 NM21 YM12 YM21 NM16 NM61 YM16,\n"
-          "                         RGB RGB3 BGR3 XR24 AR24 XB24 AB24 (converted to luma)\n"
+          "                         packed RGB RGB3 BGR3 XR24 AR24 XB24 AB24 (converted to luma)\n"
           "                         (default: the most direct one the device offers)\n"
           "  --fps F[/D]            requested frame rate (replay: delivery pace)\n"
           "  --buffers N            mmap buffers / request queue depth, 2..32 (default 4)\n"
@@ -120,7 +121,8 @@ static void usage(FILE *f)
           "  --axis horizontal|vertical|both  --radius M (1..32)  --levels L (1..5)\n"
           "  --filter contrast|paper  --illumination G  --adaptive 0|1  --bright-sigma S\n"
           "  --side-sigma S  --ridge-sigma S  --a-distance D  --contrast PCT  --contrast-min G\n"
-          "  --contrast-asym PCT  --min-length PX  --curve-dev Q8  --merge-gap PX  --merge-dev Q8\n"
+          "  --contrast-asym PCT  --min-length PX  --curve-dev Q8  --curve-bend Q8  --merge-gap PX\n"
+          "  --merge-dev Q8\n"
           "  (see `symline lines --help` for their meaning)\n"
           "\n"
           "Output:\n"
