@@ -129,6 +129,8 @@ static void usage(FILE *f)
           "  --summary-every S      rate and latency summary on stderr every S seconds (default 5, 0 = off)\n"
 
           "  --record K DIR         write the luma of every K-th frame as PGM (replayable)\n"
+          "  --snapshot-every K DIR write every K-th frame with its detections drawn over it\n"
+          "                         (lines solid, curves dotted) as DIR/snapNNNNNN.png\n"
           "\n"
           "Exit status: 0 stopped normally (frame count, end of replay, SIGINT/SIGTERM);\n"
           "1 capture error (device lost, timeout, driver error); 2 usage error.\n",
@@ -246,12 +248,17 @@ int app_parse_args(int argc, char **argv, app_options *o)
                 return usage_error("--summary-every needs seconds%s", "");
             }
             i++;
-        } else if (strcmp(a, "--record") == 0) {
+        } else if (strcmp(a, "--record") == 0 || strcmp(a, "--snapshot-every") == 0) {
             if (parse_u32(next, 1, 0xffffffffu, &v) != 0 || i + 2 >= argc) {
                 return usage_error("%s needs K DIR", a);
             }
-            o->record_every = v;
-            o->record_dir = argv[i + 2];
+            if (a[2] == 'r') {
+                o->record_every = v;
+                o->record_dir = argv[i + 2];
+            } else {
+                o->snapshot_every = v;
+                o->snapshot_dir = argv[i + 2];
+            }
             i += 2;
         } else if (strcmp(a, "--axis") == 0) {
             const char *w = next ? next : "";

@@ -13,6 +13,7 @@
 
 #include "args.h"
 #include "imgio.h"
+#include "overlay.h"
 #include "replay_source.h"
 #include "segjson.h"
 #include "source.h"
@@ -238,6 +239,18 @@ static int record_frame(const char *dir, const capsrc_frame *f)
     return 0;
 }
 
+static int snapshot_frame(const char *dir, const capsrc_frame *f, const symline_result *r)
+{
+    char path[4096], err[512];
+    snprintf(path, sizeof path, "%s/snap%06llu.%s", dir, (unsigned long long)f->number,
+             imgio_have_png() ? "png" : "ppm");
+    if (overlay_write(path, f->luma, f->width, f->height, f->stride, r, err, sizeof err) != 0) {
+        fprintf(stderr, "symline-capture: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     app_options o;
@@ -260,7 +273,8 @@ int main(int argc, char **argv)
         return libcamera_list_cameras(stdout) >= 0 ? APP_EXIT_OK : APP_EXIT_FAIL;
     }
 #endif
-    if (o.record_dir && make_dir(o.record_dir) != 0) {
+    if ((o.record_dir && make_dir(o.record_dir) != 0) ||
+        (o.snapshot_dir && make_dir(o.snapshot_dir) != 0)) {
         return APP_EXIT_FAIL;
     }
     memset(&det, 0, sizeof det);
@@ -338,7 +352,10 @@ int main(int argc, char **argv)
         }
         lat_ms = (double)(t_det1 - frame.timestamp_ns) / 1e6;
         det_ms = (double)(t_det1 - t_det0) / 1e6;
-        if (o.record_every && frame.number % o.record_every == 0 && record_frame(o.record_dir, &frame) != 0) {
+        if ((o.record_every && frame.number % o.record_every == 0 &&
+             record_frame(o.record_dir, &frame) != 0) ||
+            (o.snapshot_every && frame.number % o.snapshot_every == 0 &&
+             snapshot_frame(o.snapshot_dir, &frame, &det.res) != 0)) {
             stop_reason = "write error";
             status = APP_EXIT_FAIL;
             break;

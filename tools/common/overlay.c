@@ -1,0 +1,108 @@
+/*
+ * Detections drawn over a frame, like the paper's Fig. 8: lines solid red,
+ * curves dotted cyan along their points, on the dimmed gray frame.
+ */
+#include "overlay.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "imgio.h"
+
+/* Pen half-width in pixels: 1-pixel marks vanish on large frames. */
+static int32_t pen_radius(const imgio_rgb *o)
+{
+    return o->width >= 480u ? 1 : 0;
+}
+
+static void put_px(imgio_rgb *o, int32_t cx, int32_t cy, const uint8_t rgb[3])
+{
+    const int32_t r = pen_radius(o);
+    int32_t x, y;
+    for (y = cy - r; y <= cy + r; y++) {
+        for (x = cx - r; x <= cx + r; x++) {
+            if (x >= 0 && y >= 0 && (uint32_t)x < o->width && (uint32_t)y < o->height) {
+                uint8_t *p = o->px + ((size_t)y * o->width + (size_t)x) * 3u;
+                p[0] = rgb[0];
+                p[1] = rgb[1];
+                p[2] = rgb[2];
+            }
+        }
+    }
+}
+
+/* Line from a to b (pixels); dotted: dashes as long as the gaps, 3 pen widths each. */
+static void draw_line(imgio_rgb *o, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                      const uint8_t rgb[3], int dotted, uint32_t *phase)
+{
+    const uint32_t dash = 3u * (2u * (uint32_t)pen_radius(o) + 1u);
+    const int32_t dx = abs(x1 - x0), dy = -abs(y1 - y0);
+    const int32_t sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
+    int32_t err = dx + dy;
+    for (;;) {
+        if (!dotted || (*phase / dash) % 2u == 0u) {
+            put_px(o, x0, y0, rgb);
+        }
+        (*phase)++;
+        if (x0 == x1 && y0 == y1) {
+            break;
+        }
+        {
+            const int32_t e2 = 2 * err;
+            if (e2 >= dy) {
+                err += dy;
+                x0 += sx;
+            }
+            if (e2 <= dx) {
+                err += dx;
+                y0 += sy;
+            }
+        }
+    }
+}
+
+static int32_t q8_round(int32_t v)
+{
+    return (v >= 0) ? (v + 128) >> 8 : -((-v + 128) >> 8);
+}
+
+int overlay_write(const char *path, const uint8_t *gray, uint32_t width, uint32_t height,
+                  uint32_t stride, const symline_result *r, char *err, size_t errlen)
+{
+    static const uint8_t RED[3] = {255, 40, 40};
+    static const uint8_t CYAN[3] = {0, 230, 255};
+    imgio_rgb o;
+    uint32_t i, k, x, y;
+    int rc;
+    o.width = width;
+    o.height = height;
+    o.px = (uint8_t *)malloc((size_t)width * height * 3u);
+    if (o.px == NULL) {
+        snprintf(err, errlen, "%s: out of memory", path);
+        return -1;
+    }
+    for (y = 0; y < height; y++) {
+        for (x = 0; x < width; x++) {
+            /* Dim the frame a little so the marks stand out. */
+            const uint8_t v = (uint8_t)(gray[(size_t)y * stride + x] * 3u / 4u);
+            uint8_t *p = o.px + ((size_t)y * width + x) * 3u;
+            p[0] = p[1] = p[2] = v;
+        }
+    }
+    for (i = 0; i < r->segment_count; i++) {
+        const symline_segment *s = &r->segments[i];
+        uint32_t phase = 0u;
+        if (s->kind == SYMLINE_KIND_LINE) {
+            draw_line(&o, q8_round(s->x0), q8_round(s->y0), q8_round(s->x1), q8_round(s->y1),
+                      RED, 0, &phase);
+        } else {
+            const symline_point *p = r->points + s->first;
+            for (k = 1; k < s->count; k++) {
+                draw_line(&o, p[k - 1].x, p[k - 1].y, p[k].x, p[k].y, CYAN, 1, &phase);
+            }
+        }
+    }
+    rc = imgio_write_rgb(path, &o, err, errlen);
+    free(o.px);
+    return rc;
+}

@@ -1,0 +1,23 @@
+/*
+ * Host tools: detections drawn over a frame (symline overlay, symline-capture
+ * --snapshot-every). Host-only code: allocates and writes files.
+ */
+#ifndef SYMLINE_TOOLS_OVERLAY_H
+#define SYMLINE_TOOLS_OVERLAY_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "symline/detect.h"
+
+/*
+ * Writes the gray frame (width x height, `stride` bytes per row), dimmed to
+ * 3/4, in colour with the segments of r drawn over it: lines solid red along
+ * their chord, curves dotted cyan along their points; a 3-pixel pen on
+ * frames 480 px wide or more. PNG when path ends in ".png", else PPM.
+ * Returns 0, or -1 with a message naming the file in err.
+ */
+int overlay_write(const char *path, const uint8_t *gray, uint32_t width, uint32_t height,
+                  uint32_t stride, const symline_result *r, char *err, size_t errlen);
+
+#endif
