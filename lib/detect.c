@@ -226,6 +226,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
         return SYMLINE_ERR_BUFFER;
     }
     d.cfg = cfg;
+    d.img = img;
     d.r = out;
     d.nseg = 0u;
     d.prev_seg = 0u;

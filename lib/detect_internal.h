@@ -162,6 +162,7 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
 /* pass.c: state of one detection shared by its passes. */
 typedef struct sl_run {
     const symline_config *cfg;
+    const symline_image *img; /* the frame, for the pieces' side test */
     symline_result *r;
     uint32_t nseg;     /* segments so far */
     uint32_t prev_seg; /* segments of earlier passes: [0, prev_seg) */

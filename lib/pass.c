@@ -21,6 +21,41 @@ static int covered(const sl_run *d, const symline_point *q, uint32_t level)
     return 0;
 }
 
+/*
+ * The contrast filter's "sides alike" test once more, over the whole piece:
+ * the gray values k grid px to either side across the line (full-resolution
+ * pixels), summed along the piece, must differ by less than the summed ridge
+ * over twice contrast_asym_pct. Summing averages out the carpet's texture and
+ * the noise that make the test per point loose, so it can be stricter here: a
+ * bright band between two different surfaces (the foot of a wall, the floor
+ * beyond the carpet, the rim of a robot) lies on no carpet on one side.
+ * At most 4096 points are summed, so every product stays in 32 bits.
+ */
+#define SL_SIDE_SAMPLES 4096u
+SL_NOINLINE static int sides_differ(const sl_run *d, const sl_pass *p, const symline_point *q,
+                                    uint32_t n)
+{
+    const symline_image *img = d->img;
+    const int horiz = p->axis == SYMLINE_AXIS_HORIZONTAL;
+    const uint32_t half = (1u << p->level) >> 1, off = p->k << p->level;
+    const uint32_t step = n / SL_SIDE_SAMPLES + 1u;
+    const size_t across = horiz ? img->stride : 1u;
+    const uint32_t lim = horiz ? img->height : img->width;
+    uint32_t slo = 0u, shi = 0u, sc = 0u, i, side;
+    for (i = 0; i < n; i += step) {
+        /* Grid points map inside the frame: (v << level) + half < size. */
+        const uint32_t x = ((uint32_t)q[i].x << p->level) + half;
+        const uint32_t y = ((uint32_t)q[i].y << p->level) + half;
+        const uint32_t pos = horiz ? y : x;
+        const uint8_t *c = img->data + (size_t)y * img->stride + x;
+        sc += *c;
+        slo += *(c - (size_t)(pos >= off ? off : pos) * across);
+        shi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
+    }
+    side = slo > shi ? slo : shi;
+    return sc <= side || (slo > shi ? slo - shi : shi - slo) * (2u * p->apct) > (sc - side) * 100u;
+}
+
 /* One piece of a chain (grid coordinates, absolute storage index `at`). */
 static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
 {
@@ -29,6 +64,9 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     symline_segment *s;
     uint32_t i;
     if ((n << p->level) < d->cfg->min_length || n < 2u) {
+        return;
+    }
+    if (p->filter == SYMLINE_FILTER_CONTRAST && p->apct != 0u && sides_differ(d, p, q, n)) {
         return;
     }
     if (d->nseg >= d->r->segment_cap) {
