@@ -3,6 +3,8 @@
  */
 #include "args.h"
 
+#include "detopts.h"
+
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,75 +12,7 @@
 
 #include <stddef.h>
 
-/* A numeric detector option (names, ranges and meaning as in `symline lines`). */
-typedef struct det_opt {
-    const char *name;
-    uint32_t lo, hi;
-    size_t offset;
-    int32_t bias; /* the field holds value - bias (signed fields given as 0..200) */
-} det_opt;
-
-static const det_opt det_opts[] = {
-    {"--radius", 1, 32, offsetof(symline_config, radius), 0},
-    {"--levels", 1, 5, offsetof(symline_config, levels), 0},
-    {"--illumination", 0, 255, offsetof(symline_config, illumination), 0},
-    {"--adaptive", 0, 1, offsetof(symline_config, adaptive), 0},
-    {"--bright-sigma", 0, 200, offsetof(symline_config, bright_sigma10), 100},
-    {"--side-sigma", 0, 200, offsetof(symline_config, side_sigma10), 100},
-    {"--ridge-sigma", 0, 100, offsetof(symline_config, ridge_sigma10), 0},
-    {"--a-distance", 1, 32, offsetof(symline_config, a_distance), 0},
-    {"--contrast", 0, 100, offsetof(symline_config, contrast_pct), 0},
-    {"--contrast-min", 0, 255, offsetof(symline_config, contrast_min), 0},
-    {"--contrast-asym", 0, 1000, offsetof(symline_config, contrast_asym_pct), 0},
-    {"--min-length", 0, 65535, offsetof(symline_config, min_length), 0},
-    {"--curve-dev", 0, 65535u << 8, offsetof(symline_config, curve_dev_q8), 0},
-    {"--curve-bend", 0, 65535u << 8, offsetof(symline_config, curve_bend_q8), 0},
-    {"--merge-gap", 0, 65535, offsetof(symline_config, merge_gap), 0},
-    {"--merge-dev", 0, 65535u << 8, offsetof(symline_config, merge_dev_q8), 0},
-};
-
 static int parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out);
-
-/* The bit detector_opt() sets in *seen for an option name. */
-static uint32_t opt_bit(const char *name)
-{
-    size_t i;
-    for (i = 0; i < sizeof det_opts / sizeof det_opts[0]; i++) {
-        if (strcmp(name, det_opts[i].name) == 0) {
-            return 1u << i;
-        }
-    }
-    return 0;
-}
-
-/*
- * NULL when name is not a detector option; "" when it was parsed into cfg;
- * else a message about the bad value. *seen gets the option's index bit.
- */
-static const char *detector_opt(const char *name, const char *value, symline_config *cfg, uint32_t *seen)
-{
-    static char msg[96];
-    size_t i;
-    for (i = 0; i < sizeof det_opts / sizeof det_opts[0]; i++) {
-        if (strcmp(name, det_opts[i].name) == 0) {
-            uint32_t v;
-            char *field = (char *)cfg + det_opts[i].offset;
-            if (parse_u32(value, det_opts[i].lo, det_opts[i].hi, &v) != 0) {
-                snprintf(msg, sizeof msg, "%s needs an integer %u..%u", name, det_opts[i].lo, det_opts[i].hi);
-                return msg;
-            }
-            if (det_opts[i].bias != 0) {
-                int32_t sv = (int32_t)v - det_opts[i].bias;
-                memcpy(field, &sv, sizeof sv);
-            } else {
-                memcpy(field, &v, sizeof v);
-            }
-            *seen |= 1u << i;
-            return "";
-        }
-    }
-    return NULL;
-}
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -117,14 +51,11 @@ static void usage(FILE *f)
           "  --timeout MS           give up when no frame arrives for MS ms (default 2000)\n"
           "  --loop                 replay: start over after the last frame\n"
           "\n"
-          "Detector (as in `symline lines`):\n"
-          "  --axis horizontal|vertical|both  --radius M (1..32)  --levels L (1..5)\n"
-          "  --filter contrast|paper  --illumination G  --adaptive 0|1  --bright-sigma S\n"
-          "  --side-sigma S  --ridge-sigma S  --a-distance D  --contrast PCT  --contrast-min G\n"
-          "  --contrast-asym PCT  --min-length PX  --curve-dev Q8  --curve-bend Q8  --merge-gap PX\n"
-          "  --merge-dev Q8\n"
-          "  (see `symline lines --help` for their meaning)\n"
           "\n"
+          "Detector (as in `symline lines`):\n",
+          f);
+    detopts_help(f);
+    fputs("\n"
           "Output:\n"
           "  --summary-every S      rate and latency summary on stderr every S seconds (default 5, 0 = off)\n"
 
@@ -175,14 +106,14 @@ static int parse_fps(const char *s, uint32_t *num, uint32_t *den)
 /* 0 ok, 1 help shown, EXIT_USAGE on error. */
 int app_parse_args(int argc, char **argv, app_options *o)
 {
-    int i, nsrc;
-    uint32_t seen = 0;
-    const char *msg;
+    int i, nsrc, rc;
+    detopts det;
+    char msg[128];
     uint32_t v;
     memset(o, 0, sizeof *o);
     o->buffers = 4;
     o->exposure_us = -1;
-    symline_config_default(&o->cfg);
+    detopts_init(&det);
     o->timeout_ms = 2000;
     o->summary_s = 5;
     for (i = 1; i < argc; i++) {
@@ -260,44 +191,16 @@ int app_parse_args(int argc, char **argv, app_options *o)
                 o->snapshot_dir = argv[i + 2];
             }
             i += 2;
-        } else if (strcmp(a, "--axis") == 0) {
-            const char *w = next ? next : "";
-            if (strcmp(w, "horizontal") == 0) {
-                o->cfg.axes = SYMLINE_AXES_HORIZONTAL;
-            } else if (strcmp(w, "vertical") == 0) {
-                o->cfg.axes = SYMLINE_AXES_VERTICAL;
-            } else if (strcmp(w, "both") == 0) {
-                o->cfg.axes = SYMLINE_AXES_BOTH;
-            } else {
-                return usage_error("--axis needs horizontal, vertical or both%s", "");
-            }
-            i++;
-        } else if (strcmp(a, "--filter") == 0) {
-            const char *w = next ? next : "";
-            if (strcmp(w, "contrast") == 0) {
-                o->cfg.filter = SYMLINE_FILTER_CONTRAST;
-            } else if (strcmp(w, "paper") == 0) {
-                o->cfg.filter = SYMLINE_FILTER_PAPER;
-            } else {
-                return usage_error("--filter needs contrast or paper%s", "");
-            }
-            i++;
-        } else if ((msg = detector_opt(a, next, &o->cfg, &seen)) != NULL) {
-            if (*msg != '\0') {
+        } else if ((rc = detopts_parse(&det, argc, argv, &i, msg, sizeof msg)) != 0) {
+            if (rc < 0) {
                 return usage_error("%s", msg);
             }
-            i++;
         } else {
             return usage_error("unknown option or missing value: '%s'", a);
         }
     }
-    /* The paper's baseline, as in `symline lines`: fixed threshold 100, nothing adaptive. */
-    if (o->cfg.filter == SYMLINE_FILTER_PAPER && !(seen & opt_bit("--illumination"))) {
-        o->cfg.illumination = 100u;
-    }
-    if (o->cfg.filter == SYMLINE_FILTER_PAPER && !(seen & opt_bit("--adaptive"))) {
-        o->cfg.adaptive = 0u;
-    }
+    detopts_finish(&det);
+    o->cfg = det.cfg;
     if (o->list_cameras) {
 #ifndef SYMLINE_HAVE_LIBCAMERA
         return usage_error("--list-cameras: this build has no libcamera support%s", "");
