@@ -106,7 +106,9 @@ typedef struct symline_config {
     uint32_t contrast_asym_pct; /* contrast filter: the ridge height must also reach
                               this % of |lo - hi|, so a bright band between two
                               different surfaces (a wall's edge) is not taken
-                              for a line on the carpet, 0..1000; default 150 */
+                              for a line on the carpet; summed along a traced
+                              piece, twice this % (0 disables both), 0..1000;
+                              default 150 */
     uint32_t min_length;   /* shortest reported piece, px along its points;
                               default 12 */
     uint32_t curve_dev_q8; /* curve threshold on max_dev, Q8 px; default 512 (2 px) */
