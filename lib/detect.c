@@ -1,7 +1,7 @@
 /*
  * symline_detect(): configuration, workspace, the frame statistics of the
- * adaptive thresholds, the passes over axes and scales (pass.c), and the
- * final merge (merge.c).
+ * adaptive thresholds, the passes over axes and scales (pass.c), the final
+ * merge (merge.c) and the curve continuation (curvejoin.c).
  */
 #include "detect_internal.h"
 
@@ -242,6 +242,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
         const uint32_t gap = cfg->merge_gap == 0xFFFFFFFFu ? img->width / 8u : cfg->merge_gap;
         sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
     }
+    sl_curve_join(out, cfg->curve_bend_q8 != 0u);
     out->truncated = d.truncated;
     return SYMLINE_OK;
 }

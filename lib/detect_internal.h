@@ -156,8 +156,14 @@ void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
 int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
                     int32_t tol_q8);
 
-/* merge.c: merges collinear line segments of r (points kept contiguous by rotation). */
+/* merge.c: merges collinear line segments of r (points kept contiguous by
+ * rotation); a merged segment gets reserved = 1 until sl_curve_join(). */
 void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8);
+
+/* curvejoin.c: with join != 0, line segments of r that continue a curve
+ * smoothly (ends within 3 px, directions within 30 degrees) become curves;
+ * clears every segment's reserved field. */
+void sl_curve_join(symline_result *r, int join);
 
 /* pass.c: state of one detection shared by its passes. */
 typedef struct sl_run {

@@ -27,18 +27,6 @@ static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 }
 
 
-/* Squared distance between the closest ends of a and b. */
-static uint64_t end_gap2(const symline_segment *a, const symline_segment *b)
-{
-    uint64_t g = dist2(a->x0, a->y0, b->x0, b->y0), t;
-    t = dist2(a->x0, a->y0, b->x1, b->y1);
-    g = t < g ? t : g;
-    t = dist2(a->x1, a->y1, b->x0, b->y0);
-    g = t < g ? t : g;
-    t = dist2(a->x1, a->y1, b->x1, b->y1);
-    return t < g ? t : g;
-}
-
 /* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
 static void end_of(const symline_segment *a, const symline_segment *b, uint32_t i, int32_t *x,
                    int32_t *y)
@@ -55,18 +43,33 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
 {
     const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
     const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
-    const int a_longer = dist2(a->x0, a->y0, a->x1, a->y1) >= dist2(b->x0, b->y0, b->x1, b->y1);
+    /* The longer piece by the larger of |dx|, |dy| (within 30 % of its length). */
+    const int32_t aax = adx < 0 ? -adx : adx, aay = ady < 0 ? -ady : ady;
+    const int32_t abx = bdx < 0 ? -bdx : bdx, aby = bdy < 0 ? -bdy : bdy;
+    const int32_t al = aax > aay ? aax : aay, bl = abx > aby ? abx : aby;
+    const int a_longer = al >= bl;
     const int32_t dx = a_longer ? adx : bdx;
     const int32_t dy = a_longer ? ady : bdy;
     int64_t lo = 0, hi = 0;
+    uint64_t g = ~(uint64_t)0;
     uint32_t i;
-    if (end_gap2(a, b) > gap2) {
-        return 0;
+    /* Each end on the other piece's line; the gap: the closest pair of ends. */
+    for (i = 0; i < 4u; i++) {
+        const symline_segment *o = i < 2u ? b : a;
+        int32_t x, y, ox, oy;
+        uint64_t t;
+        end_of(a, b, i, &x, &y);
+        if (sl_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
+            return 0;
+        }
+        end_of(a, b, (i ^ 2u) & 2u, &ox, &oy);
+        t = dist2(x, y, ox, oy);
+        g = t < g ? t : g;
+        end_of(a, b, ((i ^ 2u) & 2u) | 1u, &ox, &oy);
+        t = dist2(x, y, ox, oy);
+        g = t < g ? t : g;
     }
-    if (sl_line_dist_q8(a->x0, a->y0, adx, ady, b->x0, b->y0) > dev_q8 ||
-        sl_line_dist_q8(a->x0, a->y0, adx, ady, b->x1, b->y1) > dev_q8 ||
-        sl_line_dist_q8(b->x0, b->y0, bdx, bdy, a->x0, a->y0) > dev_q8 ||
-        sl_line_dist_q8(b->x0, b->y0, bdx, bdy, a->x1, a->y1) > dev_q8) {
+    if (g > gap2) {
         return 0;
     }
     /* New ends: the extreme end points along the longer piece. */
@@ -173,6 +176,7 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 a->y1 = ends[3];
                 a->max_dev = dev;
                 a->level = (uint8_t)lv;
+                a->reserved = 1u; /* merged: points piece after piece (curvejoin.c) */
                 absorb(r, i, j);
                 changed = 1;
                 j = i; /* the grown segment may now reach pieces it missed */
