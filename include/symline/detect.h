@@ -115,7 +115,8 @@ typedef struct symline_config {
     uint32_t curve_bend_q8; /* also a curve: a piece whose middle half lies this far
                               (mean, Q8 px of the pass's grid) off the chord
                               compared with its outer quarters; tested at the
-                              two finest scales; 0 disables; default 80 (0.31 px) */
+                              two finest scales; a line continuing a curve is
+                              a curve too; 0 disables both; default 80 (0.31 px) */
     uint32_t merge_gap;    /* merge collinear lines whose ends are at most this
                               far apart, px; 0 disables; default 0xFFFFFFFF =
                               width / 8 */
