@@ -5,14 +5,11 @@
 
 #include "detopts.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <stddef.h>
-
-static int parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out);
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -68,22 +65,6 @@ static void usage(FILE *f)
           f);
 }
 
-static int parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out)
-{
-    char *end;
-    unsigned long v;
-    if (s == NULL || *s < '0' || *s > '9') {
-        return -1;
-    }
-    errno = 0;
-    v = strtoul(s, &end, 10);
-    if (errno != 0 || *end != '\0' || v < lo || v > hi) {
-        return -1;
-    }
-    *out = (uint32_t)v;
-    return 0;
-}
-
 static int parse_fps(const char *s, uint32_t *num, uint32_t *den)
 {
     char buf[32];
@@ -96,11 +77,11 @@ static int parse_fps(const char *s, uint32_t *num, uint32_t *den)
     *den = 1;
     if (slash != NULL) {
         *slash = '\0';
-        if (parse_u32(slash + 1, 1, 1000000, den) != 0) {
+        if (detopts_u32(slash + 1, 1, 1000000, den) != 0) {
             return -1;
         }
     }
-    return parse_u32(buf, 1, 1000000, num);
+    return detopts_u32(buf, 1, 1000000, num);
 }
 
 /* 0 ok, 1 help shown, EXIT_USAGE on error. */
@@ -134,13 +115,13 @@ int app_parse_args(int argc, char **argv, app_options *o)
             o->replay = next;
             i++;
         } else if (strcmp(a, "--frames") == 0) {
-            if (parse_u32(next, 0, 0xffffffffu, &v) != 0) {
+            if (detopts_u32(next, 0, 0xffffffffu, &v) != 0) {
                 return usage_error("--frames needs a count (0 = until stopped)%s", "");
             }
             o->frames = v;
             i++;
         } else if (strcmp(a, "--width") == 0 || strcmp(a, "--height") == 0) {
-            if (parse_u32(next, 1, 65535, &v) != 0) {
+            if (detopts_u32(next, 1, 65535, &v) != 0) {
                 return usage_error("%s needs a size 1..65535", a);
             }
             *(a[2] == 'w' ? &o->width : &o->height) = v;
@@ -154,20 +135,20 @@ int app_parse_args(int argc, char **argv, app_options *o)
             }
             i++;
         } else if (strcmp(a, "--buffers") == 0) {
-            if (parse_u32(next, 2, 32, &o->buffers) != 0) {
+            if (detopts_u32(next, 2, 32, &o->buffers) != 0) {
                 return usage_error("--buffers needs a count 2..32%s", "");
             }
             i++;
         } else if (strcmp(a, "--all-frames") == 0) {
             o->all_frames = 1;
         } else if (strcmp(a, "--exposure") == 0) {
-            if (parse_u32(next, 100, 100000000, &v) != 0) {
+            if (detopts_u32(next, 100, 100000000, &v) != 0) {
                 return usage_error("--exposure needs microseconds >= 100%s", "");
             }
             o->exposure_us = (int32_t)v;
             i++;
         } else if (strcmp(a, "--timeout") == 0) {
-            if (parse_u32(next, 1, 3600000, &v) != 0) {
+            if (detopts_u32(next, 1, 3600000, &v) != 0) {
                 return usage_error("--timeout needs milliseconds 1..3600000%s", "");
             }
             o->timeout_ms = (int)v;
@@ -175,12 +156,12 @@ int app_parse_args(int argc, char **argv, app_options *o)
         } else if (strcmp(a, "--loop") == 0) {
             o->loop = 1;
         } else if (strcmp(a, "--summary-every") == 0) {
-            if (parse_u32(next, 0, 86400, &o->summary_s) != 0) {
+            if (detopts_u32(next, 0, 86400, &o->summary_s) != 0) {
                 return usage_error("--summary-every needs seconds%s", "");
             }
             i++;
         } else if (strcmp(a, "--record") == 0 || strcmp(a, "--snapshot-every") == 0) {
-            if (parse_u32(next, 1, 0xffffffffu, &v) != 0 || i + 2 >= argc) {
+            if (detopts_u32(next, 1, 0xffffffffu, &v) != 0 || i + 2 >= argc) {
                 return usage_error("%s needs K DIR", a);
             }
             if (a[2] == 'r') {

@@ -16,8 +16,6 @@
 /* Prints "symline: " + message to stderr; returns CLI_USAGE. */
 int cli_error(const char *fmt, ...);
 
-/* Parses an unsigned decimal in [lo, hi]; 0 on success. */
-int cli_parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out);
 
 /* Parses "horizontal" / "vertical"; 0 on success. */
 int cli_parse_axis(const char *s, symline_axis *axis);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../common/detopts.h"
 #include "../common/imgio.h"
 #include "cli.h"
 #include "symline/extrema.h"
@@ -48,7 +49,7 @@ static int parse_op_args(int argc, char **argv, op_args *a)
             have_axis = 1;
             i++;
         } else if (strcmp(argv[i], "--radius") == 0) {
-            if (i + 1 >= argc || cli_parse_u32(argv[i + 1], 1, 255, &a->radius) != 0) {
+            if (i + 1 >= argc || detopts_u32(argv[i + 1], 1, 255, &a->radius) != 0) {
                 return cli_error("%s: --radius needs an integer 1..255", argv[0]);
             }
             have_radius = 1;

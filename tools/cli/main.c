@@ -19,21 +19,6 @@ int cli_error(const char *fmt, ...)
     return CLI_USAGE;
 }
 
-int cli_parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out)
-{
-    char *end;
-    unsigned long v;
-    if (s == NULL || *s < '0' || *s > '9') {
-        return -1;
-    }
-    v = strtoul(s, &end, 10);
-    if (*end != '\0' || v < lo || v > hi) {
-        return -1;
-    }
-    *out = (uint32_t)v;
-    return 0;
-}
-
 int cli_parse_axis(const char *s, symline_axis *axis)
 {
     if (s != NULL && strcmp(s, "horizontal") == 0) {

@@ -46,7 +46,7 @@ static int opt_index(const char *name)
     return -1;
 }
 
-static int parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out)
+int detopts_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out)
 {
     char *end;
     unsigned long v;
@@ -97,7 +97,7 @@ int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t e
         const num_opt *o = &num_opts[k];
         char *field = (char *)&d->cfg + o->offset;
         uint32_t v;
-        if (parse_u32(value, o->lo, o->hi, &v) != 0) {
+        if (detopts_u32(value, o->lo, o->hi, &v) != 0) {
             snprintf(err, errlen, "%s needs an integer %u..%u", name, o->lo, o->hi);
             return -1;
         }

@@ -17,6 +17,12 @@ typedef struct detopts {
     uint32_t seen;      /* which table options were given (for implied defaults) */
 } detopts;
 
+/*
+ * A decimal argument in [lo, hi] (digits only, no sign, no trailing text).
+ * 0 on success. Shared by every option parser of the host tools.
+ */
+int detopts_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out);
+
 void detopts_init(detopts *d);
 
 /*
