@@ -104,6 +104,9 @@ void sl_tracer_init(sl_tracer *t, symline_point *pts, uint32_t n, const uint32_t
 /* Number of line points among the 8 neighbours of (x, y) (visited or not). */
 uint32_t sl_neighbours(const sl_tracer *t, uint32_t x, uint32_t y);
 
+/* Reverses n points in place (the tracer's backward half, the merge's rotations). */
+void sl_reverse_points(symline_point *p, uint32_t n);
+
 /*
  * Next chain, written to dst[0 .. *count-1] in tracing order (grid
  * coordinates). Returns 1 for a chain, 0 when none is left. A chain longer

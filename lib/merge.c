@@ -7,19 +7,6 @@
  */
 #include "detect_internal.h"
 
-static void reverse_pts(symline_point *p, uint32_t n)
-{
-    uint32_t i;
-    /* Field by field: a struct swap may become a libc memcpy call. */
-    for (i = 0; i < n / 2u; i++) {
-        const uint16_t x = p[i].x, y = p[i].y;
-        p[i].x = p[n - 1u - i].x;
-        p[i].y = p[n - 1u - i].y;
-        p[n - 1u - i].x = x;
-        p[n - 1u - i].y = y;
-    }
-}
-
 static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
     const int64_t dx = (int64_t)ax - bx, dy = (int64_t)ay - by;
@@ -129,9 +116,9 @@ static void absorb(symline_result *r, uint32_t i, uint32_t j)
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
     uint32_t k;
-    reverse_pts(r->points + mid0, midn);
-    reverse_pts(r->points + b_first, b_count);
-    reverse_pts(r->points + mid0, midn + b_count);
+    sl_reverse_points(r->points + mid0, midn);
+    sl_reverse_points(r->points + b_first, b_count);
+    sl_reverse_points(r->points + mid0, midn + b_count);
     for (k = i + 1u; k < j; k++) {
         r->segments[k].first += b_count;
     }

@@ -134,7 +134,7 @@ static void follow(sl_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_poi
     }
 }
 
-static void reverse(symline_point *p, uint32_t n)
+void sl_reverse_points(symline_point *p, uint32_t n)
 {
     uint32_t i;
     /* Field by field: a struct swap may become a libc memcpy call. */
@@ -202,8 +202,8 @@ int sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *cou
                 first = any_unvisited(t, (int32_t)x, (int32_t)y, &dir);
                 if (first >= 0 && pos < cap) {
                     step_and_follow(t, (int32_t)x, (int32_t)y, first, dir, dst, cap, &pos, cut);
-                    reverse(dst, pos);
-                    reverse(dst + (pos - fwd), fwd);
+                    sl_reverse_points(dst, pos);
+                    sl_reverse_points(dst + (pos - fwd), fwd);
                 }
             }
             *count = pos;
