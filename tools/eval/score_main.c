@@ -90,6 +90,18 @@ static void print_score(const ev_score *s, double tol, int with_labels)
     }
 }
 
+/* NAME.lines.txt (straight ground truth) and NAME.arcs.txt (the circle) into gt. */
+static int read_ground_truth(const char *name, ev_paths *gt)
+{
+    char path[4096];
+    snprintf(path, sizeof(path), "%s.lines.txt", name);
+    if (ev_read_segments(path, EV_TAG_LINE, 1, gt) != 0) {
+        return -1;
+    }
+    snprintf(path, sizeof(path), "%s.arcs.txt", name);
+    return ev_read_polylines(path, EV_TAG_CURVE, 1, gt);
+}
+
 static int mode_gt(const char *name, const char *detpath, double tol)
 {
     ev_paths gt, dc, det;
@@ -101,12 +113,7 @@ static int mode_gt(const char *name, const char *detpath, double tol)
     ev_paths_init(&gt);
     ev_paths_init(&dc);
     ev_paths_init(&det);
-    snprintf(path, sizeof(path), "%s.lines.txt", name);
-    if (ev_read_segments(path, EV_TAG_LINE, 1, &gt) != 0) {
-        goto out;
-    }
-    snprintf(path, sizeof(path), "%s.arcs.txt", name);
-    if (ev_read_polylines(path, EV_TAG_CURVE, 1, &gt) != 0) {
+    if (read_ground_truth(name, &gt) != 0) {
         goto out;
     }
     snprintf(path, sizeof(path), "%s.dontcare.txt", name);
@@ -226,12 +233,7 @@ static int mode_gtjson(const char *name)
     int w = 0, h = 0, rc = 1;
     size_t i, k;
     ev_paths_init(&gt);
-    snprintf(path, sizeof(path), "%s.lines.txt", name);
-    if (ev_read_segments(path, EV_TAG_LINE, 1, &gt) != 0) {
-        goto out;
-    }
-    snprintf(path, sizeof(path), "%s.arcs.txt", name);
-    if (ev_read_polylines(path, EV_TAG_CURVE, 1, &gt) != 0) {
+    if (read_ground_truth(name, &gt) != 0) {
         goto out;
     }
     snprintf(path, sizeof(path), "%s.pgm", name);
