@@ -100,13 +100,16 @@ static int scan_dir(replay *r, const char *path, char *err, size_t errlen)
     return 0;
 }
 
-static int read_list(replay *r, const char *path, char *err, size_t errlen)
+static int read_list(replay *r, const replay_options *opt, char *err, size_t errlen)
 {
     size_t cap = 0;
+    unsigned long lineno = 0;
     char line[4096];
     char dir[4096];
+    const char *path = opt->path;
     const char *slash = strrchr(path, '/');
     FILE *f = fopen(path, "r");
+    int rc = 0;
     if (f == NULL) {
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return -1;
@@ -117,9 +120,27 @@ static int read_list(replay *r, const char *path, char *err, size_t errlen)
     } else {
         strcpy(dir, ".");
     }
-    while (fgets(line, sizeof line, f) != NULL) {
+    while (rc == 0 && fgets(line, sizeof line, f) != NULL) {
         char *s = line;
-        size_t n;
+        size_t n = strlen(line);
+        lineno++;
+        /* A text list has no NUL byte and ends its lines within the buffer. */
+        if (n == 0u || (n + 1u < sizeof line && !feof(f) && line[n - 1u] != '\n')) {
+            snprintf(err, errlen, "%s: line %lu holds a NUL byte: not a list of frame files", path, lineno);
+            rc = -1;
+            break;
+        }
+        if (n + 1u == sizeof line && line[n - 1u] != '\n') {
+            snprintf(err, errlen, "%s: line %lu is longer than %zu bytes: not a list of frame files", path,
+                     lineno, sizeof line - 1u);
+            rc = -1;
+            break;
+        }
+        if (opt->stop != NULL && *opt->stop) {
+            snprintf(err, errlen, "%s: interrupted while reading the list", path);
+            rc = -1;
+            break;
+        }
         while (*s == ' ' || *s == '\t') {
             s++;
         }
@@ -131,14 +152,25 @@ static int read_list(replay *r, const char *path, char *err, size_t errlen)
         if (n == 0 || s[0] == '#') {
             continue;
         }
-        if (add_file(r, &cap, s[0] == '/' ? NULL : dir, s) != 0) {
-            fclose(f);
+        if (r->count >= REPLAY_MAX_LIST_ENTRIES) {
+            snprintf(err, errlen, "%s: more than %u entries", path, REPLAY_MAX_LIST_ENTRIES);
+            rc = -1;
+        } else if (add_file(r, &cap, s[0] == '/' ? NULL : dir, s) != 0) {
             snprintf(err, errlen, "out of memory");
-            return -1;
+            rc = -1;
         }
     }
+    if (rc == 0 && ferror(f)) {
+        /* A stop signal interrupts a read from a pipe or a terminal. */
+        if (opt->stop != NULL && *opt->stop) {
+            snprintf(err, errlen, "%s: interrupted while reading the list", path);
+        } else {
+            snprintf(err, errlen, "%s: read error: %s", path, strerror(errno));
+        }
+        rc = -1;
+    }
     fclose(f);
-    return 0;
+    return rc;
 }
 
 static capsrc_result replay_start(capsrc *src)
@@ -306,7 +338,7 @@ capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen)
             replay_free(r);
             return NULL;
         }
-    } else if (read_list(r, opt->path, err, errlen) != 0) {
+    } else if (read_list(r, opt, err, errlen) != 0) {
         replay_free(r);
         return NULL;
     }

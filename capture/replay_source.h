@@ -5,6 +5,8 @@
 #ifndef SYMLINE_CAPTURE_REPLAY_SOURCE_H
 #define SYMLINE_CAPTURE_REPLAY_SOURCE_H
 
+#include <signal.h>
+
 #include "source.h"
 
 typedef struct replay_options {
@@ -15,7 +17,13 @@ typedef struct replay_options {
     uint32_t fps_num; /* pace delivery at fps_num/fps_den frames per second; 0 = as fast as read */
     uint32_t fps_den;
     int loop;         /* 1 = start over after the last frame */
+    const volatile sig_atomic_t *stop; /* optional: reading a list gives up when *stop
+                                          becomes non-zero (a stop signal's flag) */
 } replay_options;
+
+/* A list file: at most this many entries, lines of at most 4095 bytes, no NUL
+ * bytes (anything else, /dev/zero or /dev/urandom say, is not a list). */
+#define REPLAY_MAX_LIST_ENTRIES 1000000u
 
 /* Opens a replay source; NULL with a message in err when the path holds no frames. */
 capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen);

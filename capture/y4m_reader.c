@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "imgio.h"
+
 struct y4m_reader {
     FILE *f;
     char path[256];
@@ -18,6 +20,22 @@ struct y4m_reader {
     uint8_t *luma;
     uint64_t frames;   /* frames read since the start (for messages) */
 };
+
+/* A header's W or H value: digits only, 1..65535; 0 when malformed. */
+static uint32_t parse_dim(const char *s)
+{
+    uint32_t v = 0;
+    if (*s == '\0') {
+        return 0;
+    }
+    for (; *s != '\0'; s++) {
+        if (*s < '0' || *s > '9' || v > 65535u) {
+            return 0; /* 4294967360 must not wrap to 64 */
+        }
+        v = v * 10u + (uint32_t)(*s - '0');
+    }
+    return v > 65535u ? 0 : v;
+}
 
 /* Reads one header line (without '\n') of at most cap-1 bytes; -1 at EOF or when too long. */
 static int read_line(FILE *f, char *buf, size_t cap)
@@ -76,15 +94,21 @@ y4m_reader *y4m_open(const char *path, char *err, size_t errlen)
     }
     for (tok = strtok_r(line + 10, " ", &save); tok != NULL; tok = strtok_r(NULL, " ", &save)) {
         if (tok[0] == 'W') {
-            r->width = (uint32_t)strtoul(tok + 1, NULL, 10);
+            r->width = parse_dim(tok + 1);
         } else if (tok[0] == 'H') {
-            r->height = (uint32_t)strtoul(tok + 1, NULL, 10);
+            r->height = parse_dim(tok + 1);
         } else if (tok[0] == 'C') {
             snprintf(tag, sizeof tag, "%s", tok + 1);
         }
     }
     if (r->width == 0 || r->height == 0 || r->width > 65535u || r->height > 65535u) {
-        snprintf(err, errlen, "%s: bad frame size %ux%u in the header", path, r->width, r->height);
+        snprintf(err, errlen, "%s: bad frame size in the header (W and H 1..65535)", path);
+        y4m_close(r);
+        return NULL;
+    }
+    if ((uint64_t)r->width * r->height > imgio_max_pixels()) {
+        snprintf(err, errlen, "%s: frame size %ux%u exceeds the limit of %llu pixels (raise it with "
+                 "SYMLINE_MAX_PIXELS)", path, r->width, r->height, (unsigned long long)imgio_max_pixels());
         y4m_close(r);
         return NULL;
     }
@@ -114,6 +138,20 @@ uint32_t y4m_height(const y4m_reader *r)
     return r->height;
 }
 
+/* Reads and drops n bytes: a seek would pass the end of a truncated last frame. */
+static int skip_bytes(FILE *f, uint64_t n)
+{
+    uint8_t buf[4096];
+    while (n > 0u) {
+        const size_t k = n < sizeof buf ? (size_t)n : sizeof buf;
+        if (fread(buf, 1, k, f) != k) {
+            return -1;
+        }
+        n -= k;
+    }
+    return 0;
+}
+
 int y4m_read(y4m_reader *r, const uint8_t **luma, char *err, size_t errlen)
 {
     char line[512];
@@ -126,7 +164,7 @@ int y4m_read(y4m_reader *r, const uint8_t **luma, char *err, size_t errlen)
         snprintf(err, errlen, "%s: frame %llu: expected a FRAME header", r->path, (unsigned long long)r->frames);
         return -1;
     }
-    if (fread(r->luma, 1, n, r->f) != n || fseek(r->f, (long)r->chroma, SEEK_CUR) != 0) {
+    if (fread(r->luma, 1, n, r->f) != n || skip_bytes(r->f, r->chroma) != 0) {
         snprintf(err, errlen, "%s: frame %llu is truncated", r->path, (unsigned long long)r->frames);
         return -1;
     }

@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 
 #include "args.h"
+#include "detopts.h"
 #include "imgio.h"
 #include "overlay.h"
 #include "replay_source.h"
@@ -71,6 +72,7 @@ static capsrc *open_source(const app_options *o, char *err, size_t errlen)
         r.fps_num = o->fps_num;
         r.fps_den = o->fps_den;
         r.loop = o->loop;
+        r.stop = &stop_requested;
         return replay_source_open(&r, err, errlen);
     }
 }
@@ -100,10 +102,7 @@ static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint
     /* The same storage as `symline lines`, so both report the same result for the same frame:
      * the point list doubles as scratch for a pass's line points (detect.h), which can
      * approach two per pixel with the paper's filter on textured frames. */
-    {
-        const uint64_t want = 2u * (uint64_t)w * h + 1024u;
-        point_cap = want > 0x3fffffffu ? 0x3fffffffu : (uint32_t)want;
-    }
+    point_cap = detopts_point_cap(w, h);
     free(d->ws);
     free(d->pts);
     d->ws = malloc(need);
@@ -228,12 +227,21 @@ static int make_dir(const char *dir)
     return 0;
 }
 
+/* A recorded frame appears under its name only once complete (written
+ * aside, then renamed), so a recording cut short holds no partial frame. */
 static int record_frame(const char *dir, const capsrc_frame *f)
 {
-    char path[4096], err[512];
+    char path[4096], part[4200], err[512];
     snprintf(path, sizeof path, "%s/frame%06llu.pgm", dir, (unsigned long long)f->number);
-    if (imgio_write_gray(path, f->luma, f->width, f->height, f->stride, err, sizeof err) != 0) {
+    snprintf(part, sizeof part, "%s.part", path);
+    if (imgio_write_gray(part, f->luma, f->width, f->height, f->stride, err, sizeof err) != 0) {
         fprintf(stderr, "symline-capture: %s\n", err);
+        remove(part);
+        return -1;
+    }
+    if (rename(part, path) != 0) {
+        fprintf(stderr, "symline-capture: cannot rename %s: %s\n", part, strerror(errno));
+        remove(part);
         return -1;
     }
     return 0;
@@ -260,6 +268,7 @@ int main(int argc, char **argv)
     detector det;
     line_writer lw;
     struct sigaction sa;
+    sigset_t stop_set, old_set;
     char err[512];
     int rc, status = APP_EXIT_OK;
     const char *stop_reason = "end of input";
@@ -291,6 +300,9 @@ int main(int argc, char **argv)
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    sigemptyset(&stop_set);
+    sigaddset(&stop_set, SIGINT);
+    sigaddset(&stop_set, SIGTERM);
     signal(SIGPIPE, SIG_IGN);
 
     src = open_source(&o, err, sizeof err);
@@ -352,17 +364,23 @@ int main(int argc, char **argv)
         }
         lat_ms = (double)(t_det1 - frame.timestamp_ns) / 1e6;
         det_ms = (double)(t_det1 - t_det0) / 1e6;
+        /* A frame's files and its record are written whole: a stop signal
+         * arriving meanwhile waits until they are, then ends the loop. */
+        sigprocmask(SIG_BLOCK, &stop_set, &old_set);
         if ((o.record_every && frame.number % o.record_every == 0 &&
              record_frame(o.record_dir, &frame) != 0) ||
             (o.snapshot_every && frame.number % o.snapshot_every == 0 &&
              snapshot_frame(o.snapshot_dir, &frame, &det.res) != 0)) {
+            sigprocmask(SIG_SETMASK, &old_set, NULL);
             stop_reason = "write error";
             status = APP_EXIT_FAIL;
             break;
         }
         capsrc_release(src);
-        if (emit_frame(&lw, &frame, &det, lat_ms,
-                       (double)(t_got - frame.timestamp_ns - frame.convert_ns) / 1e6, det_ms) != 0) {
+        rc = emit_frame(&lw, &frame, &det, lat_ms,
+                        (double)(t_got - frame.timestamp_ns - frame.convert_ns) / 1e6, det_ms);
+        sigprocmask(SIG_SETMASK, &old_set, NULL);
+        if (rc != 0) {
             if (!stop_requested) {
                 fprintf(stderr, "symline-capture: error: writing the frame record failed\n");
                 stop_reason = "output error";

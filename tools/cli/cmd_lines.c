@@ -1,6 +1,7 @@
 /*
  * `symline lines` and `symline overlay`: the line detector on one image.
  */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -103,7 +104,7 @@ static int run_lines(int argc, char **argv, int overlay)
     }
     memset(&res, 0, sizeof res);
     res.segment_cap = 8192u;
-    res.point_cap = 2u * in.width * in.height + 1024u;
+    res.point_cap = detopts_point_cap(in.width, in.height);
     ws = malloc(ws_size);
     res.segments = (symline_segment *)malloc(res.segment_cap * sizeof(symline_segment));
     res.points = (symline_point *)malloc((size_t)res.point_cap * sizeof(symline_point));
@@ -114,7 +115,11 @@ static int run_lines(int argc, char **argv, int overlay)
         if (st != SYMLINE_OK) {
             cli_error("%s: %s", argv[0], symline_status_str(st));
             rc = CLI_FAIL;
-        } else if (segjson_write(stdout, in.width, in.height, &res) != 0) {
+        } else if (segjson_write(stdout, in.width, in.height, &res) != 0 ||
+                   fflush(stdout) != 0) {
+            /* A full disk or a closed pipe must not pass for an empty result. */
+            cli_error("%s: cannot write the result to standard output: %s", argv[0],
+                      strerror(errno));
             rc = CLI_FAIL;
         } else if (overlay && overlay_write(a.out, in.px, in.width, in.height, in.width, &res,
                                             err, sizeof err) != 0) {

@@ -1,6 +1,7 @@
 /*
  * symline — host command line tool.
  */
+#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -66,7 +67,23 @@ static void usage(FILE *f)
           f);
 }
 
+static int dispatch(int argc, char **argv);
+
 int main(int argc, char **argv)
+{
+    int rc = dispatch(argc, argv);
+    /* What went to standard output (help, JSON) must have arrived: a full
+     * disk or a closed pipe is an error, not a silent success. */
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        if (rc == CLI_OK) {
+            cli_error("cannot write to standard output: %s", strerror(errno));
+            rc = CLI_FAIL;
+        }
+    }
+    return rc;
+}
+
+static int dispatch(int argc, char **argv)
 {
     if (argc < 2) {
         usage(stderr);

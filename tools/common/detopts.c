@@ -115,6 +115,12 @@ int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t e
     return 1;
 }
 
+uint32_t detopts_point_cap(uint32_t width, uint32_t height)
+{
+    const uint64_t want = 2u * (uint64_t)width * height + 1024u;
+    return want > 0x3fffffffu ? 0x3fffffffu : (uint32_t)want;
+}
+
 void detopts_finish(detopts *d)
 {
     /* The paper's baseline: a fixed illumination threshold of 100, nothing adaptive. */

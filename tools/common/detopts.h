@@ -36,6 +36,15 @@ int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t e
 /* After parsing: --filter paper implies --illumination 100 --adaptive 0 unless given. */
 void detopts_finish(detopts *d);
 
+/*
+ * Point storage both tools give the detector for a width x height frame: two
+ * points per pixel plus 1024 (the storage also holds a pass's raster list of
+ * line points, detect.h), at most 0x3fffffff so that the byte size
+ * (4 bytes a point) fits a 32-bit size_t; both tools hence report the same
+ * result for the same frame.
+ */
+uint32_t detopts_point_cap(uint32_t width, uint32_t height);
+
 /* The option lines of a --help text, with the defaults of this build. */
 void detopts_help(FILE *f);
 

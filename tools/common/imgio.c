@@ -5,6 +5,7 @@
 
 #include <errno.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +23,49 @@ static int fail(char *err, size_t errlen, const char *fmt, ...)
         va_end(ap);
     }
     return -1;
+}
+
+static uint64_t max_pixels_set;
+
+void imgio_set_max_pixels(uint64_t n)
+{
+    max_pixels_set = n;
+}
+
+uint64_t imgio_max_pixels(void)
+{
+    uint64_t n = max_pixels_set;
+    if (n == 0u) {
+        const char *e = getenv("SYMLINE_MAX_PIXELS");
+        n = IMGIO_DEFAULT_MAX_PIXELS;
+        if (e != NULL && e[0] >= '0' && e[0] <= '9') {
+            char *end;
+            unsigned long long v;
+            errno = 0;
+            v = strtoull(e, &end, 10);
+            if (errno == 0 && *end == '\0' && v > 0u && v <= 0xFFFFFFFFull) {
+                n = v;
+            }
+        }
+    }
+    /* Every buffer of an image (at most 8 bytes per pixel) must fit size_t. */
+    if (n > SIZE_MAX / 8u) {
+        n = SIZE_MAX / 8u;
+    }
+    return n;
+}
+
+/* Refuses an image larger than the pixel limit, before anything is allocated for it. */
+static int check_pixels(uint64_t w, uint64_t h, const char *name, char *err, size_t errlen)
+{
+    const uint64_t lim = imgio_max_pixels();
+    if (w * h > lim) {
+        return fail(err, errlen,
+                    "%s: image size %llux%llu exceeds the limit of %llu pixels "
+                    "(raise it with SYMLINE_MAX_PIXELS)",
+                    name, (unsigned long long)w, (unsigned long long)h, (unsigned long long)lim);
+    }
+    return 0;
 }
 
 int imgio_have_png(void)
@@ -137,6 +181,9 @@ int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray
     if (w == 0 || h == 0 || w > 65535ul || h > 65535ul) {
         return fail(err, errlen, "%s: image size %lux%lu outside 1..65535", name, w, h);
     }
+    if (check_pixels(w, h, name, err, errlen) != 0) {
+        return -1;
+    }
     /* Exactly one white-space byte separates the header from the pixels. */
     if (pos >= len || !(buf[pos] == ' ' || buf[pos] == '\t' || buf[pos] == '\n' ||
                         buf[pos] == '\r')) {
@@ -158,18 +205,53 @@ int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray
     return 0;
 }
 
+static const uint8_t png_sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+/* The most bytes a file starting with buf[0..len-1] can need for an image
+ * within the pixel limit (a PNG: 8 bytes per pixel, 16-bit RGBA stored, plus
+ * 1 MiB of chunks; a PGM: the pixels plus a 64 KiB header); 0 when it is
+ * neither format. */
+static size_t file_limit(const uint8_t *buf, size_t len)
+{
+    const uint64_t px = imgio_max_pixels();
+    uint64_t lim;
+    if (len >= 8u && memcmp(buf, png_sig, 8) == 0) {
+        lim = 8u * px + (1u << 20);
+    } else if (len >= 1u && buf[0] == 'P') {
+        lim = px + (1u << 16);
+    } else {
+        return 0u;
+    }
+    return lim > SIZE_MAX ? SIZE_MAX : (size_t)lim;
+}
+
+/* Reads the file, never more than an image within the pixel limit can need
+ * (a device such as /dev/zero or an endless pipe is not read to exhaustion). */
 static int slurp(const char *path, uint8_t **out, size_t *outlen, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "rb");
     uint8_t *buf = NULL;
-    size_t len = 0, cap = 0;
+    size_t len = 0, cap = 0, lim = 16u; /* the magic first, then the format's limit */
+    int decided = 0;
     if (f == NULL) {
         return fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
     }
     for (;;) {
         size_t got;
-        if (cap - len < 65536) {
-            size_t ncap = cap ? cap * 2 : 1u << 20;
+        if (len == lim) {
+            if (decided) {
+                break;
+            }
+            decided = 1;
+            lim = file_limit(buf, len);
+            if (lim == 0u) {
+                free(buf);
+                fclose(f);
+                return fail(err, errlen, "%s: not a PGM or PNG file", path);
+            }
+        }
+        if (len == cap) {
+            size_t ncap = cap ? (cap > lim / 2u ? lim : cap * 2u) : 1u << 16;
             uint8_t *nb = (uint8_t *)realloc(buf, ncap);
             if (nb == NULL) {
                 free(buf);
@@ -179,7 +261,7 @@ static int slurp(const char *path, uint8_t **out, size_t *outlen, char *err, siz
             buf = nb;
             cap = ncap;
         }
-        got = fread(buf + len, 1, cap - len, f);
+        got = fread(buf + len, 1, (cap < lim ? cap : lim) - len, f);
         len += got;
         if (got == 0) {
             break;
@@ -233,8 +315,10 @@ static int parse_png(const uint8_t *buf, size_t len, const char *name, imgio_gra
     png_structp png;
     png_infop info;
     png_mem mem = {buf, len, 0};
-    uint8_t *rgb = NULL;
-    png_bytep *rows = NULL;
+    /* Set after setjmp and freed after a longjmp: volatile, or they may read
+     * as their value at setjmp time (NULL) there. */
+    uint8_t *volatile rgb = NULL;
+    png_bytep *volatile rows = NULL;
     uint32_t w, h, x, y;
     int channels, ctype;
     volatile int ok = -1;
@@ -257,12 +341,24 @@ static int parse_png(const uint8_t *buf, size_t len, const char *name, imgio_gra
         return fail(err, errlen, "%s: unsupported or damaged PNG: %s", name, png_msg);
     }
     png_set_read_fn(png, &mem, png_mem_read);
+    /* No allocation bigger than the image: libpng refuses larger headers
+     * itself, and ancillary chunks (text, profiles, suggested palettes) are
+     * skipped unread, without allocating the size their header claims (the
+     * chunk size limit alone only warns). Luma needs none of them. */
+    png_set_user_limits(png, 65535u, 65535u);
+    png_set_chunk_malloc_max(png, 1u << 20);
+    png_set_chunk_cache_max(png, 1000u);
+    png_set_keep_unknown_chunks(png, PNG_HANDLE_CHUNK_NEVER, NULL, -1);
     png_read_info(png, info);
     w = png_get_image_width(png, info);
     h = png_get_image_height(png, info);
     if (w == 0 || h == 0 || w > 65535u || h > 65535u) {
         png_destroy_read_struct(&png, &info, NULL);
         return fail(err, errlen, "%s: image size %ux%u outside 1..65535", name, w, h);
+    }
+    if (check_pixels(w, h, name, err, errlen) != 0) {
+        png_destroy_read_struct(&png, &info, NULL);
+        return -1;
     }
     ctype = png_get_color_type(png, info);
     png_set_strip_16(png);
@@ -280,6 +376,7 @@ static int parse_png(const uint8_t *buf, size_t len, const char *name, imgio_gra
     if (channels != 1 && channels != 3) {
         png_error(png, "unexpected channel count");
     }
+    /* w * h * channels fits size_t: the pixel limit is at most SIZE_MAX / 8. */
     rgb = (uint8_t *)malloc((size_t)w * h * (size_t)channels);
     rows = (png_bytep *)malloc(sizeof(png_bytep) * h);
     img->px = (uint8_t *)malloc((size_t)w * h);
@@ -289,7 +386,7 @@ static int parse_png(const uint8_t *buf, size_t len, const char *name, imgio_gra
     for (y = 0; y < h; y++) {
         rows[y] = rgb + (size_t)y * w * (size_t)channels;
     }
-    png_read_image(png, rows);
+    png_read_image(png, (png_bytepp)rows);
     for (y = 0; y < h; y++) {
         const uint8_t *s = rows[y];
         uint8_t *d = img->px + (size_t)y * w;
@@ -312,27 +409,33 @@ static int parse_png(const uint8_t *buf, size_t len, const char *name, imgio_gra
 }
 #endif
 
+int imgio_parse_image(const uint8_t *buf, size_t len, const char *name, imgio_gray *img,
+                      char *err, size_t errlen)
+{
+    img->px = NULL;
+    if (len >= 8 && memcmp(buf, png_sig, 8) == 0) {
+#ifdef SYMLINE_HAVE_PNG
+        return parse_png(buf, len, name, img, err, errlen);
+#else
+        return fail(err, errlen, "%s: PNG input needs a build with libpng; use PGM (P5)", name);
+#endif
+    }
+    if (len == 0) {
+        return fail(err, errlen, "%s: empty file", name);
+    }
+    return imgio_parse_pgm(buf, len, name, img, err, errlen);
+}
+
 int imgio_read_gray(const char *path, imgio_gray *img, char *err, size_t errlen)
 {
     uint8_t *buf = NULL;
     size_t len = 0;
     int rc;
-    static const uint8_t sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     img->px = NULL;
     if (slurp(path, &buf, &len, err, errlen) != 0) {
         return -1;
     }
-    if (len >= 8 && memcmp(buf, sig, 8) == 0) {
-#ifdef SYMLINE_HAVE_PNG
-        rc = parse_png(buf, len, path, img, err, errlen);
-#else
-        rc = fail(err, errlen, "%s: PNG input needs a build with libpng; use PGM (P5)", path);
-#endif
-    } else if (len == 0) {
-        rc = fail(err, errlen, "%s: empty file", path);
-    } else {
-        rc = imgio_parse_pgm(buf, len, path, img, err, errlen);
-    }
+    rc = imgio_parse_image(buf, len, path, img, err, errlen);
     free(buf);
     return rc;
 }

@@ -37,6 +37,23 @@ int imgio_read_gray(const char *path, imgio_gray *img, char *err, size_t errlen)
 int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray *img, char *err,
                     size_t errlen);
 
+/* Reads a PGM or PNG (by its signature) from memory: same rules as imgio_read_gray(). */
+int imgio_parse_image(const uint8_t *buf, size_t len, const char *name, imgio_gray *img,
+                      char *err, size_t errlen);
+
+/*
+ * Bounded resources on bad files: an image of more than imgio_max_pixels()
+ * pixels is refused from its header, before any pixel memory is allocated;
+ * a file is never read past what an image within the limit can need. The
+ * limit is IMGIO_DEFAULT_MAX_PIXELS (4096 x 4096), or the environment
+ * variable SYMLINE_MAX_PIXELS (a decimal count, 1 .. 2^32 - 1; on hosts
+ * with a 32-bit size_t at most SIZE_MAX / 8), or what imgio_set_max_pixels()
+ * set last (0 returns to the default and the environment).
+ */
+#define IMGIO_DEFAULT_MAX_PIXELS (4096u * 4096u)
+uint64_t imgio_max_pixels(void);
+void imgio_set_max_pixels(uint64_t n);
+
 /* Writes gray pixels (given stride) as PNG when path ends in ".png", else as P5 PGM. */
 int imgio_write_gray(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
                      uint32_t stride, char *err, size_t errlen);
