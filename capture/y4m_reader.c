@@ -73,20 +73,26 @@ static uint64_t chroma_bytes(const char *tag, uint32_t w, uint32_t h)
 
 y4m_reader *y4m_open(const char *path, char *err, size_t errlen)
 {
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) {
+        snprintf(err, errlen, "%s: cannot open", path);
+        return NULL;
+    }
+    return y4m_open_stream(f, path, err, errlen);
+}
+
+y4m_reader *y4m_open_stream(FILE *f, const char *path, char *err, size_t errlen)
+{
     char line[512], tag[32] = "420jpeg";
     char *tok, *save = NULL;
     y4m_reader *r = calloc(1, sizeof *r);
     if (r == NULL) {
+        fclose(f);
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
     snprintf(r->path, sizeof r->path, "%s", path);
-    r->f = fopen(path, "rb");
-    if (r->f == NULL) {
-        snprintf(err, errlen, "%s: cannot open", path);
-        free(r);
-        return NULL;
-    }
+    r->f = f;
     if (read_line(r->f, line, sizeof line) != 0 || strncmp(line, "YUV4MPEG2 ", 10) != 0) {
         snprintf(err, errlen, "%s: not a YUV4MPEG2 file", path);
         y4m_close(r);

@@ -8,11 +8,16 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 typedef struct y4m_reader y4m_reader;
 
 /* Opens path and reads its stream header; NULL with a message in err on failure. */
 y4m_reader *y4m_open(const char *path, char *err, size_t errlen);
+
+/* The same on an open stream (it must support fseek/ftell; the reader
+ * closes it, also on failure); name is used in messages. */
+y4m_reader *y4m_open_stream(FILE *f, const char *name, char *err, size_t errlen);
 
 uint32_t y4m_width(const y4m_reader *r);
 uint32_t y4m_height(const y4m_reader *r);
