@@ -4,6 +4,7 @@
  * merge (merge.c) and the curve continuation (curvejoin.c).
  */
 #include "detect_internal.h"
+#include "segindex.h"
 
 void symline_config_default(symline_config *cfg)
 {
@@ -89,12 +90,14 @@ static symline_axis axis_of(const symline_config *c, uint32_t i)
 }
 
 /* A pass's workspace: its state, the row index, and the collection's rings
- * (reused by the tracer's state afterwards). Small state lives here rather
- * than on the stack, which must stay within a firmware's budget. */
-static size_t pass_ws_size(const sl_pass *p, uint32_t width)
+ * (reused by the tracer's state and the grid of earlier segments afterwards).
+ * Small state lives here rather than on the stack, which must stay within a
+ * firmware's budget. */
+static size_t pass_ws_size(const sl_pass *p, uint32_t width, uint32_t height)
 {
     size_t c = sl_collect_ws_size(p, width);
-    const size_t t = sl_align_up(sizeof(sl_tracer)) + SL_ALIGN;
+    const size_t t = sl_align_up(sizeof(sl_tracer)) + SL_ALIGN + sl_align_up(sizeof(sl_segindex)) +
+                     SL_ALIGN + sl_segindex_ws_size(width, height);
     return sl_align_up(sizeof(sl_pass)) + SL_ALIGN + sl_align_up(((size_t)p->h + 1u) * 4u) +
            SL_ALIGN + (c > t ? c : t);
 }
@@ -113,7 +116,7 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
             sl_pass p;
             size_t n;
             sl_pass_setup(&p, cfg, axis_of(cfg, a), l, width, height);
-            n = pass_ws_size(&p, width);
+            n = pass_ws_size(&p, width, height);
             best = n > best ? n : best;
         }
     }
@@ -184,6 +187,7 @@ SL_NOINLINE static uint32_t run_passes(const symline_image *img, const symline_c
             uint32_t *row_start;
             uint32_t n = 0u;
             sl_tracer *t;
+            sl_segindex *ix;
             sl_pass_setup(p, cfg, axis_of(cfg, a), l, img->width, img->height);
             if (cfg->adaptive) {
                 adapt(p, cfg, d->mean, d->sigma_q4);
@@ -194,9 +198,24 @@ SL_NOINLINE static uint32_t run_passes(const symline_image *img, const symline_c
             (void)sl_collect(img, p, rest, (size_t)(end - rest), d->r->points + npts,
                              d->r->point_cap - npts, &n, row_start, &d->truncated);
             t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
-            if (row_start == NULL || t == NULL) {
+            ix = (sl_segindex *)sl_carve(&rest, end, sizeof(sl_segindex));
+            if (row_start == NULL || t == NULL || ix == NULL) {
                 return npts; /* not reached: the workspace size was checked */
             }
+            /* The earlier passes' segments on a grid: the test of each chain
+             * point against them looks at one cell instead of all of them. */
+            {
+                /* Tracing writes at most n points after the raster list: what
+                 * lies beyond stays free for the grid's ids during the pass. */
+                const uint64_t used = (uint64_t)npts + 2u * (uint64_t)n;
+                symline_point *spare =
+                    used < d->r->point_cap ? d->r->points + (size_t)used : NULL;
+                const size_t spare_bytes =
+                    spare != NULL ? (size_t)(d->r->point_cap - used) * sizeof(symline_point) : 0u;
+                sl_segindex_build(ix, rest, (size_t)(end - rest), spare, spare_bytes, img->width,
+                                  img->height, d->r, d->prev_seg, sl_cover_tol(l));
+            }
+            d->prev_index = ix;
             sl_trace_pass(d, p, row_start, n, t, &npts);
         }
     }
@@ -230,6 +249,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.r = out;
     d.nseg = 0u;
     d.prev_seg = 0u;
+    d.prev_index = NULL;
     d.truncated = 0u;
     d.mean = 0u;
     d.sigma_q4 = 0u;
@@ -240,7 +260,9 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     out->segment_count = d.nseg;
     if (cfg->merge_gap != 0u) {
         const uint32_t gap = cfg->merge_gap == 0xFFFFFFFFu ? img->width / 8u : cfg->merge_gap;
-        sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
+        /* The passes are done: the whole workspace holds the merge's grid of ends. */
+        sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8, img->width, img->height, ws,
+                 ws_size);
     }
     sl_curve_join(out, cfg->curve_bend_q8 != 0u);
     out->truncated = d.truncated;

@@ -154,6 +154,9 @@ uint32_t sl_bend_q8(const symline_point *p, uint32_t n);
 void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,
                    symline_segment *s);
 
+/* Curves are followed through every SL_POLY_STEP-th point (sl_near_segment). */
+#define SL_POLY_STEP 4u
+
 /* 1 when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
  * (its chord for lines, its points for curves). */
 int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
@@ -161,7 +164,8 @@ int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t 
 
 /* merge.c: merges collinear line segments of r (points kept contiguous by
  * rotation); a merged segment gets reserved = 1 until sl_curve_join(). */
-void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8);
+void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8,
+              uint32_t width, uint32_t height, void *ws, size_t ws_size);
 
 /* curvejoin.c: with join != 0, line segments of r that continue a curve
  * smoothly (ends within 3 px, directions within 30 degrees) become curves;
@@ -177,7 +181,15 @@ typedef struct sl_run {
     uint32_t prev_seg; /* segments of earlier passes: [0, prev_seg) */
     uint32_t mean, sigma_q4; /* frame statistics for the adaptive thresholds */
     uint8_t truncated;
+    const struct sl_segindex *prev_index; /* grid of [0, prev_seg) (segindex.h) */
 } sl_run;
+
+/* pass.c: how close (Q8) to an earlier segment a point of a pass at `level`
+ * counts as already found. */
+static inline int32_t sl_cover_tol(uint32_t level)
+{
+    return 512 + (int32_t)(((1u << level) - 1u) << 8);
+}
 
 /* pass.c: traces a pass's raster list of n points, stored at *npts after the
  * points of earlier passes, makes its segments and compacts their points

@@ -6,6 +6,7 @@
  * segment is always one range of points.
  */
 #include "detect_internal.h"
+#include "endgrid.h"
 
 static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
@@ -108,7 +109,11 @@ static void copy_segment(symline_segment *d, const symline_segment *s)
     d->reserved = s->reserved;
 }
 
-/* Moves segment j's points right behind segment i's (i < j, ranges ordered), removes j. */
+/* A slot whose segment was absorbed (kind is 0 or 1 otherwise). */
+#define SL_GONE 0xFFu
+
+/* Moves segment j's points right behind segment i's (i < j, ranges ordered)
+ * and marks slot j gone; the slots are compacted once the merge is done. */
 static void absorb(symline_result *r, uint32_t i, uint32_t j)
 {
     symline_segment *a = &r->segments[i];
@@ -123,51 +128,127 @@ static void absorb(symline_result *r, uint32_t i, uint32_t j)
         r->segments[k].first += b_count;
     }
     a->count += b_count;
-    for (k = j; k + 1u < r->segment_count; k++) {
-        copy_segment(&r->segments[k], &r->segments[k + 1u]);
-    }
-    r->segment_count--;
+    r->segments[j].kind = SL_GONE;
 }
 
-void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8)
+/* Joins line j into line i when the pair passes the merge tests; 1 if it did. */
+static int try_join(symline_result *r, uint32_t i, uint32_t j, uint64_t gap2, uint32_t dev_q8,
+                    uint32_t curve_dev_q8, sl_endgrid *g)
+{
+    int32_t ends[4];
+    uint32_t dev;
+    symline_segment *a = &r->segments[i];
+    const symline_segment *b = &r->segments[j];
+    const uint32_t lv = a->level > b->level ? a->level : b->level;
+    const uint32_t thr = curve_dev_q8 + (((1u << lv) - 1u) << 7);
+    if (b->kind != SYMLINE_KIND_LINE) {
+        return 0;
+    }
+    if (!mergeable(a, b, gap2, dev_q8 + (((1u << lv) - 1u) << 7), ends)) {
+        return 0;
+    }
+    dev = joined_dev(a, b, r->points, ends, thr);
+    if (dev == 0xFFFFFFFFu) {
+        return 0;
+    }
+    if (g->cols != 0u) {
+        sl_endgrid_remove(g, a, i);
+        sl_endgrid_remove(g, b, j);
+    }
+    a->x0 = ends[0];
+    a->y0 = ends[1];
+    a->x1 = ends[2];
+    a->y1 = ends[3];
+    a->max_dev = dev;
+    a->level = (uint8_t)lv;
+    a->reserved = 1u; /* merged: points piece after piece (curvejoin.c) */
+    absorb(r, i, j);
+    if (g->cols != 0u) {
+        sl_endgrid_add(g, a, i);
+    }
+    return 1;
+}
+
+/*
+ * Line i against the lines after it, in slot order, until one joins it (1)
+ * or none does (0): the lines whose ends lie near i's line within the gap of
+ * its ends, from the grid, or every later line when there is no grid.
+ */
+static int join_first(symline_result *r, uint32_t i, uint64_t gap2, uint32_t gap_px, uint32_t dev_q8,
+                      uint32_t curve_dev_q8, sl_endgrid *g, int64_t ext_max)
+{
+    uint32_t j;
+    if (g->cols != 0u) {
+        /* An end of a joining line lies within dev (plus the coarsest scale's
+         * slack, plus rounding) of i's line and within the gap of one of
+         * i's ends. */
+        const int64_t ext = (int64_t)gap_px << 8 < ext_max ? (int64_t)gap_px << 8 : ext_max;
+        const int32_t margin = (int32_t)dev_q8 + (31 << 7) + 512 + (int32_t)(ext_max >> 10);
+        const int32_t n = sl_endgrid_query(g, &r->segments[i], ext, margin);
+        if (n >= 0) {
+            int32_t k;
+            for (k = 0; k < n; k++) {
+                j = g->cand[k];
+                if (j > i && try_join(r, i, j, gap2, dev_q8, curve_dev_q8, g)) {
+                    return 1;
+                }
+            }
+            return 0;
+        }
+    }
+    for (j = i + 1u; j < r->segment_count; j++) {
+        if (try_join(r, i, j, gap2, dev_q8, curve_dev_q8, g)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8,
+              uint32_t width, uint32_t height, void *ws, size_t ws_size)
 {
     const uint64_t gap2 = ((uint64_t)gap_px << 8) * ((uint64_t)gap_px << 8);
-    uint32_t i, j;
+    /* Ends lie within the frame (plus a few px), so no stretch needs to be longer. */
+    const int64_t ext_max = ((int64_t)width + height + 64) << 8;
+    uint32_t i, w;
     int changed = 1;
+    sl_endgrid g;
+    /* The grid lives in the workspace, or else in the free end of the point
+     * storage (the merge moves points within [0, point_count) only); without
+     * room for it every pair is tried, with the same result. */
+    if (dev_q8 > (SYMLINE_MAX_DIM << 8) ||
+        (!sl_endgrid_init(&g, ws, ws_size, width, height, r->segment_count) &&
+         !sl_endgrid_init(&g, r->points + r->point_count,
+                          (size_t)(r->point_cap - r->point_count) * sizeof(symline_point), width,
+                          height, r->segment_count))) {
+        g.cols = 0u;
+    }
+    for (i = 0; g.cols != 0u && i < r->segment_count; i++) {
+        if (r->segments[i].kind == SYMLINE_KIND_LINE) {
+            sl_endgrid_add(&g, &r->segments[i], i);
+        }
+    }
+    /* In slot order, each line takes the first later line that joins it,
+     * again and again (it may now reach lines it missed), until a whole
+     * round joins nothing. */
     while (changed) {
         changed = 0;
         for (i = 0; i < r->segment_count; i++) {
             if (r->segments[i].kind != SYMLINE_KIND_LINE) {
                 continue;
             }
-            for (j = i + 1u; j < r->segment_count; j++) {
-                int32_t ends[4];
-                uint32_t dev;
-                symline_segment *a = &r->segments[i];
-                const symline_segment *b = &r->segments[j];
-                const uint32_t lv = a->level > b->level ? a->level : b->level;
-                const uint32_t thr = curve_dev_q8 + (((1u << lv) - 1u) << 7);
-                if (b->kind != SYMLINE_KIND_LINE) {
-                    continue;
-                }
-                if (!mergeable(a, b, gap2, dev_q8 + (((1u << lv) - 1u) << 7), ends)) {
-                    continue;
-                }
-                dev = joined_dev(a, b, r->points, ends, thr);
-                if (dev == 0xFFFFFFFFu) {
-                    continue;
-                }
-                a->x0 = ends[0];
-                a->y0 = ends[1];
-                a->x1 = ends[2];
-                a->y1 = ends[3];
-                a->max_dev = dev;
-                a->level = (uint8_t)lv;
-                a->reserved = 1u; /* merged: points piece after piece (curvejoin.c) */
-                absorb(r, i, j);
+            while (join_first(r, i, gap2, gap_px, dev_q8, curve_dev_q8, &g, ext_max)) {
                 changed = 1;
-                j = i; /* the grown segment may now reach pieces it missed */
             }
         }
     }
+    for (i = 0, w = 0; i < r->segment_count; i++) {
+        if (r->segments[i].kind != SL_GONE) {
+            if (w != i) {
+                copy_segment(&r->segments[w], &r->segments[i]);
+            }
+            w++;
+        }
+    }
+    r->segment_count = w;
 }

@@ -7,18 +7,12 @@
  * scale) already reported are left out, so one physical line is reported once.
  */
 #include "detect_internal.h"
+#include "segindex.h"
 
 static int covered(const sl_run *d, const symline_point *q, uint32_t level)
 {
     const int32_t x = sl_q8(q->x, level), y = sl_q8(q->y, level);
-    const int32_t tol = 512 + (int32_t)(((1u << level) - 1u) << 8);
-    uint32_t i;
-    for (i = 0; i < d->prev_seg; i++) {
-        if (sl_near_segment(&d->r->segments[i], d->r->points, x, y, tol)) {
-            return 1;
-        }
-    }
-    return 0;
+    return sl_segindex_near(d->prev_index, d->r, d->prev_seg, x, y, sl_cover_tol(level));
 }
 
 /*

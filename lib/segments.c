@@ -325,8 +325,6 @@ static inline int near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int
            (uint64_t)((int64_t)t2 * t2) * (uint64_t)((int64_t)dx * dx + (int64_t)dy * dy);
 }
 
-/* Curves are followed through every SL_POLY_STEP-th point. */
-#define SL_POLY_STEP 4u
 
 int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
                     int32_t tol_q8)

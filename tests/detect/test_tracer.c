@@ -285,13 +285,13 @@ static void fit_line_and_curve(void **state)
     assert_int_equal(s.x1, 8 * 256 + 128);
 }
 
-static void merge_collinear(void **state)
+/* The merge with its grid of ends (a workspace) and without (ws NULL: every pair). */
+static void merge_collinear_with(void *ws, size_t ws_size)
 {
     symline_point pts[64];
     symline_segment segs[4];
     symline_result r;
     uint32_t i;
-    (void)state;
     /* Two pieces of y = 5 (x 0..9 and 20..29) with a curve between them in storage. */
     for (i = 0; i < 10u; i++) {
         pts[i].x = (uint16_t)i;
@@ -325,9 +325,9 @@ static void merge_collinear(void **state)
     r.point_cap = 64;
     r.point_count = 23;
     r.truncated = 0;
-    sl_merge(&r, 8, 640, 512); /* gap 11 px > 8: no merge */
+    sl_merge(&r, 8, 640, 512, 64, 48, ws, ws_size); /* gap 11 px > 8: no merge */
     assert_int_equal(r.segment_count, 3);
-    sl_merge(&r, 12, 640, 512);
+    sl_merge(&r, 12, 640, 512, 64, 48, ws, ws_size);
     assert_int_equal(r.segment_count, 2);
     assert_int_equal(segs[0].x0, 0);
     assert_int_equal(segs[0].x1, 29 * 256);
@@ -337,6 +337,14 @@ static void merge_collinear(void **state)
     }
     assert_int_equal(segs[1].first, 20);
     assert_int_equal(pts[20].x, 50);
+}
+
+static void merge_collinear(void **state)
+{
+    static uint64_t ws[512];
+    (void)state;
+    merge_collinear_with(NULL, 0);
+    merge_collinear_with(ws, sizeof ws);
 }
 
 static void bend_tells_flat_arc_from_line(void **state)

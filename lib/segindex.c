@@ -1,0 +1,204 @@
+/*
+ * The grid of earlier segments (segindex.h). Built once per pass in two
+ * sweeps over the segments: count the cells each one touches, then enter its
+ * id; cells hold their ids in one array (compressed rows), so the grid needs
+ * 4 bytes per cell and 4 per entry and nothing else. A cell the previous
+ * piece of the same segment touched is skipped (a curve that comes back to a
+ * cell may list itself there twice: harmless).
+ *
+ * A point near a chord lies within tol of one of the chord's pieces of at
+ * most one cell's length, hence inside that piece's bounding box grown by
+ * tol; every cell such a box touches lists the segment. sl_near_segment()
+ * coarsens long chords before its exact test (up to about length / 4096 of
+ * slack), so the boxes grow by length / 1024 + 1 px more than tol.
+ */
+#include "segindex.h"
+
+#include "detect_internal.h"
+
+static uint32_t cells_across(uint32_t n)
+{
+    return ((n - 1u) >> SL_CELL_SHIFT) + 1u;
+}
+
+size_t sl_segindex_ws_size(uint32_t width, uint32_t height)
+{
+    const size_t cells = (size_t)cells_across(width) * cells_across(height);
+    return sl_align_up(cells * sizeof(uint32_t)) + SL_ALIGN +
+           sl_align_up(cells * SL_IDS_PER_CELL * sizeof(uint32_t));
+}
+
+/* What a sweep does with each cell a segment touches. */
+typedef struct visit {
+    sl_segindex *ix;
+    uint32_t seg;
+    int fill;       /* 0: count into end[], 1: write ids at end[] (then advance it),
+                       -1: take a count back */
+    uint32_t added; /* cells counted for seg */
+    uint32_t px0, py0, px1, py1; /* cells of the previous piece (px0 > px1: none) */
+} visit;
+
+static uint32_t cell_of(int32_t v_q8, uint32_t n)
+{
+    uint32_t c;
+    if (v_q8 < 0) {
+        return 0u;
+    }
+    c = ((uint32_t)v_q8 >> 8) >> SL_CELL_SHIFT;
+    return c < n ? c : n - 1u;
+}
+
+static void visit_box(visit *v, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+{
+    sl_segindex *ix = v->ix;
+    const uint32_t cx0 = cell_of(x0, ix->cols), cx1 = cell_of(x1, ix->cols);
+    const uint32_t cy0 = cell_of(y0, ix->rows), cy1 = cell_of(y1, ix->rows);
+    uint32_t cx, cy;
+    for (cy = cy0; cy <= cy1; cy++) {
+        for (cx = cx0; cx <= cx1; cx++) {
+            const uint32_t c = cy * ix->cols + cx;
+            if (cx >= v->px0 && cx <= v->px1 && cy >= v->py0 && cy <= v->py1) {
+                continue;
+            }
+            if (v->fill > 0) {
+                ix->ids[ix->end[c]++] = v->seg;
+            } else if (v->fill < 0) {
+                ix->end[c]--;
+            } else {
+                ix->end[c]++;
+                v->added++;
+            }
+        }
+    }
+    v->px0 = cx0;
+    v->px1 = cx1;
+    v->py0 = cy0;
+    v->py1 = cy1;
+}
+
+/* The chord a-b (Q8) in pieces of at most a cell, each box grown by margin. */
+static void visit_chord(visit *v, int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t tol)
+{
+    const int64_t dx = (int64_t)bx - ax, dy = (int64_t)by - ay;
+    const int64_t len = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx)
+                                                                  : (dy < 0 ? -dy : dy);
+    const int32_t margin = tol + (int32_t)((len + tol) >> 10) + 256;
+    const int64_t n = (len >> (8u + SL_CELL_SHIFT)) + 1;
+    int64_t k;
+    int32_t px = ax, py = ay;
+    for (k = 1; k <= n; k++) {
+        const int32_t qx = (int32_t)(ax + dx * k / n), qy = (int32_t)(ay + dy * k / n);
+        visit_box(v, (px < qx ? px : qx) - margin, (py < qy ? py : qy) - margin,
+                  (px > qx ? px : qx) + margin, (py > qy ? py : qy) + margin);
+        px = qx;
+        py = qy;
+    }
+}
+
+/* Every piece sl_near_segment() tests for segment s. */
+static void visit_segment(visit *v, const symline_result *r, const symline_segment *s, int32_t tol)
+{
+    const symline_point *p = r->points + s->first;
+    uint32_t i;
+    v->px0 = 1u;
+    v->px1 = 0u;
+    if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
+        visit_chord(v, s->x0, s->y0, s->x1, s->y1, tol);
+        return;
+    }
+    for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
+        const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
+        visit_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8, (int32_t)p[j].x << 8,
+                    (int32_t)p[j].y << 8, tol);
+    }
+}
+
+/* The start of an area, aligned for uint32_t ids, and how many it holds. */
+static uint32_t *id_area(void *mem, size_t bytes, uint32_t *n)
+{
+    uint8_t *cur = (uint8_t *)mem;
+    const size_t skip = (SL_ALIGN - ((uintptr_t)cur & (SL_ALIGN - 1u))) & (SL_ALIGN - 1u);
+    *n = 0u;
+    if (mem == NULL || bytes <= skip) {
+        return NULL;
+    }
+    bytes = (bytes - skip) / sizeof(uint32_t);
+    *n = bytes > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)bytes;
+    return (uint32_t *)(void *)(cur + skip);
+}
+
+void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, size_t spare_bytes,
+                       uint32_t width, uint32_t height, const symline_result *r, uint32_t nseg,
+                       int32_t tol_q8)
+{
+    uint8_t *cur = (uint8_t *)mem, *const lim = (uint8_t *)mem + bytes;
+    const uint32_t cells = cells_across(width) * cells_across(height);
+    uint32_t c, s, cap, cap2, total = 0u, sum = 0u;
+    uint32_t *ids2;
+    visit v;
+    ix->cols = cells_across(width);
+    ix->rows = cells_across(height);
+    ix->end = (uint32_t *)sl_carve(&cur, lim, (size_t)cells * sizeof(uint32_t));
+    ix->indexed = 0u;
+    if (ix->end == NULL) {
+        ix->cols = 0u; /* not reached: the workspace size was checked */
+        return;
+    }
+    ix->ids = id_area(cur, (size_t)(lim - cur), &cap);
+    ids2 = id_area(spare, spare_bytes, &cap2);
+    if (cap2 > cap) {
+        ix->ids = ids2;
+        cap = cap2;
+    }
+    v.ix = ix;
+    for (c = 0; c < cells; c++) {
+        ix->end[c] = 0u;
+    }
+    /* Count, segment by segment, while the ids fit. */
+    v.fill = 0;
+    for (s = 0; s < nseg; s++) {
+        v.seg = s;
+        v.added = 0u;
+        visit_segment(&v, r, &r->segments[s], tol_q8);
+        if (v.added > cap - total) {
+            /* Does not fit: take its counts back; it and later ones stay out. */
+            v.fill = -1;
+            visit_segment(&v, r, &r->segments[s], tol_q8);
+            break;
+        }
+        total += v.added;
+    }
+    ix->indexed = s;
+    /* Counts to start offsets, then enter the ids (each cell's offset runs to its end). */
+    for (c = 0; c < cells; c++) {
+        const uint32_t n = ix->end[c];
+        ix->end[c] = sum;
+        sum += n;
+    }
+    v.fill = 1;
+    for (s = 0; s < ix->indexed; s++) {
+        v.seg = s;
+        visit_segment(&v, r, &r->segments[s], tol_q8);
+    }
+}
+
+int sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t nseg, int32_t x,
+                     int32_t y, int32_t tol_q8)
+{
+    uint32_t i = 0u, k;
+    if (ix->cols != 0u) {
+        const uint32_t c = cell_of(y, ix->rows) * ix->cols + cell_of(x, ix->cols);
+        for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
+            if (sl_near_segment(&r->segments[ix->ids[k]], r->points, x, y, tol_q8)) {
+                return 1;
+            }
+        }
+        i = ix->indexed;
+    }
+    for (; i < nseg; i++) {
+        if (sl_near_segment(&r->segments[i], r->points, x, y, tol_q8)) {
+            return 1;
+        }
+    }
+    return 0;
+}

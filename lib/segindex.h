@@ -1,0 +1,46 @@
+/*
+ * A coarse grid of the segments found so far, so that a pass asks "is this
+ * point near an earlier segment?" of the few segments near the point instead
+ * of every one (which made a cluttered frame's detection time grow with the
+ * square of its size). Private to the library.
+ */
+#ifndef SYMLINE_SEGINDEX_H
+#define SYMLINE_SEGINDEX_H
+
+#include "symline/detect.h"
+
+/* Cells of 1 << SL_CELL_SHIFT full-resolution pixels square. */
+#define SL_CELL_SHIFT 5u
+/* The workspace has room for this many segment ids per cell on average; the
+ * ids go to the free end of the point storage instead when that is larger.
+ * Segments that fit in neither stay out of the grid and are tested one by one. */
+#define SL_IDS_PER_CELL 4u
+
+typedef struct sl_segindex {
+    uint32_t cols, rows; /* cells across and down */
+    uint32_t *end;       /* cols*rows: cell c holds ids[end[c-1] .. end[c]-1] (end[-1] = 0) */
+    uint32_t *ids;       /* segment ids, ascending within a cell */
+    uint32_t indexed;    /* segments [0, indexed) are in the grid */
+} sl_segindex;
+
+/* Bytes of workspace sl_segindex_build() uses for a width x height frame. */
+size_t sl_segindex_ws_size(uint32_t width, uint32_t height);
+
+/*
+ * Builds the grid of segments r->segments[0 .. nseg-1]: the cells in mem
+ * (bytes from sl_segindex_ws_size(), aligned), the ids there or in `spare`
+ * (spare_bytes, any alignment, may be NULL) when that is larger. Each
+ * segment is entered in every cell within tol_q8 (plus the rounding of
+ * sl_near_segment()) of its chord (a line) or its polyline (a curve).
+ * Segments that do not fit stay out (ix->indexed).
+ */
+void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, size_t spare_bytes,
+                       uint32_t width, uint32_t height, const symline_result *r, uint32_t nseg,
+                       int32_t tol_q8);
+
+/* Exactly sl_near_segment() of any of r->segments[0 .. nseg-1] for the
+ * full-resolution point (x, y) (Q8, inside the frame). */
+int sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t nseg, int32_t x,
+                     int32_t y, int32_t tol_q8);
+
+#endif /* SYMLINE_SEGINDEX_H */
