@@ -7,6 +7,7 @@
 
 #include "common.h"
 #include "curvejoin.h"
+#include "fixed.h"
 #include "linefilter.h"
 #include "merge.h"
 #include "pass.h"
@@ -30,14 +31,14 @@ void symline_config_default(symline_config *cfg)
     cfg->contrast_min = 3u;
     cfg->contrast_asym_pct = 150u;
     cfg->min_length = 12u;
-    cfg->curve_dev_q8 = 512u;
-    cfg->curve_bend_q8 = 80u;
-    cfg->merge_gap = 0xFFFFFFFFu;
-    cfg->merge_dev_q8 = 640u;
+    cfg->curve_dev_q8 = SL_PX_Q8(2u);
+    cfg->curve_bend_q8 = 80u; /* 0.31 px */
+    cfg->merge_gap = SYMLINE_MERGE_GAP_AUTO;
+    cfg->merge_dev_q8 = SL_PX_Q8(5u) / 2u; /* 2.5 px */
 }
 
-#define SL_MAX_DETECT_RADIUS 32u
-#define SL_MAX_LEVELS 5u
+/* Largest value of the Q8 length settings: the largest frame dimension. */
+#define SL_MAX_LENGTH_Q8 (SYMLINE_MAX_DIM << SL_Q8_SHIFT)
 
 static symline_status check_config(const symline_config *c)
 {
@@ -45,7 +46,7 @@ static symline_status check_config(const symline_config *c)
         c->axes != SYMLINE_AXES_BOTH) {
         return SYMLINE_ERR_CONFIG;
     }
-    if (c->radius < 1u || c->radius > SL_MAX_DETECT_RADIUS || c->levels > SL_MAX_LEVELS) {
+    if (c->radius < 1u || c->radius > SYMLINE_DETECT_MAX_RADIUS || c->levels > SYMLINE_DETECT_MAX_LEVELS) {
         return SYMLINE_ERR_CONFIG;
     }
     if (c->filter != SYMLINE_FILTER_CONTRAST && c->filter != SYMLINE_FILTER_PAPER) {
@@ -53,10 +54,10 @@ static symline_status check_config(const symline_config *c)
     }
     if (c->illumination > 255u || c->adaptive > 1u || c->bright_sigma10 < -100 ||
         c->bright_sigma10 > 100 || c->ridge_sigma10 > 100u || c->side_sigma10 < -100 ||
-        c->side_sigma10 > 100 || c->a_distance > 32u || c->contrast_pct > 100u ||
+        c->side_sigma10 > 100 || c->a_distance > SYMLINE_DETECT_MAX_A_DISTANCE || c->contrast_pct > 100u ||
         c->contrast_min > 255u || c->contrast_asym_pct > 1000u || c->min_length > SYMLINE_MAX_DIM ||
-        c->curve_dev_q8 > (SYMLINE_MAX_DIM << 8) || c->curve_bend_q8 > (SYMLINE_MAX_DIM << 8) ||
-        c->merge_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
+        c->curve_dev_q8 > SL_MAX_LENGTH_Q8 || c->curve_bend_q8 > SL_MAX_LENGTH_Q8 ||
+        c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
         return SYMLINE_ERR_CONFIG;
     }
     return SYMLINE_OK;
@@ -71,7 +72,7 @@ static uint32_t level_count(const symline_config *c, uint32_t width, uint32_t he
     const uint32_t span = 2u * c->radius + 1u;
     if (L == 0u) {
         L = 1u;
-        while (L < SL_MAX_LEVELS && (span << (L - 1u)) < width / 16u) {
+        while (L < SYMLINE_DETECT_MAX_LEVELS && (span << (L - 1u)) < width / 16u) {
             L++;
         }
     }
@@ -166,7 +167,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.nseg = 0u;
     d.prev_seg = 0u;
     d.npts = 0u;
-    d.truncated = 0u;
+    d.truncated = false;
     d.stats.mean = 0u;
     d.stats.sigma_q4 = 0u;
     if (cfg->adaptive) {
@@ -176,10 +177,12 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     out->point_count = d.npts;
     out->segment_count = d.nseg;
     if (cfg->merge_gap != 0u) {
-        const uint32_t gap = cfg->merge_gap == 0xFFFFFFFFu ? img->width / 8u : cfg->merge_gap;
+        const uint32_t gap = cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? img->width / 8u : cfg->merge_gap;
         sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
     }
-    sl_curve_join(out, cfg->curve_bend_q8 != 0u);
+    if (cfg->curve_bend_q8 != 0u) {
+        sl_curve_join(out);
+    }
     out->truncated = d.truncated;
     return SYMLINE_OK;
 }

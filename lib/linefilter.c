@@ -93,11 +93,11 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
  * At most 4096 points are summed, so every product stays in 32 bits.
  */
 #define SL_SIDE_SAMPLES 4096u
-SL_NOINLINE int sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
+SL_NOINLINE bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
                                            symline_axis axis, uint32_t level, uint32_t k,
                                            const symline_point *q, uint32_t n)
 {
-    const int horiz = axis == SYMLINE_AXIS_HORIZONTAL;
+    const bool horiz = axis == SYMLINE_AXIS_HORIZONTAL;
     const uint32_t half = (1u << level) >> 1, off = k << level;
     const uint32_t step = n / SL_SIDE_SAMPLES + 1u;
     const size_t across = horiz ? img->stride : 1u;

@@ -40,6 +40,6 @@ size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width);
  */
 symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
                           symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
-                          uint8_t *truncated);
+                          bool *truncated);
 
 #endif /* SYMLINE_LIB_LINEPOINTS_H */

@@ -34,17 +34,17 @@ void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uin
 }
 
 
-static int covered(const sl_run *d, const symline_point *q, uint32_t level)
+static bool covered(const sl_run *d, const symline_point *q, uint32_t level)
 {
     const int32_t x = sl_q8(q->x, level), y = sl_q8(q->y, level);
     const int32_t tol = (int32_t)(SL_COVER_TOL_Q8 + sl_block_q8(level));
     uint32_t i;
     for (i = 0; i < d->prev_seg; i++) {
         if (sl_near_segment(&d->r->segments[i], d->r->points, x, y, tol)) {
-            return 1;
+            return true;
         }
     }
-    return 0;
+    return false;
 }
 
 /* One piece of a chain (grid coordinates, absolute storage index `at`). */
@@ -62,7 +62,7 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
         return;
     }
     if (d->nseg >= d->r->segment_cap) {
-        d->truncated = 1u;
+        d->truncated = true;
         return;
     }
     s = &d->r->segments[d->nseg++];
@@ -115,7 +115,7 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     const uint32_t base = d->npts;
     const uint32_t first_seg = d->nseg;
     uint32_t tail = base + n, cnt, k, w;
-    uint8_t cut = 0u;
+    bool cut = false;
     /* Chains go to the storage's free tail after the raster list. */
     sl_tracer_init(t, r->points + base, n, row_start, p->h);
     while (tail < r->point_cap &&
@@ -124,7 +124,7 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
         tail += cnt;
     }
     if (cut || (tail >= r->point_cap && n > 0u)) {
-        d->truncated = 1u;
+        d->truncated = true;
     }
     /* Keep only the points the new segments use, right after the earlier ones. */
     w = base;

@@ -22,7 +22,7 @@ typedef struct sl_run {
     uint32_t prev_seg;        /* segments of earlier passes: [0, prev_seg) */
     uint32_t npts;            /* points kept so far: [0, npts) */
     sl_frame_stats stats;     /* for the adaptive thresholds (cfg->adaptive) */
-    uint8_t truncated;
+    bool truncated;
 } sl_run;
 
 /* Fills a pass from the configuration (no range checks; the adaptive

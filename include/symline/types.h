@@ -10,6 +10,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "symline/version.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -38,8 +40,7 @@ typedef enum symline_status {
     SYMLINE_ERR_AXIS = -5,          /* axis is not one of enum symline_axis */
     SYMLINE_ERR_BUFFER = -6,        /* an output buffer or workspace is too small */
     SYMLINE_ERR_RANGE = -7,         /* a row/strip index or count is out of range */
-    SYMLINE_ERR_CONFIG = -8,        /* a configuration field is out of its range */
-    SYMLINE_ERR_OVERFLOW = -9       /* a size does not fit size_t on this target */
+    SYMLINE_ERR_CONFIG = -8         /* a configuration field is out of its range */
 } symline_status;
 
 /* A short, static English name for a status code (never NULL). */

@@ -47,7 +47,7 @@ static uint32_t trace_all(map *m, uint32_t *len, symline_point (*ends)[2], uint3
     sl_tracer t;
     symline_point dst[MAXP];
     uint32_t c = 0u, count;
-    uint8_t cut = 0u;
+    bool cut = false;
     sl_tracer_init(&t, m->pts, m->n, m->row_start, m->h);
     while (sl_tracer_next(&t, dst, MAXP, &count, &cut)) {
         assert_true(c < maxc);
@@ -117,7 +117,7 @@ static void l_corner(void **state)
     symline_point dst[MAXP];
     sl_tracer t;
     uint32_t count, cut_at;
-    uint8_t cut = 0u;
+    bool cut = false;
     (void)state;
     ROWS("#.........", "#.........", "#.........", "#.........", "#.........", "#.........",
          "#########.");
@@ -223,7 +223,7 @@ static void storage_exhaustion(void **state)
     sl_tracer t;
     symline_point dst[8];
     uint32_t count, i;
-    uint8_t cut = 0u;
+    bool cut = false;
     (void)state;
     ROWS("##########");
     for (i = 0; i < 8u; i++) {
@@ -238,7 +238,7 @@ static void storage_exhaustion(void **state)
         assert_int_equal(dst[i].x, 0xBEEFu); /* nothing beyond the capacity */
     }
     /* The rest is still there and comes out as further chains. */
-    cut = 0u;
+    cut = false;
     assert_int_equal(sl_tracer_next(&t, dst, 8, &count, &cut), 1);
     assert_int_equal(count, 6);
     assert_int_equal(cut, 0);
@@ -327,7 +327,7 @@ static void merge_collinear(void **state)
     r.points = pts;
     r.point_cap = 64;
     r.point_count = 23;
-    r.truncated = 0;
+    r.truncated = false;
     sl_merge(&r, 8, 640, 512); /* gap 11 px > 8: no merge */
     assert_int_equal(r.segment_count, 3);
     sl_merge(&r, 12, 640, 512);
@@ -404,7 +404,7 @@ static void line_continuing_a_curve_is_a_curve(void **state)
         pts[n].y = (uint16_t)(201u + i);
     }
     seg_of(&segs[2], pts, 61, 20, SYMLINE_KIND_LINE);
-    /* Line 3 continues the curve too, but it was merged (reserved = 1): its
+    /* Line 3 continues the curve too, but it was merged: its
      * points run back and forth, no polyline through them, so it stays a line. */
     for (i = 0; i < 20u; i++, n++) {
         pts[n].x = (uint16_t)(i < 10u ? 9u - i : i - 10u + 0u);
@@ -413,23 +413,19 @@ static void line_continuing_a_curve_is_a_curve(void **state)
     seg_of(&segs[3], pts, 81, 20, SYMLINE_KIND_LINE);
     segs[3].x0 = 9 * 256;
     segs[3].x1 = 0;
-    segs[3].reserved = 1;
+    segs[3].merged = true;
     r.segments = segs;
     r.segment_cap = 4;
     r.segment_count = 4;
     r.points = pts;
     r.point_cap = 128;
     r.point_count = n;
-    r.truncated = 0;
-    sl_curve_join(&r, 0); /* off: nothing changes but the flags */
-    assert_int_equal(segs[1].kind, SYMLINE_KIND_LINE);
-    assert_int_equal(segs[3].reserved, 0);
-    segs[3].reserved = 1;
-    sl_curve_join(&r, 1);
+    r.truncated = false;
+    sl_curve_join(&r);
     assert_int_equal(segs[1].kind, SYMLINE_KIND_CURVE);
     assert_int_equal(segs[2].kind, SYMLINE_KIND_LINE);
     assert_int_equal(segs[3].kind, SYMLINE_KIND_LINE);
-    assert_int_equal(segs[3].reserved, 0);
+    assert_true(segs[3].merged);
     assert_int_equal(r.segment_count, 4);
 }
 
