@@ -67,7 +67,7 @@ static inline symline_status sl_check_radius(uint32_t m)
 static inline symline_status sl_check_axis(symline_axis axis)
 {
     return (axis == SYMLINE_AXIS_HORIZONTAL || axis == SYMLINE_AXIS_VERTICAL) ? SYMLINE_OK
-                                                                               : SYMLINE_ERR_AXIS;
+                                                                              : SYMLINE_ERR_AXIS;
 }
 
 /* True when a workspace query's arguments are valid (sizes 1..65535, known axis, radius 1..255). */

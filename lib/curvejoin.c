@@ -32,7 +32,7 @@ static void line_dir(const symline_segment *s, int32_t *dx, int32_t *dy)
  * (Q8, in x and y) of it, s leaving that end where c came from, within 30
  * degrees. */
 static bool continues(const symline_segment *s, const symline_segment *c, const symline_point *pts,
-                     int32_t tol)
+                      int32_t tol)
 {
     const symline_point *p = pts + c->first;
     const int32_t last = (int32_t)c->count - 1;

@@ -46,7 +46,8 @@ static symline_status check_config(const symline_config *c)
         c->axes != SYMLINE_AXES_BOTH) {
         return SYMLINE_ERR_CONFIG;
     }
-    if (c->radius < 1u || c->radius > SYMLINE_DETECT_MAX_RADIUS || c->levels > SYMLINE_DETECT_MAX_LEVELS) {
+    if (c->radius < 1u || c->radius > SYMLINE_DETECT_MAX_RADIUS ||
+        c->levels > SYMLINE_DETECT_MAX_LEVELS) {
         return SYMLINE_ERR_CONFIG;
     }
     if (c->filter != SYMLINE_FILTER_CONTRAST && c->filter != SYMLINE_FILTER_PAPER) {
@@ -54,10 +55,10 @@ static symline_status check_config(const symline_config *c)
     }
     if (c->illumination > 255u || c->adaptive > 1u || c->bright_sigma10 < -100 ||
         c->bright_sigma10 > 100 || c->ridge_sigma10 > 100u || c->side_sigma10 < -100 ||
-        c->side_sigma10 > 100 || c->a_distance > SYMLINE_DETECT_MAX_A_DISTANCE || c->contrast_pct > 100u ||
-        c->contrast_min > 255u || c->contrast_asym_pct > 1000u || c->min_length > SYMLINE_MAX_DIM ||
-        c->curve_dev_q8 > SL_MAX_LENGTH_Q8 || c->curve_bend_q8 > SL_MAX_LENGTH_Q8 ||
-        c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
+        c->side_sigma10 > 100 || c->a_distance > SYMLINE_DETECT_MAX_A_DISTANCE ||
+        c->contrast_pct > 100u || c->contrast_min > 255u || c->contrast_asym_pct > 1000u ||
+        c->min_length > SYMLINE_MAX_DIM || c->curve_dev_q8 > SL_MAX_LENGTH_Q8 ||
+        c->curve_bend_q8 > SL_MAX_LENGTH_Q8 || c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
         return SYMLINE_ERR_CONFIG;
     }
     return SYMLINE_OK;
@@ -95,7 +96,8 @@ static symline_axis axis_of(const symline_config *c, uint32_t i)
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
 }
 
-SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const symline_config *cfg)
+SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height,
+                                                 const symline_config *cfg)
 {
     uint32_t L, l, a;
     size_t best = 0u;
@@ -177,7 +179,8 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     out->point_count = d.npts;
     out->segment_count = d.nseg;
     if (cfg->merge_gap != 0u) {
-        const uint32_t gap = cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? img->width / 8u : cfg->merge_gap;
+        const uint32_t gap =
+            cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? img->width / 8u : cfg->merge_gap;
         sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
     }
     if (cfg->curve_bend_q8 != 0u) {

@@ -68,8 +68,9 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
 {
     const uint32_t mean = st->mean, sigma_q4 = st->sigma_q4;
     const int64_t t = (int64_t)mean + (int64_t)cfg->bright_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
-    const uint32_t ridge = (uint32_t)(((uint64_t)cfg->ridge_sigma10 * sigma_q4 +
-                                       SL_SIGMA10_Q4_DIV / 2u) / SL_SIGMA10_Q4_DIV);
+    const uint32_t ridge =
+        (uint32_t)(((uint64_t)cfg->ridge_sigma10 * sigma_q4 + SL_SIGMA10_Q4_DIV / 2u) /
+                   SL_SIGMA10_Q4_DIV);
     const uint32_t bright = t < 0 ? 0u : (t > 255 ? 255u : (uint32_t)t);
     if (bright > f->min_gray) {
         f->min_gray = bright;
@@ -78,7 +79,8 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
         f->ridge_min = ridge;
     }
     if (cfg->side_sigma10 < SL_SIDE_SIGMA10_OFF) {
-        const int64_t sm = (int64_t)mean + (int64_t)cfg->side_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
+        const int64_t sm =
+            (int64_t)mean + (int64_t)cfg->side_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
         f->side_max = sm < 0 ? 0u : (sm > 255 ? 255u : (uint32_t)sm);
     }
 }
@@ -94,8 +96,8 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
  */
 #define SL_SIDE_SAMPLES 4096u
 SL_NOINLINE bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
-                                           symline_axis axis, uint32_t level, uint32_t k,
-                                           const symline_point *q, uint32_t n)
+                                            symline_axis axis, uint32_t level, uint32_t k,
+                                            const symline_point *q, uint32_t n)
 {
     const bool horiz = axis == SYMLINE_AXIS_HORIZONTAL;
     const uint32_t half = (1u << level) >> 1, off = k << level;

@@ -73,7 +73,7 @@ static inline bool sl_linefilter_gray(const sl_linefilter *f, uint32_t c, uint32
  * rows. Inline like the gray test: it runs for every S point that passed it.
  */
 static inline bool sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *map, uint32_t ring,
-                                       size_t step, uint32_t n, uint32_t at)
+                                        size_t step, uint32_t n, uint32_t at)
 {
     const uint32_t d = f->a_distance;
     const uint32_t lo = at >= d ? at - d : 0u;
@@ -90,11 +90,10 @@ static inline bool sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *m
 /*
  * The contrast filter's "sides alike" test once more, over a whole traced
  * piece q[0..n-1] (grid coordinates at `level`; k: the pass's sample offset
- * across the line in grid px): 1 when its sides differ too much for a line
+ * across the line in grid px): true when its sides differ too much for a line
  * on the carpet. Only for the contrast filter with asym_pct != 0.
  */
-bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
-                               symline_axis axis, uint32_t level, uint32_t k,
-                               const symline_point *q, uint32_t n);
+bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img, symline_axis axis,
+                                uint32_t level, uint32_t k, const symline_point *q, uint32_t n);
 
 #endif /* SYMLINE_LIB_LINEFILTER_H */

@@ -20,7 +20,6 @@ static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
     return (uint64_t)(dx * dx + dy * dy);
 }
 
-
 /* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
 static void end_of(const symline_segment *a, const symline_segment *b, uint32_t i, int32_t *x,
                    int32_t *y)
@@ -32,8 +31,8 @@ static void end_of(const symline_segment *a, const symline_segment *b, uint32_t 
 
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece). */
-SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b,
-                                 uint64_t gap2, uint32_t dev_q8, int32_t ends[4])
+SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b, uint64_t gap2,
+                                  uint32_t dev_q8, int32_t ends[4])
 {
     const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
     const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;

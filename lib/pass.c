@@ -33,7 +33,6 @@ void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uin
     sl_linefilter_setup(&p->filter, cfg);
 }
 
-
 static bool covered(const sl_run *d, const symline_point *q, uint32_t level)
 {
     const int32_t x = sl_q8(q->x, level), y = sl_q8(q->y, level);
@@ -145,8 +144,8 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 /* The pass's raster list into the free part of the point storage (after
  * d->npts); returns its length. Apart from sl_pass_run() so that the
  * collection's call and the tracing's are never on the stack together. */
-SL_NOINLINE static uint32_t collect(sl_run *d, const sl_pass *p, uint8_t *ws,
-                                    const uint8_t *end, uint32_t *row_start)
+SL_NOINLINE static uint32_t collect(sl_run *d, const sl_pass *p, uint8_t *ws, const uint8_t *end,
+                                    uint32_t *row_start)
 {
     uint32_t n = 0u;
     (void)sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,

@@ -18,10 +18,10 @@ typedef struct sl_run {
     const symline_config *cfg;
     const symline_image *img; /* the frame, for the pieces' side test */
     symline_result *r;
-    uint32_t nseg;            /* segments so far */
-    uint32_t prev_seg;        /* segments of earlier passes: [0, prev_seg) */
-    uint32_t npts;            /* points kept so far: [0, npts) */
-    sl_frame_stats stats;     /* for the adaptive thresholds (cfg->adaptive) */
+    uint32_t nseg;        /* segments so far */
+    uint32_t prev_seg;    /* segments of earlier passes: [0, prev_seg) */
+    uint32_t npts;        /* points kept so far: [0, npts) */
+    sl_frame_stats stats; /* for the adaptive thresholds (cfg->adaptive) */
     bool truncated;
 } sl_run;
 

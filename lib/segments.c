@@ -76,7 +76,6 @@ uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t
     return sl_div_q8(cross, len);
 }
 
-
 uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
                     int32_t x1, int32_t y1)
 {
@@ -101,8 +100,7 @@ uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t 
 /* A curve bends away from its chord by more than the threshold and by more
  * than 1/32 of the chord: a straight line's pixel steps and noise stay near
  * 1-2 px however long it is, while an arc's sagitta grows with its chord. */
-bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
-                       uint32_t thr)
+bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr)
 {
     const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
     const uint64_t chord = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
@@ -124,12 +122,12 @@ static void shrink(int64_t *a, int64_t *b, unsigned bits)
  * in integers: the ends become the first and last point projected onto it,
  * which gives sub-pixel ends and removes the one-pixel jitter of traced
  * points. Long chains are sampled (at most 2048 points) so that every sum and
- * every division stays in 32 bits; only products use 64 bits. Returns 0 when
+ * every division stays in 32 bits; only products use 64 bits. Returns false when
  * the scatter has no direction (all points equal).
  */
 #define SL_FIT_SAMPLES 2048u
 SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
-                               symline_segment *s)
+                                symline_segment *s)
 {
     /* Coordinates in Q4 full resolution, relative to the first point. */
     const int32_t ox = sl_q8(p[0].x, level), oy = sl_q8(p[0].y, level);
@@ -244,11 +242,11 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
             symline_segment *s)
 {
     const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
+    bool curve;
     chord_ends(p, n, level, s);
     s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
-    s->kind = (uint8_t)(sl_is_curve(s->x0, s->y0, s->x1, s->y1, s->max_dev, thr)
-                            ? SYMLINE_KIND_CURVE
-                            : SYMLINE_KIND_LINE);
+    curve = sl_is_curve(s->x0, s->y0, s->x1, s->y1, s->max_dev, thr);
+    s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
         s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
     }
@@ -256,9 +254,9 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
     s->merged = false;
 }
 
-/* 1 when (px, py) lies within tol of the segment a-b (all Q8). */
-static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px, int32_t py,
-                             int32_t tol)
+/* True when (px, py) lies within tol of the segment a-b (all Q8). */
+static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px,
+                              int32_t py, int32_t tol)
 {
     /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
     int32_t dx, dy, wx, wy, t2;
@@ -284,8 +282,8 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
      * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
      * no square root and no division, so this stays cheap and shallow. */
     t2 = tol;
-    while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 || wx > 32767 ||
-           wx < -32767 || wy > 32767 || wy < -32767 || t2 > 32767) {
+    while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 || wx > 32767 || wx < -32767 ||
+           wy > 32767 || wy < -32767 || t2 > 32767) {
         dx /= 2;
         dy /= 2;
         wx /= 2;
@@ -301,7 +299,7 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
 #define SL_POLY_STEP 4u
 
 bool sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
-                    int32_t tol_q8)
+                     int32_t tol_q8)
 {
     uint32_t i;
     const symline_point *p = pts + s->first;

@@ -42,6 +42,6 @@ bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_de
 /* True when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
  * (its chord for lines, its points for curves). */
 bool sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
-                    int32_t tol_q8);
+                     int32_t tol_q8);
 
 #endif /* SYMLINE_LIB_SEGMENTS_H */

@@ -35,7 +35,6 @@ void sl_reverse_points(symline_point *p, uint32_t n);
  * coordinates). Returns true for a chain, false when none is left. A chain longer
  * than cap is cut at cap points and *cut is set.
  */
-bool sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count,
-                    bool *cut);
+bool sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count, bool *cut);
 
 #endif /* SYMLINE_LIB_TRACER_H */

@@ -85,6 +85,8 @@ typedef enum symline_kind {
  * Detector settings. Always start from symline_config_default(); the ranges
  * are checked by symline_detect() (SYMLINE_ERR_CONFIG when violated).
  */
+/* (The field comments are laid out by hand.) */
+/* clang-format off */
 typedef struct symline_config {
     symline_axes axes;     /* default SYMLINE_AXES_BOTH */
     uint32_t radius;       /* symmetry radius m, 1..SYMLINE_DETECT_MAX_RADIUS (32);
@@ -138,6 +140,7 @@ typedef struct symline_config {
     uint32_t merge_dev_q8; /* ... and whose ends lie within this distance of the
                               other's line, Q8 px; default 640 (2.5 px) */
 } symline_config;
+/* clang-format on */
 
 /* Fills *cfg with the defaults documented above (no-op on NULL). */
 void symline_config_default(symline_config *cfg);
