@@ -142,27 +142,33 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 }
 
 /* The pass's raster list into the free part of the point storage (after
- * d->npts); returns its length. Apart from sl_pass_run() so that the
- * collection's call and the tracing's are never on the stack together. */
-SL_NOINLINE static uint32_t collect(sl_run *d, const sl_pass *p, uint8_t *ws, const uint8_t *end,
-                                    uint32_t *row_start)
+ * d->npts), *n points. Apart from sl_pass_run() so that the collection's
+ * call and the tracing's are never on the stack together. */
+SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
+                                          const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
-    uint32_t n = 0u;
-    (void)sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
-                     d->r->point_cap - d->npts, &n, row_start, &d->truncated);
-    return n;
+    return sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
+                      d->r->point_cap - d->npts, n, row_start, &d->truncated);
 }
 
 symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end)
 {
     uint8_t *rest = ws;
     uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
-    /* The collection's rings are free again once it returns: the tracer's
-     * state takes their place. */
-    const uint32_t n = collect(d, p, rest, end, row_start);
-    sl_tracer *t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
-    if (row_start == NULL || t == NULL) {
-        return SYMLINE_ERR_BUFFER; /* not reached: the workspace size was checked */
+    uint32_t n = 0u;
+    sl_tracer *t;
+    symline_status st;
+    if (row_start == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    st = collect(d, p, rest, end, row_start, &n);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    /* The collection's rings are free again: the tracer's state takes their place. */
+    t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
+    if (t == NULL) {
+        return SYMLINE_ERR_BUFFER;
     }
     trace(d, p, row_start, n, t);
     return SYMLINE_OK;

@@ -45,7 +45,8 @@ static inline size_t sl_pass_ws_size(const sl_pass *p, uint32_t width)
  * Runs pass p over d->img: appends its segments to d->r and their points
  * after the first d->npts, and updates d. [ws, end): the pass workspace
  * after p itself (which the caller carved first). Returns SYMLINE_OK, or
- * SYMLINE_ERR_BUFFER when the workspace is smaller than sl_pass_ws_size().
+ * SYMLINE_ERR_BUFFER when the workspace is smaller than sl_pass_ws_size()
+ * (then d is unchanged but for d->truncated).
  */
 symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end);
 
