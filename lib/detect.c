@@ -64,34 +64,36 @@ static symline_status check_config(const symline_config *c)
     return SYMLINE_OK;
 }
 
-/* Number of scales: as configured, or enough that the coarsest one reaches
+/* Number of scales (levels): as configured, or enough that the coarsest one reaches
  * lines width/16 px wide (radius m spans lines up to about 2m+1 px); never
  * a grid smaller than the operator's window. */
 static uint32_t level_count(const symline_config *c, uint32_t width, uint32_t height)
 {
-    uint32_t L = c->levels;
+    uint32_t levels = c->levels;
     const uint32_t span = 2u * c->radius + 1u;
-    if (L == 0u) {
-        L = 1u;
-        while (L < SYMLINE_DETECT_MAX_LEVELS && (span << (L - 1u)) < width / 16u) {
-            L++;
+    if (levels == 0u) {
+        levels = 1u;
+        while (levels < SYMLINE_DETECT_MAX_LEVELS && (span << (levels - 1u)) < width / 16u) {
+            levels++;
         }
     }
-    while (L > 1u && ((width >> (L - 1u)) < span + 2u || (height >> (L - 1u)) < span + 2u)) {
-        L--;
+    while (levels > 1u &&
+           ((width >> (levels - 1u)) < span + 2u || (height >> (levels - 1u)) < span + 2u)) {
+        levels--;
     }
-    return L;
+    return levels;
 }
 
+/* The axes of a detection: how many, and the index-th (horizontal first). */
 static uint32_t axis_count(const symline_config *c)
 {
     return c->axes == SYMLINE_AXES_BOTH ? 2u : 1u;
 }
 
-static symline_axis axis_of(const symline_config *c, uint32_t i)
+static symline_axis axis_of(const symline_config *c, uint32_t index)
 {
     if (c->axes == SYMLINE_AXES_BOTH) {
-        return i == 0u ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL;
+        return index == 0u ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL;
     }
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
 }
@@ -99,18 +101,18 @@ static symline_axis axis_of(const symline_config *c, uint32_t i)
 SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height,
                                                  const symline_config *cfg)
 {
-    uint32_t L, l, a;
+    uint32_t levels, level, axis;
     size_t best = 0u;
     if (cfg == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
         height > SYMLINE_MAX_DIM || check_config(cfg) != SYMLINE_OK) {
         return 0u;
     }
-    L = level_count(cfg, width, height);
-    for (l = 0; l < L; l++) {
-        for (a = 0; a < axis_count(cfg); a++) {
+    levels = level_count(cfg, width, height);
+    for (level = 0; level < levels; level++) {
+        for (axis = 0; axis < axis_count(cfg); axis++) {
             sl_pass p;
             size_t n;
-            sl_pass_setup(&p, cfg, axis_of(cfg, a), l, width, height);
+            sl_pass_setup(&p, cfg, axis_of(cfg, axis), level, width, height);
             n = sl_pass_ws_size(&p, width);
             best = n > best ? n : best;
         }
@@ -124,13 +126,13 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
 SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_t ws_size,
                                    sl_run *d)
 {
-    uint32_t L, l, a;
+    uint32_t levels, level, axis;
     uint8_t *cur = ws, *const end = ws + ws_size;
     sl_pass *p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
-    L = level_count(cfg, d->img->width, d->img->height);
-    for (l = 0; l < L && p != NULL; l++) {
-        for (a = 0; a < axis_count(cfg); a++) {
-            sl_pass_setup(p, cfg, axis_of(cfg, a), l, d->img->width, d->img->height);
+    levels = level_count(cfg, d->img->width, d->img->height);
+    for (level = 0; level < levels && p != NULL; level++) {
+        for (axis = 0; axis < axis_count(cfg); axis++) {
+            sl_pass_setup(p, cfg, axis_of(cfg, axis), level, d->img->width, d->img->height);
             if (cfg->adaptive) {
                 sl_linefilter_adapt(&p->filter, cfg, &d->stats);
             }

@@ -104,18 +104,19 @@ SL_NOINLINE bool sl_linefilter_sides_differ(const sl_linefilter *f, const symlin
     const uint32_t step = n / SL_SIDE_SAMPLES + 1u;
     const size_t across = horiz ? img->stride : 1u;
     const uint32_t lim = horiz ? img->height : img->width;
-    uint32_t slo = 0u, shi = 0u, sc = 0u, i, side;
+    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side;
     for (i = 0; i < n; i += step) {
         /* Grid points map inside the frame: (v << level) + half < size. */
         const uint32_t x = ((uint32_t)q[i].x << level) + half;
         const uint32_t y = ((uint32_t)q[i].y << level) + half;
         const uint32_t pos = horiz ? y : x;
         const uint8_t *c = img->data + (size_t)y * img->stride + x;
-        sc += *c;
-        slo += *(c - (size_t)(pos >= off ? off : pos) * across);
-        shi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
+        sum_centre += *c;
+        sum_lo += *(c - (size_t)(pos >= off ? off : pos) * across);
+        sum_hi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
     }
-    side = slo > shi ? slo : shi;
-    return sc <= side ||
-           (slo > shi ? slo - shi : shi - slo) * (2u * f->asym_pct) > (sc - side) * 100u;
+    side = sum_lo > sum_hi ? sum_lo : sum_hi;
+    return sum_centre <= side ||
+           (sum_lo > sum_hi ? sum_lo - sum_hi : sum_hi - sum_lo) * (2u * f->asym_pct) >
+               (sum_centre - side) * 100u;
 }

@@ -157,12 +157,12 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 uint32_t dev;
                 symline_segment *a = &r->segments[i];
                 const symline_segment *b = &r->segments[j];
-                const uint32_t lv = a->level > b->level ? a->level : b->level;
-                const uint32_t thr = curve_dev_q8 + sl_block_half_q8(lv);
+                const uint32_t level = a->level > b->level ? a->level : b->level;
+                const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
                 if (b->kind != SYMLINE_KIND_LINE) {
                     continue;
                 }
-                if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(lv), ends)) {
+                if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(level), ends)) {
                     continue;
                 }
                 dev = joined_dev(a, b, r->points, ends, thr);
@@ -171,7 +171,7 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 }
                 set_ends(a, ends[0], ends[1], ends[2], ends[3]);
                 a->max_dev = dev;
-                a->level = (uint8_t)lv;
+                a->level = (uint8_t)level;
                 a->merged = true; /* points piece after piece (curvejoin.c) */
                 absorb(r, i, j);
                 changed = true;
