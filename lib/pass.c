@@ -7,6 +7,7 @@
  * scale) already reported are left out, so one physical line is reported once.
  */
 #include "detect_internal.h"
+#include "subpixel.h"
 
 static int covered(const sl_run *d, const symline_point *q, uint32_t level)
 {
@@ -60,7 +61,6 @@ SL_NOINLINE static int sides_differ(const sl_run *d, const sl_pass *p, const sym
 static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
 {
     symline_point *q = d->r->points + at;
-    const uint32_t half = (1u << p->level) >> 1;
     symline_segment *s;
     uint32_t i;
     if ((n << p->level) < d->cfg->min_length || n < 2u) {
@@ -74,6 +74,7 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
         return;
     }
     s = &d->r->segments[d->nseg++];
+    sl_subpixel(d->img, p, q, n);
     sl_fit(q, n, p->level, d->cfg->curve_dev_q8, s);
     /* A flat arc stays under the deviation threshold but bends: a curve too.
      * Only at the two finest scales: coarser grids step by 4 px and more. */
@@ -85,8 +86,7 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     s->first = at;
     s->count = n;
     for (i = 0; i < n; i++) {
-        q[i].x = (uint16_t)(((uint32_t)q[i].x << p->level) + half);
-        q[i].y = (uint16_t)(((uint32_t)q[i].y << p->level) + half);
+        sl_pt_to_full(&q[i], p->level);
     }
 }
 
@@ -141,6 +141,8 @@ void sl_trace_pass(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint3
         for (i = 0; i < s->count; i++) {
             r->points[w + i].x = r->points[s->first + i].x;
             r->points[w + i].y = r->points[s->first + i].y;
+            r->points[w + i].fx = r->points[s->first + i].fx;
+            r->points[w + i].fy = r->points[s->first + i].fy;
         }
         s->first = w;
         w += s->count;

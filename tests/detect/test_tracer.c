@@ -249,6 +249,7 @@ static void fit_line_and_curve(void **state)
     symline_segment s;
     uint32_t i;
     (void)state;
+    memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     for (i = 0; i < 40u; i++) {
         p[i].x = (uint16_t)(10u + i);
         p[i].y = (uint16_t)(20u + i / 4u);
@@ -292,6 +293,7 @@ static void merge_collinear(void **state)
     symline_result r;
     uint32_t i;
     (void)state;
+    memset(pts, 0, sizeof(pts)); /* no sub-pixel offsets */
     /* Two pieces of y = 5 (x 0..9 and 20..29) with a curve between them in storage. */
     for (i = 0; i < 10u; i++) {
         pts[i].x = (uint16_t)i;
@@ -345,6 +347,7 @@ static void bend_tells_flat_arc_from_line(void **state)
     symline_segment s;
     uint32_t i;
     (void)state;
+    memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     /* A staircase line (slope 1/4): pixel steps average out. */
     for (i = 0; i < 60u; i++) {
         p[i].x = (uint16_t)(10u + i);
@@ -383,6 +386,7 @@ static void line_continuing_a_curve_is_a_curve(void **state)
     symline_result r;
     uint32_t i, n = 0u;
     (void)state;
+    memset(pts, 0, sizeof(pts)); /* no sub-pixel offsets */
     /* Curve: y = 200 - x^2/80 for x = 0..40 (leaves at 45 degrees up-right). */
     for (i = 0; i <= 40u; i++, n++) {
         pts[n].x = (uint16_t)(10u + i);

@@ -13,6 +13,16 @@ static void put_q8(FILE *f, int32_t v)
             hundredths % 100u);
 }
 
+/* A traced point with its sub-pixel offset (1/128 px) as "[x, y]" after `pre`. */
+static void put_point(FILE *f, const symline_point *p, const char *pre)
+{
+    fputs(pre, f);
+    put_q8(f, (int32_t)p->x * 256 + (int32_t)p->fx * 2);
+    fputs(", ", f);
+    put_q8(f, (int32_t)p->y * 256 + (int32_t)p->fy * 2);
+    fputc(']', f);
+}
+
 int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r)
 {
     uint32_t i, k;
@@ -38,10 +48,10 @@ int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result
             const symline_point *p = r->points + s->first;
             fputs(", \"polyline\": [", f);
             for (k = 0; k < s->count; k += 4u) {
-                fprintf(f, "%s[%u, %u]", k == 0u ? "" : ", ", p[k].x, p[k].y);
+                put_point(f, &p[k], k == 0u ? "[" : ", [");
             }
             if ((s->count - 1u) % 4u != 0u) {
-                fprintf(f, ", [%u, %u]", p[s->count - 1u].x, p[s->count - 1u].y);
+                put_point(f, &p[s->count - 1u], ", [");
             }
             fputc(']', f);
         }
