@@ -9,6 +9,9 @@
  */
 #include "subpixel.h"
 
+/* 255^2: the squared difference counted for a pair that leaves the grid (SPEC 2). */
+#define SL_SUB_DMAX2 65025u
+
 /* Gray value of the grid pixel whose block starts at src: the rounded box mean
  * of 2^level x 2^level frame pixels that sl_grid_row() gives. */
 static uint32_t grid_px(const uint8_t *src, size_t stride, uint32_t level)
@@ -57,7 +60,7 @@ static uint32_t energy_at(const sl_across *a, int32_t k)
     uint32_t e = 0u, j;
     for (j = 1u; j <= a->m; j++) {
         const int32_t sj = (int32_t)j;
-        uint32_t d2 = SL_DMAX2;
+        uint32_t d2 = SL_SUB_DMAX2;
         if (inside(a, k - sj) && inside(a, k + sj)) {
             const int32_t d = (int32_t)gray_at(a, k - sj) - (int32_t)gray_at(a, k + sj);
             d2 = (uint32_t)(d * d);

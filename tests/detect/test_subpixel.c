@@ -14,6 +14,8 @@
 
 #include <cmocka.h>
 
+#include "fixed.h"
+#include "pass.h"
 #include "subpixel.h"
 
 #define W 64
