@@ -76,7 +76,6 @@ static uint32_t energy_at(const sl_across *a, int32_t k)
  * those at i+(j-1), i+j, i+(j+1). Near the border term by term. */
 static void energies3(const sl_across *a, uint32_t e[3])
 {
-    uint32_t l0, l1, r0, r1, j;
     if (a->i < a->m + 1u || a->i + a->m + 1u >= a->n) {
         e[0] = energy_at(a, -1);
         e[1] = energy_at(a, 0);
@@ -86,10 +85,8 @@ static void energies3(const sl_across *a, uint32_t e[3])
     {
         /* Pointers walk out from i: pl to i-(j+1), pr to i+(j+1). */
         const uint8_t *pl = a->at - a->step, *pr = a->at + a->step;
-        l0 = grid_px(a->at, a->stride, a->level);
-        l1 = grid_px(pl, a->stride, a->level);
-        r0 = l0;
-        r1 = grid_px(pr, a->stride, a->level);
+        uint32_t l0 = grid_px(a->at, a->stride, a->level), l1 = grid_px(pl, a->stride, a->level);
+        uint32_t r0 = l0, r1 = grid_px(pr, a->stride, a->level), j;
         e[0] = e[1] = e[2] = 0u;
         for (j = 1u; j <= a->m; j++) {
             uint32_t l2, r2, w;
