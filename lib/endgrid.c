@@ -5,7 +5,8 @@
  */
 #include "endgrid.h"
 
-#include "detect_internal.h"
+#include "common.h"
+#include "fixed.h"
 #include "segindex.h"
 
 static uint32_t cells_across(uint32_t n)
@@ -143,7 +144,8 @@ int32_t sl_endgrid_query(sl_endgrid *g, const symline_segment *a, int64_t ext, i
     for (k = 0; k < pieces; k++) {
         /* Piece k of the stretch, its box grown by margin, in cells. */
         const int64_t qx0 = ax + (bx - ax) * k / pieces, qy0 = ay + (by - ay) * k / pieces;
-        const int64_t qx1 = ax + (bx - ax) * (k + 1) / pieces, qy1 = ay + (by - ay) * (k + 1) / pieces;
+        const int64_t qx1 = ax + (bx - ax) * (k + 1) / pieces,
+                      qy1 = ay + (by - ay) * (k + 1) / pieces;
         const uint32_t cx0 = cell_of((qx0 < qx1 ? qx0 : qx1) - margin, g->cols);
         const uint32_t cx1 = cell_of((qx0 > qx1 ? qx0 : qx1) + margin, g->cols);
         const uint32_t cy0 = cell_of((qy0 < qy1 ? qy0 : qy1) - margin, g->rows);

@@ -4,9 +4,10 @@
  * all-pairs search made a cluttered frame's merge grow with the square of
  * its segment count). Lives in the caller's workspace. Private to the library.
  */
-#ifndef SYMLINE_ENDGRID_H
-#define SYMLINE_ENDGRID_H
+#ifndef SYMLINE_LIB_ENDGRID_H
+#define SYMLINE_LIB_ENDGRID_H
 
+#include "common.h"
 #include "symline/detect.h"
 
 typedef struct sl_endgrid {
@@ -39,4 +40,4 @@ void sl_endgrid_remove(sl_endgrid *g, const symline_segment *s, uint32_t slot);
  */
 int32_t sl_endgrid_query(sl_endgrid *g, const symline_segment *a, int64_t ext, int32_t margin);
 
-#endif /* SYMLINE_ENDGRID_H */
+#endif /* SYMLINE_LIB_ENDGRID_H */

@@ -5,15 +5,26 @@
  * point storage by rotating the points in between (three reversals), so a
  * segment is always one range of points.
  */
-#include "detect_internal.h"
+#include "merge.h"
+
 #include "endgrid.h"
+
+#include "fixed.h"
+#include "segments.h"
+#include "tracer.h"
+
+/* The coarsest scale a segment can come from (its half block widens the
+ * merge's tolerance across the line). */
+#define SL_MAX_LEVEL_SLACK 5u
+
+/* What joined_dev() returns for a pair whose joined piece would be a curve. */
+#define SL_JOINED_IS_CURVE UINT32_MAX
 
 static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
     const int64_t dx = (int64_t)ax - bx, dy = (int64_t)ay - by;
     return (uint64_t)(dx * dx + dy * dy);
 }
-
 
 /* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
 static void end_of(const symline_segment *a, const symline_segment *b, uint32_t i, int32_t *x,
@@ -26,8 +37,8 @@ static void end_of(const symline_segment *a, const symline_segment *b, uint32_t 
 
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece). */
-SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment *b,
-                                 uint64_t gap2, uint32_t dev_q8, int32_t ends[4])
+SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b, uint64_t gap2,
+                                  uint32_t dev_q8, int32_t ends[4])
 {
     const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
     const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
@@ -35,7 +46,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
     const int32_t aax = adx < 0 ? -adx : adx, aay = ady < 0 ? -ady : ady;
     const int32_t abx = bdx < 0 ? -bdx : bdx, aby = bdy < 0 ? -bdy : bdy;
     const int32_t al = aax > aay ? aax : aay, bl = abx > aby ? abx : aby;
-    const int a_longer = al >= bl;
+    const bool a_longer = al >= bl;
     const int32_t dx = a_longer ? adx : bdx;
     const int32_t dy = a_longer ? ady : bdy;
     int64_t lo = 0, hi = 0;
@@ -48,7 +59,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
         uint64_t t;
         end_of(a, b, i, &x, &y);
         if (sl_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
-            return 0;
+            return false;
         }
         end_of(a, b, (i ^ 2u) & 2u, &ox, &oy);
         t = dist2(x, y, ox, oy);
@@ -58,7 +69,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
         g = t < g ? t : g;
     }
     if (g > gap2) {
-        return 0;
+        return false;
     }
     /* New ends: the extreme end points along the longer piece. */
     for (i = 0; i < 4u; i++) {
@@ -77,10 +88,10 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
             ends[3] = y;
         }
     }
-    return 1;
+    return true;
 }
 
-/* The joined piece's max_dev, or 0xFFFFFFFF when it would be a curve. Kept
+/* The joined piece's max_dev, or SL_JOINED_IS_CURVE when it would be a curve. Kept
  * apart from mergeable() so their frames are never on the stack together. */
 SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_segment *b,
                                        const symline_point *pts, const int32_t ends[4],
@@ -90,30 +101,38 @@ SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_s
     const uint32_t d2 =
         sl_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     d = d2 > d ? d2 : d;
-    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], d, curve_q8) ? 0xFFFFFFFFu : d;
+    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], d, curve_q8) ? SL_JOINED_IS_CURVE : d;
+}
+
+/* A segment's ends, Q8. */
+static void set_ends(symline_segment *s, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+{
+    s->x0 = x0;
+    s->y0 = y0;
+    s->x1 = x1;
+    s->y1 = y1;
 }
 
 /* Field-by-field copy (a struct assignment may become a libc memcpy call). */
 static void copy_segment(symline_segment *d, const symline_segment *s)
 {
-    d->x0 = s->x0;
-    d->y0 = s->y0;
-    d->x1 = s->x1;
-    d->y1 = s->y1;
+    set_ends(d, s->x0, s->y0, s->x1, s->y1);
     d->max_dev = s->max_dev;
     d->first = s->first;
     d->count = s->count;
     d->kind = s->kind;
     d->axis = s->axis;
     d->level = s->level;
-    d->reserved = s->reserved;
+    d->merged = s->merged;
 }
 
-/* A slot whose segment was absorbed (kind is 0 or 1 otherwise). */
+/* A slot whose segment was absorbed (kind is a symline_kind otherwise);
+ * the slots are compacted once the merge is done, so that slot numbers stay
+ * those of the grid of ends meanwhile. */
 #define SL_GONE 0xFFu
 
-/* Moves segment j's points right behind segment i's (i < j, ranges ordered)
- * and marks slot j gone; the slots are compacted once the merge is done. */
+/* Moves segment j's points right behind segment i's (i < j, ranges
+ * ordered) and marks slot j gone. */
 static void absorb(symline_result *r, uint32_t i, uint32_t j)
 {
     symline_segment *a = &r->segments[i];
@@ -131,92 +150,93 @@ static void absorb(symline_result *r, uint32_t i, uint32_t j)
     r->segments[j].kind = SL_GONE;
 }
 
-/* Joins line j into line i when the pair passes the merge tests; 1 if it did. */
-static int try_join(symline_result *r, uint32_t i, uint32_t j, uint64_t gap2, uint32_t dev_q8,
-                    uint32_t curve_dev_q8, sl_endgrid *g)
+/* Joins line j into line i when the pair passes the merge's tests. */
+static bool try_join(symline_result *r, uint32_t i, uint32_t j, uint64_t gap2, uint32_t dev_q8,
+                     uint32_t curve_dev_q8, sl_endgrid *g)
 {
     int32_t ends[4];
     uint32_t dev;
     symline_segment *a = &r->segments[i];
     const symline_segment *b = &r->segments[j];
-    const uint32_t lv = a->level > b->level ? a->level : b->level;
-    const uint32_t thr = curve_dev_q8 + (((1u << lv) - 1u) << 7);
+    const uint32_t level = a->level > b->level ? a->level : b->level;
+    const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
     if (b->kind != SYMLINE_KIND_LINE) {
-        return 0;
+        return false;
     }
-    if (!mergeable(a, b, gap2, dev_q8 + (((1u << lv) - 1u) << 7), ends)) {
-        return 0;
+    if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(level), ends)) {
+        return false;
     }
     dev = joined_dev(a, b, r->points, ends, thr);
-    if (dev == 0xFFFFFFFFu) {
-        return 0;
+    if (dev == SL_JOINED_IS_CURVE) {
+        return false;
     }
     if (g->cols != 0u) {
         sl_endgrid_remove(g, a, i);
         sl_endgrid_remove(g, b, j);
     }
-    a->x0 = ends[0];
-    a->y0 = ends[1];
-    a->x1 = ends[2];
-    a->y1 = ends[3];
+    set_ends(a, ends[0], ends[1], ends[2], ends[3]);
     a->max_dev = dev;
-    a->level = (uint8_t)lv;
-    a->reserved = 1u; /* merged: points piece after piece (curvejoin.c) */
+    a->level = (uint8_t)level;
+    a->merged = true; /* points piece after piece (curvejoin.c) */
     absorb(r, i, j);
     if (g->cols != 0u) {
         sl_endgrid_add(g, a, i);
     }
-    return 1;
+    return true;
 }
 
 /*
- * Line i against the lines after it, in slot order, until one joins it (1)
- * or none does (0): the lines whose ends lie near i's line within the gap of
- * its ends, from the grid, or every later line when there is no grid.
+ * Line i against the lines after it, in slot order, until one joins it
+ * (true) or none does: from the grid, the lines with an end near i's line
+ * and within the gap of its ends; without a grid (or too many of them),
+ * every later line.
  */
-static int join_first(symline_result *r, uint32_t i, uint64_t gap2, uint32_t gap_px, uint32_t dev_q8,
-                      uint32_t curve_dev_q8, sl_endgrid *g, int64_t ext_max)
+static bool join_first(symline_result *r, uint32_t i, uint64_t gap2, uint32_t gap_px,
+                       uint32_t dev_q8, uint32_t curve_dev_q8, sl_endgrid *g, int64_t ext_max)
 {
     uint32_t j;
     if (g->cols != 0u) {
-        /* An end of a joining line lies within dev (plus the coarsest scale's
-         * slack, plus rounding) of i's line and within the gap of one of
-         * i's ends. */
-        const int64_t ext = (int64_t)gap_px << 8 < ext_max ? (int64_t)gap_px << 8 : ext_max;
-        const int32_t margin = (int32_t)dev_q8 + (31 << 7) + 512 + (int32_t)(ext_max >> 10);
+        /* A joining line's end lies within dev (plus the coarsest scale's
+         * half block, plus rounding) of i's line, and within the gap of one
+         * of i's ends along it. */
+        const int64_t gap_q8 = (int64_t)gap_px << SL_Q8_SHIFT;
+        const int64_t ext = gap_q8 < ext_max ? gap_q8 : ext_max;
+        const int32_t margin = (int32_t)(dev_q8 + sl_block_half_q8(SL_MAX_LEVEL_SLACK) +
+                                         SL_PX_Q8(2u) + (uint32_t)(ext_max >> 10));
         const int32_t n = sl_endgrid_query(g, &r->segments[i], ext, margin);
         if (n >= 0) {
             int32_t k;
             for (k = 0; k < n; k++) {
                 j = g->cand[k];
                 if (j > i && try_join(r, i, j, gap2, dev_q8, curve_dev_q8, g)) {
-                    return 1;
+                    return true;
                 }
             }
-            return 0;
+            return false;
         }
     }
     for (j = i + 1u; j < r->segment_count; j++) {
         if (try_join(r, i, j, gap2, dev_q8, curve_dev_q8, g)) {
-            return 1;
+            return true;
         }
     }
-    return 0;
+    return false;
 }
 
 void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8,
               uint32_t width, uint32_t height, void *ws, size_t ws_size)
 {
-    const uint64_t gap2 = ((uint64_t)gap_px << 8) * ((uint64_t)gap_px << 8);
-    /* Ends lie within the frame (plus a few px), so no stretch needs to be longer. */
-    const int64_t ext_max = ((int64_t)width + height + 64) << 8;
+    const uint64_t gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
+    /* Segment ends lie within the frame (give or take a few px): no stretch
+     * of a line needs to reach farther than this. */
+    const int64_t ext_max = ((int64_t)width + height + 64) << SL_Q8_SHIFT;
     uint32_t i, w;
-    int changed = 1;
+    bool changed = true;
     sl_endgrid g;
-    /* The grid lives in the workspace, or else in the free end of the point
+    /* The grid lives in the workspace or else in the free end of the point
      * storage (the merge moves points within [0, point_count) only); without
      * room for it every pair is tried, with the same result. */
-    if (dev_q8 > (SYMLINE_MAX_DIM << 8) ||
+    if (dev_q8 > SL_PX_Q8(SYMLINE_MAX_DIM) ||
         (!sl_endgrid_init(&g, ws, ws_size, width, height, r->segment_count) &&
          !sl_endgrid_init(&g, r->points + r->point_count,
                           (size_t)(r->point_cap - r->point_count) * sizeof(symline_point), width,
@@ -229,16 +249,16 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
         }
     }
     /* In slot order, each line takes the first later line that joins it,
-     * again and again (it may now reach lines it missed), until a whole
-     * round joins nothing. */
+     * again and again (the grown line may reach lines it missed), until a
+     * whole round joins nothing. */
     while (changed) {
-        changed = 0;
+        changed = false;
         for (i = 0; i < r->segment_count; i++) {
             if (r->segments[i].kind != SYMLINE_KIND_LINE) {
                 continue;
             }
             while (join_first(r, i, gap2, gap_px, dev_q8, curve_dev_q8, &g, ext_max)) {
-                changed = 1;
+                changed = true;
             }
         }
     }

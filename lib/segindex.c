@@ -14,7 +14,8 @@
  */
 #include "segindex.h"
 
-#include "detect_internal.h"
+#include "common.h"
+#include "segments.h"
 
 static uint32_t cells_across(uint32_t n)
 {
@@ -32,9 +33,9 @@ size_t sl_segindex_ws_size(uint32_t width, uint32_t height)
 typedef struct visit {
     sl_segindex *ix;
     uint32_t seg;
-    int fill;       /* 0: count into end[], 1: write ids at end[] (then advance it),
+    int fill;                    /* 0: count into end[], 1: write ids at end[] (then advance it),
                        -1: take a count back */
-    uint32_t added; /* cells counted for seg */
+    uint32_t added;              /* cells counted for seg */
     uint32_t px0, py0, px1, py1; /* cells of the previous piece (px0 > px1: none) */
 } visit;
 
@@ -80,8 +81,8 @@ static void visit_box(visit *v, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 static void visit_chord(visit *v, int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t tol)
 {
     const int64_t dx = (int64_t)bx - ax, dy = (int64_t)by - ay;
-    const int64_t len = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx)
-                                                                  : (dy < 0 ? -dy : dy);
+    const int64_t len =
+        (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
     const int32_t margin = tol + (int32_t)((len + tol) >> 10) + 256;
     const int64_t n = (len >> (8u + SL_CELL_SHIFT)) + 1;
     int64_t k;
@@ -182,23 +183,23 @@ void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, si
     }
 }
 
-int sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t nseg, int32_t x,
-                     int32_t y, int32_t tol_q8)
+bool sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t nseg, int32_t x,
+                      int32_t y, int32_t tol_q8)
 {
     uint32_t i = 0u, k;
-    if (ix->cols != 0u) {
+    if (ix != NULL && ix->cols != 0u) {
         const uint32_t c = cell_of(y, ix->rows) * ix->cols + cell_of(x, ix->cols);
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
             if (sl_near_segment(&r->segments[ix->ids[k]], r->points, x, y, tol_q8)) {
-                return 1;
+                return true;
             }
         }
         i = ix->indexed;
     }
     for (; i < nseg; i++) {
         if (sl_near_segment(&r->segments[i], r->points, x, y, tol_q8)) {
-            return 1;
+            return true;
         }
     }
-    return 0;
+    return false;
 }

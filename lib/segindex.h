@@ -4,9 +4,10 @@
  * of every one (which made a cluttered frame's detection time grow with the
  * square of its size). Private to the library.
  */
-#ifndef SYMLINE_SEGINDEX_H
-#define SYMLINE_SEGINDEX_H
+#ifndef SYMLINE_LIB_SEGINDEX_H
+#define SYMLINE_LIB_SEGINDEX_H
 
+#include "common.h"
 #include "symline/detect.h"
 
 /* Cells of 1 << SL_CELL_SHIFT full-resolution pixels square. */
@@ -39,8 +40,8 @@ void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, si
                        int32_t tol_q8);
 
 /* Exactly sl_near_segment() of any of r->segments[0 .. nseg-1] for the
- * full-resolution point (x, y) (Q8, inside the frame). */
-int sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t nseg, int32_t x,
-                     int32_t y, int32_t tol_q8);
+ * full-resolution point (x, y) (Q8, inside the frame); ix NULL: no grid. */
+bool sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t nseg, int32_t x,
+                      int32_t y, int32_t tol_q8);
 
-#endif /* SYMLINE_SEGINDEX_H */
+#endif /* SYMLINE_LIB_SEGINDEX_H */

@@ -118,7 +118,8 @@ int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t e
 uint32_t detopts_point_cap(uint32_t width, uint32_t height)
 {
     const uint64_t want = 2u * (uint64_t)width * height + 1024u;
-    return want > 0x3fffffffu ? 0x3fffffffu : (uint32_t)want;
+    const uint64_t lim = 0xFFFFFFFFu / sizeof(symline_point);
+    return want > lim ? (uint32_t)lim : (uint32_t)want;
 }
 
 void detopts_finish(detopts *d)

@@ -1,10 +1,10 @@
 /*
- * Detector options of the host tools: one parser and one help text for
+ * Detector options of the host programs: one parser and one help text for
  * `symline lines|overlay` and `symline-capture`, so both accept exactly the
  * same options with the same ranges and defaults.
  */
-#ifndef SYMLINE_TOOLS_DETOPTS_H
-#define SYMLINE_TOOLS_DETOPTS_H
+#ifndef SYMLINE_HOSTIO_DETOPTS_H
+#define SYMLINE_HOSTIO_DETOPTS_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -39,9 +39,9 @@ void detopts_finish(detopts *d);
 /*
  * Point storage both tools give the detector for a width x height frame: two
  * points per pixel plus 1024 (the storage also holds a pass's raster list of
- * line points, detect.h), at most 0x3fffffff so that the byte size
- * (4 bytes a point) fits a 32-bit size_t; both tools hence report the same
- * result for the same frame.
+ * line points, detect.h), at most what keeps the byte size within 32 bits,
+ * so that it fits a 32-bit size_t; both tools hence report the same result
+ * for the same frame.
  */
 uint32_t detopts_point_cap(uint32_t width, uint32_t height);
 
