@@ -61,6 +61,11 @@ static symline_status check_config(const symline_config *c)
         c->curve_bend_q8 > SL_MAX_LENGTH_Q8 || c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
         return SYMLINE_ERR_CONFIG;
     }
+    /* A gap beyond any frame means nothing, and from 2^24 px its Q8 square
+     * would wrap in 64 bits (a larger gap merging less). */
+    if (c->merge_gap > SYMLINE_MAX_DIM && c->merge_gap != SYMLINE_MERGE_GAP_AUTO) {
+        return SYMLINE_ERR_CONFIG;
+    }
     return SYMLINE_OK;
 }
 

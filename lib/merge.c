@@ -238,9 +238,10 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
      * room for it every pair is tried, with the same result. */
     if (dev_q8 > SL_PX_Q8(SYMLINE_MAX_DIM) ||
         (!sl_endgrid_init(&g, ws, ws_size, width, height, r->segment_count) &&
-         !sl_endgrid_init(&g, r->points + r->point_count,
-                          (size_t)(r->point_cap - r->point_count) * sizeof(symline_point), width,
-                          height, r->segment_count))) {
+         (r->point_count >= r->point_cap ||
+          !sl_endgrid_init(&g, r->points + r->point_count,
+                           (size_t)(r->point_cap - r->point_count) * sizeof(symline_point), width,
+                           height, r->segment_count)))) {
         g.cols = 0u;
     }
     for (i = 0; g.cols != 0u && i < r->segment_count; i++) {

@@ -32,6 +32,13 @@ void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uin
     sl_linefilter_setup(&p->filter, cfg);
 }
 
+/* Point i of the storage; NULL for storage that is NULL (capacity 0, which
+ * detect.h allows): NULL + 0 is undefined behaviour in C. */
+static symline_point *point_at(const symline_result *r, uint32_t i)
+{
+    return r->points != NULL ? r->points + i : NULL;
+}
+
 /* Asks the grid of earlier segments (segindex.h), which tests the few
  * segments near the point instead of every one. */
 static bool covered(const sl_run *d, const symline_point *q, uint32_t level)
@@ -109,9 +116,9 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     uint32_t tail = base + n, cnt, k, w;
     bool cut = false;
     /* Chains go to the storage's free tail after the raster list. */
-    sl_tracer_init(t, r->points + base, n, row_start, p->h);
+    sl_tracer_init(t, point_at(r, base), n, row_start, p->h);
     while (tail < r->point_cap &&
-           sl_tracer_next(t, r->points + tail, r->point_cap - tail, &cnt, &cut)) {
+           sl_tracer_next(t, point_at(r, tail), r->point_cap - tail, &cnt, &cut)) {
         chain(d, p, tail, cnt);
         tail += cnt;
     }
@@ -142,7 +149,7 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
                                           const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
-    return sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
+    return sl_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
                       d->r->point_cap - d->npts, n, row_start, &d->truncated);
 }
 

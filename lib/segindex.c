@@ -15,6 +15,7 @@
 #include "segindex.h"
 
 #include "common.h"
+#include "fixed.h"
 #include "segments.h"
 
 static uint32_t cells_across(uint32_t n)
@@ -78,17 +79,29 @@ static void visit_box(visit *v, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 }
 
 /* The chord a-b (Q8) in pieces of at most a cell, each box grown by margin. */
+static uint32_t scaled(uint32_t u, uint32_t k, uint32_t sh)
+{
+    return (u >> sh) * k + (((u & ((1u << sh) - 1u)) * k) >> sh);
+}
+
+/* The chord a-b (Q8) in 2^sh pieces of at most a cell, each box grown by
+ * margin. 32-bit arithmetic only (a 64-bit division would cost a firmware's
+ * stack a library call): coordinates stay below 2^25, so u * k / 2^sh is
+ * split into parts that fit. */
 static void visit_chord(visit *v, int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t tol)
 {
-    const int64_t dx = (int64_t)bx - ax, dy = (int64_t)by - ay;
-    const int64_t len =
-        (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy);
-    const int32_t margin = tol + (int32_t)((len + tol) >> 10) + 256;
-    const int64_t n = (len >> (8u + SL_CELL_SHIFT)) + 1;
-    int64_t k;
+    const uint32_t ux = (uint32_t)(bx > ax ? bx - ax : ax - bx);
+    const uint32_t uy = (uint32_t)(by > ay ? by - ay : ay - by);
+    const uint32_t len = ux > uy ? ux : uy;
+    const int32_t margin = tol + (int32_t)((len + (uint32_t)tol) >> 10) + 256;
+    uint32_t sh = 0u, k;
     int32_t px = ax, py = ay;
-    for (k = 1; k <= n; k++) {
-        const int32_t qx = (int32_t)(ax + dx * k / n), qy = (int32_t)(ay + dy * k / n);
+    while ((len >> sh) > (SL_PX_Q8(1u) << SL_CELL_SHIFT)) {
+        sh++;
+    }
+    for (k = 1u; k <= (1u << sh); k++) {
+        const int32_t ox = (int32_t)scaled(ux, k, sh), oy = (int32_t)scaled(uy, k, sh);
+        const int32_t qx = bx >= ax ? ax + ox : ax - ox, qy = by >= ay ? ay + oy : ay - oy;
         visit_box(v, (px < qx ? px : qx) - margin, (py < qy ? py : qy) - margin,
                   (px > qx ? px : qx) + margin, (py > qy ? py : qy) + margin);
         px = qx;
@@ -186,9 +199,10 @@ void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, si
 bool sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t nseg, int32_t x,
                       int32_t y, int32_t tol_q8)
 {
-    uint32_t i = 0u, k;
+    uint32_t i = 0u;
     if (ix != NULL && ix->cols != 0u) {
         const uint32_t c = cell_of(y, ix->rows) * ix->cols + cell_of(x, ix->cols);
+        uint32_t k;
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
             if (sl_near_segment(&r->segments[ix->ids[k]], r->points, x, y, tol_q8)) {
                 return true;

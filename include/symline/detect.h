@@ -135,7 +135,7 @@ typedef struct symline_config {
                               two finest scales; a line continuing a curve is
                               a curve too; 0 disables both; default 80 (0.31 px) */
     uint32_t merge_gap;    /* merge collinear lines whose ends are at most this
-                              far apart, px; 0 disables; default
+                              far apart, px, 0..65535; 0 disables; default
                               SYMLINE_MERGE_GAP_AUTO = width / 8 */
     uint32_t merge_dev_q8; /* ... and whose ends lie within this distance of the
                               other's line, Q8 px; default 640 (2.5 px) */
