@@ -74,6 +74,8 @@ expect 2 "big.png: image size 20000x20000 exceeds the limit" -- lines "$tmp/big.
 expect 2 "text.png: unsupported or damaged PNG" -- lines "$tmp/text.png"
 expect 2 "wide.pgm: image size 100000x100000 outside 1..65535" -- lines "$tmp/wide.pgm"
 expect 2 "big.pgm: image size 20000x20000 exceeds the limit" -- lines "$tmp/big.pgm"
+: >"$tmp/empty.pgm"
+expect 2 "empty.pgm: empty file" -- lines "$tmp/empty.pgm"
 expect 2 "/dev/zero: not a PGM or PNG file" -- lines /dev/zero
 expect 2 "/dev/urandom: not a PGM or PNG file" -- lines /dev/urandom
 expect 2 "read error: Is a directory" -- lines "$data"

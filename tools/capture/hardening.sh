@@ -7,9 +7,11 @@
 #     truncated chroma, are errors;
 #   - a --record recording cut by SIGINT or SIGTERM holds every frame the
 #     records report, each complete, and no partial file.
-# usage: hardening.sh SYMLINE-CAPTURE CAPTURE-CHECK SYMLINE DATA-DIR
+#   - with SYMLINE-ADVFRAMES: SIGTERM in the middle of slow, cluttered
+#     frames (2560x1920 rings) ends the loop within one frame time.
+# usage: hardening.sh SYMLINE-CAPTURE CAPTURE-CHECK SYMLINE DATA-DIR [SYMLINE-ADVFRAMES]
 set -u
-app=$1 check=$2 cli=$3 data=$(cd "$4" && pwd)
+app=$1 check=$2 cli=$3 data=$(cd "$4" && pwd) adv=${5:-}
 tmp=$(mktemp -d)
 writer=""
 trap '[ -n "$writer" ] && kill "$writer" 2>/dev/null; rm -rf "$tmp"' EXIT
@@ -69,6 +71,9 @@ else
     ok
 fi
 
+# A record folder that cannot be made.
+expect_fast 1 "cannot create /dev/null/rec" -- --replay "$data" --record 1 /dev/null/rec --summary-every 0
+
 # 4. Recordings cut by a signal: every frame a record reports is recorded whole.
 i=0
 : >"$tmp/frames.txt"
@@ -107,6 +112,35 @@ for sig in INT TERM; do
         ok
     fi
 done
+
+# 5. A stop signal in the middle of cluttered frames: the loop ends within one
+#    frame time (the detection time is bounded; the signal is seen after it).
+if [ -n "$adv" ]; then
+    "$adv" rings 2560 1920 "$tmp/rings.pgm"
+    i=0
+    : >"$tmp/rings.txt"
+    while [ $i -lt 50 ]; do echo "$tmp/rings.pgm" >>"$tmp/rings.txt"; i=$((i + 1)); done
+    "$app" --replay "$tmp/rings.txt" --summary-every 0 >"$tmp/rings.jsonl" 2>"$tmp/err" &
+    pid=$!
+    sleep 3
+    t0=$(date +%s%N)
+    kill -TERM $pid
+    wait $pid
+    got=$?
+    t1=$(date +%s%N)
+    ms=$(( (t1 - t0) / 1000000 ))
+    # One frame's time: the median latency (read + detection), ms.
+    frame_ms=$(sed -n 's/.*"latency_ms": \([0-9.]*\).*/\1/p' "$tmp/rings.jsonl" | sort -n |
+        awk '{a[NR] = $1} END {if (NR) print a[int((NR + 1) / 2)]}')
+    frame_ms=${frame_ms%.*}
+    if [ $got -ne 0 ] || [ -z "$frame_ms" ] || [ $ms -gt $((frame_ms + 250)) ]; then
+        bad "SIGTERM mid-frame: exit $got after $ms ms; a frame takes ${frame_ms:-?} ms (allowed: one frame + 250 ms)"
+        cat "$tmp/err"
+    else
+        echo "SIGTERM mid-frame: stopped after $ms ms; a frame takes $frame_ms ms"
+        ok
+    fi
+fi
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
