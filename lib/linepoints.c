@@ -133,8 +133,11 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img, con
     uint16_t *acc = NULL;
     uint8_t *grow = NULL;
     uint32_t y, x;
-    const uint32_t w = p->w, k = p->k;
-    if (p->level > 0u) {
+    /* The level read once: the scratch rows exist exactly when it is above 0
+     * (GCC's -fanalyzer cannot tell that p->level stays put across the
+     * stores below, and reported a NULL row otherwise). */
+    const uint32_t w = p->w, k = p->k, level = p->level;
+    if (level > 0u) {
         acc = (uint16_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
         grow = (uint8_t *)sl_carve(&cur, end, p->w);
         if (acc == NULL || grow == NULL) {
@@ -147,7 +150,7 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img, con
     for (y = 0; y < p->h; y++) {
         const uint8_t *row;
         row_start[y] = *n;
-        if (p->level == 0u) {
+        if (level == 0u) {
             row = img->data + (size_t)y * img->stride;
         } else {
             sl_grid_row(img, p, y, acc, grow);
