@@ -14,33 +14,30 @@ static uint32_t cells_across(uint32_t n)
     return ((n - 1u) >> SL_CELL_SHIFT) + 1u;
 }
 
-static uint32_t cell_of(int64_t v_q8, uint32_t n)
+sl_endgrid *sl_endgrid_init(void *mem, size_t bytes, uint32_t width, uint32_t height, uint32_t nseg)
 {
-    uint64_t c;
-    if (v_q8 < 0) {
-        return 0u;
-    }
-    c = ((uint64_t)v_q8 >> 8) >> SL_CELL_SHIFT;
-    return c < n ? (uint32_t)c : n - 1u;
-}
-
-int sl_endgrid_init(sl_endgrid *g, void *mem, size_t bytes, uint32_t width, uint32_t height,
-                    uint32_t nseg)
-{
-    uint8_t *cur = (uint8_t *)mem, *const lim = (uint8_t *)mem + bytes;
+    uint8_t *cur = (uint8_t *)mem, *lim;
     const uint32_t cells = cells_across(width) * cells_across(height);
+    sl_endgrid *g;
     uint32_t c;
-    g->cols = 0u;
+    if (mem == NULL) {
+        return NULL;
+    }
+    lim = cur + bytes;
+    g = (sl_endgrid *)sl_carve(&cur, lim, sizeof(sl_endgrid));
+    if (g == NULL) {
+        return NULL;
+    }
     g->head = (uint32_t *)sl_carve(&cur, lim, (size_t)cells * sizeof(uint32_t));
     g->next = (uint32_t *)sl_carve(&cur, lim, (size_t)nseg * 2u * sizeof(uint32_t));
     g->prev = (uint32_t *)sl_carve(&cur, lim, (size_t)nseg * 2u * sizeof(uint32_t));
     if (g->head == NULL || g->next == NULL || g->prev == NULL) {
-        return 0;
+        return NULL;
     }
     /* The rest holds the candidates of a query: at least 64 of them. */
     cur = (uint8_t *)sl_align_up((size_t)(uintptr_t)cur);
     if (cur >= lim || (size_t)(lim - cur) / sizeof(uint32_t) < 64u) {
-        return 0;
+        return NULL;
     }
     g->cand = (uint32_t *)(void *)cur;
     g->cand_cap = (uint32_t)((size_t)(lim - cur) / sizeof(uint32_t) > 0xFFFFFFu
@@ -51,12 +48,12 @@ int sl_endgrid_init(sl_endgrid *g, void *mem, size_t bytes, uint32_t width, uint
     }
     g->cols = cells_across(width);
     g->rows = cells_across(height);
-    return 1;
+    return g;
 }
 
 static void link_node(sl_endgrid *g, uint32_t node, int32_t x, int32_t y)
 {
-    const uint32_t c = cell_of(y, g->rows) * g->cols + cell_of(x, g->cols);
+    const uint32_t c = sl_cell_of(y, g->rows) * g->cols + sl_cell_of(x, g->cols);
     g->prev[node] = SL_END_NONE;
     g->next[node] = g->head[c];
     if (g->head[c] != SL_END_NONE) {
@@ -81,7 +78,7 @@ static void unlink_node(sl_endgrid *g, uint32_t node, int32_t x, int32_t y)
     if (p != SL_END_NONE) {
         g->next[p] = n;
     } else {
-        g->head[cell_of(y, g->rows) * g->cols + cell_of(x, g->cols)] = n;
+        g->head[sl_cell_of(y, g->rows) * g->cols + sl_cell_of(x, g->cols)] = n;
     }
 }
 
@@ -125,53 +122,31 @@ static void sort_u32(uint32_t *v, uint32_t n)
     }
 }
 
-int32_t sl_endgrid_query(sl_endgrid *g, const symline_segment *a, int64_t ext, int32_t margin)
+int32_t sl_endgrid_query(sl_endgrid *g, const symline_segment *a, uint32_t ext, int32_t margin)
 {
-    const int64_t dx = (int64_t)a->x1 - a->x0, dy = (int64_t)a->y1 - a->y0;
-    const int64_t len = (int64_t)sl_isqrt64((uint64_t)(dx * dx + dy * dy));
-    int64_t ax = a->x0, ay = a->y0, bx = a->x1, by = a->y1, cheb, pieces, k;
-    uint32_t n = 0u, i, w, px0 = 1u, px1 = 0u, py0 = 0u, py1 = 0u;
-    if (len > 0) {
-        ax -= dx * ext / len;
-        ay -= dy * ext / len;
-        bx += dx * ext / len;
-        by += dy * ext / len;
+    const int32_t dx = a->x1 - a->x0, dy = a->y1 - a->y0;
+    const uint32_t ux = (uint32_t)(dx < 0 ? -dx : dx), uy = (uint32_t)(dy < 0 ? -dy : dy);
+    const uint32_t cheb = ux > uy ? ux : uy;
+    /* Whole multiples of a's direction, at least ext long (ext + cheb < 2^26). */
+    const int32_t k = cheb > 0u ? (int32_t)(ext / cheb + 1u) : 0;
+    sl_cellwalk q;
+    uint32_t i, w;
+    q.cols = g->cols;
+    q.rows = g->rows;
+    q.mode = SL_WALK_GATHER;
+    q.px0 = 1u;
+    q.px1 = 0u;
+    q.head = g->head;
+    q.next = g->next;
+    q.cand = g->cand;
+    q.cand_cap = g->cand_cap;
+    q.n = 0u;
+    sl_cellwalk_chord(&q, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k, margin);
+    if (q.n > q.cand_cap) {
+        return -1;
     }
-    cheb = (bx - ax < 0 ? ax - bx : bx - ax) > (by - ay < 0 ? ay - by : by - ay)
-               ? (bx - ax < 0 ? ax - bx : bx - ax)
-               : (by - ay < 0 ? ay - by : by - ay);
-    pieces = (cheb >> (8u + SL_CELL_SHIFT)) + 1;
-    for (k = 0; k < pieces; k++) {
-        /* Piece k of the stretch, its box grown by margin, in cells. */
-        const int64_t qx0 = ax + (bx - ax) * k / pieces, qy0 = ay + (by - ay) * k / pieces;
-        const int64_t qx1 = ax + (bx - ax) * (k + 1) / pieces,
-                      qy1 = ay + (by - ay) * (k + 1) / pieces;
-        const uint32_t cx0 = cell_of((qx0 < qx1 ? qx0 : qx1) - margin, g->cols);
-        const uint32_t cx1 = cell_of((qx0 > qx1 ? qx0 : qx1) + margin, g->cols);
-        const uint32_t cy0 = cell_of((qy0 < qy1 ? qy0 : qy1) - margin, g->rows);
-        const uint32_t cy1 = cell_of((qy0 > qy1 ? qy0 : qy1) + margin, g->rows);
-        uint32_t cx, cy;
-        for (cy = cy0; cy <= cy1; cy++) {
-            for (cx = cx0; cx <= cx1; cx++) {
-                uint32_t node;
-                if (cx >= px0 && cx <= px1 && cy >= py0 && cy <= py1) {
-                    continue; /* the previous piece's cells: seen */
-                }
-                for (node = g->head[cy * g->cols + cx]; node != SL_END_NONE; node = g->next[node]) {
-                    if (n == g->cand_cap) {
-                        return -1;
-                    }
-                    g->cand[n++] = node >> 1;
-                }
-            }
-        }
-        px0 = cx0;
-        px1 = cx1;
-        py0 = cy0;
-        py1 = cy1;
-    }
-    sort_u32(g->cand, n);
-    for (i = 0, w = 0; i < n; i++) {
+    sort_u32(g->cand, q.n);
+    for (i = 0, w = 0; i < q.n; i++) {
         if (w == 0u || g->cand[w - 1u] != g->cand[i]) {
             g->cand[w++] = g->cand[i];
         }

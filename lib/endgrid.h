@@ -11,7 +11,7 @@
 #include "symline/detect.h"
 
 typedef struct sl_endgrid {
-    uint32_t cols, rows; /* cells of 1 << SL_CELL_SHIFT px (segindex.h); 0: no grid */
+    uint32_t cols, rows; /* cells of 1 << SL_CELL_SHIFT px (segindex.h) */
     uint32_t *head;      /* per cell: first node, or SL_END_NONE */
     uint32_t *next;      /* per node (2 per segment slot: end 0, end 1): the cell's */
     uint32_t *prev;      /*   doubly linked list */
@@ -21,10 +21,10 @@ typedef struct sl_endgrid {
 
 #define SL_END_NONE 0xFFFFFFFFu
 
-/* Sets up a grid for nseg segment slots of a width x height frame over
- * bytes of mem; returns 0 (then g->cols = 0) when they do not fit. */
-int sl_endgrid_init(sl_endgrid *g, void *mem, size_t bytes, uint32_t width, uint32_t height,
-                    uint32_t nseg);
+/* A grid for nseg segment slots of a width x height frame, carved with its
+ * lists from bytes of mem; NULL when they do not fit (or mem is NULL). */
+sl_endgrid *sl_endgrid_init(void *mem, size_t bytes, uint32_t width, uint32_t height,
+                            uint32_t nseg);
 
 /* Enters or removes the two ends of segment s in slot `slot` (removal
  * before its ends change). */
@@ -33,11 +33,12 @@ void sl_endgrid_remove(sl_endgrid *g, const symline_segment *s, uint32_t slot);
 
 /*
  * The slots whose entered ends lie within `margin` (Q8) of the stretch of
- * segment a's line from `ext` (Q8) before its first end to `ext` after its
- * second (within margin of a's first end when a has no length), in g->cand,
- * ascending, each once. Returns their number, or -1 when more than
- * g->cand_cap were found (the caller then tests every segment).
+ * segment a's line from at least `ext` (Q8, below 2^25) before its first end
+ * to as far after its second (within margin of a's first end when a has no
+ * length), in g->cand, ascending, each once. Returns their number, or -1
+ * when more than g->cand_cap were found (the caller then tests every
+ * segment).
  */
-int32_t sl_endgrid_query(sl_endgrid *g, const symline_segment *a, int64_t ext, int32_t margin);
+int32_t sl_endgrid_query(sl_endgrid *g, const symline_segment *a, uint32_t ext, int32_t margin);
 
 #endif /* SYMLINE_LIB_ENDGRID_H */

@@ -41,10 +41,10 @@ static symline_point *point_at(const symline_result *r, uint32_t i)
 
 /* Asks the grid of earlier segments (segindex.h), which tests the few
  * segments near the point instead of every one. */
-static bool covered(const sl_run *d, const symline_point *q, uint32_t level)
+static bool covered(const sl_run *d, const sl_segindex *ix, const symline_point *q, uint32_t level)
 {
     const int32_t x = sl_q8(q->x, level), y = sl_q8(q->y, level);
-    return sl_segindex_near(d->prev_index, d->r, d->prev_seg, x, y, sl_cover_tol_q8(level));
+    return sl_segindex_near(ix, d->r, d->prev_seg, x, y, sl_cover_tol_q8(level));
 }
 
 /* One piece of a chain (grid coordinates, absolute storage index `at`). */
@@ -81,17 +81,17 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
 }
 
 /* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
-static void chain(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
+static void chain(sl_run *d, const sl_pass *p, const sl_segindex *ix, uint32_t at, uint32_t n)
 {
     const symline_point *c = d->r->points + at;
     uint32_t i = 0u;
     while (i < n) {
         uint32_t j, s;
-        while (i < n && covered(d, &c[i], p->level)) {
+        while (i < n && covered(d, ix, &c[i], p->level)) {
             i++;
         }
         j = i;
-        while (j < n && !covered(d, &c[j], p->level)) {
+        while (j < n && !covered(d, ix, &c[j], p->level)) {
             j++;
         }
         for (s = i; s < j;) {
@@ -108,7 +108,7 @@ static void chain(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
  * state, in the pass workspace. Apart from sl_pass_run() so that its frame
  * and the line point collection's are never on the stack together. */
 SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint32_t n,
-                              sl_tracer *t)
+                              sl_tracer *t, const sl_segindex *ix)
 {
     symline_result *r = d->r;
     const uint32_t base = d->npts;
@@ -119,7 +119,7 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     sl_tracer_init(t, point_at(r, base), n, row_start, p->h);
     while (tail < r->point_cap &&
            sl_tracer_next(t, point_at(r, tail), r->point_cap - tail, &cnt, &cut)) {
-        chain(d, p, tail, cnt);
+        chain(d, p, ix, tail, cnt);
         tail += cnt;
     }
     if (cut || (tail >= r->point_cap && n > 0u)) {
@@ -158,16 +158,19 @@ SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *
  * frame, not quadratic, on cluttered frames). The ids go to the workspace
  * or, when larger, to the point storage beyond what the tracing can write
  * (at most n points after the raster list). */
-SL_NOINLINE static void index_earlier(sl_run *d, const sl_pass *p, sl_segindex *ix, uint8_t *ws,
-                                      const uint8_t *end, uint32_t n)
+SL_NOINLINE static const sl_segindex *index_earlier(const sl_run *d, const sl_pass *p, uint8_t *ws,
+                                                    uint8_t *end, uint32_t n)
 {
+    sl_segindex *ix = (sl_segindex *)sl_carve(&ws, end, sizeof(sl_segindex));
     const uint64_t used = (uint64_t)d->npts + 2u * (uint64_t)n;
     symline_point *spare = used < d->r->point_cap ? d->r->points + (size_t)used : NULL;
     const size_t spare_bytes =
         spare != NULL ? (size_t)(d->r->point_cap - used) * sizeof(symline_point) : 0u;
-    sl_segindex_build(ix, ws, (size_t)(end - ws), spare, spare_bytes, d->img->width, d->img->height,
-                      d->r, d->prev_seg, sl_cover_tol_q8(p->level));
-    d->prev_index = ix;
+    if (ix != NULL) {
+        sl_segindex_build(ix, ws, (size_t)(end - ws), spare, spare_bytes, d->img->width,
+                          d->img->height, d->r, d->prev_seg, sl_cover_tol_q8(p->level));
+    }
+    return ix;
 }
 
 symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end)
@@ -176,7 +179,7 @@ symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *en
     uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
     uint32_t n = 0u;
     sl_tracer *t;
-    sl_segindex *ix;
+    const sl_segindex *ix;
     symline_status st;
     if (row_start == NULL) {
         return SYMLINE_ERR_BUFFER;
@@ -188,12 +191,10 @@ symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *en
     /* The collection's rings are free again: the tracer's state and the grid
      * of earlier segments take their place. */
     t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
-    ix = (sl_segindex *)sl_carve(&rest, end, sizeof(sl_segindex));
-    if (t == NULL || ix == NULL) {
+    ix = t != NULL ? index_earlier(d, p, rest, end, n) : NULL;
+    if (ix == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    index_earlier(d, p, ix, rest, end, n);
-    trace(d, p, row_start, n, t);
-    d->prev_index = NULL;
+    trace(d, p, row_start, n, t, ix);
     return SYMLINE_OK;
 }

@@ -25,7 +25,6 @@ typedef struct sl_run {
     uint32_t npts;        /* points kept so far: [0, npts) */
     sl_frame_stats stats; /* for the adaptive thresholds (cfg->adaptive) */
     bool truncated;
-    const sl_segindex *prev_index; /* [0, prev_seg) on a grid, during a pass's tracing */
 } sl_run;
 
 /* A point of a pass at `level` lies on an earlier segment within 2 px, plus

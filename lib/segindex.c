@@ -30,17 +30,7 @@ size_t sl_segindex_ws_size(uint32_t width, uint32_t height)
            sl_align_up(cells * SL_IDS_PER_CELL * sizeof(uint32_t));
 }
 
-/* What a sweep does with each cell a segment touches. */
-typedef struct visit {
-    sl_segindex *ix;
-    uint32_t seg;
-    int fill;                    /* 0: count into end[], 1: write ids at end[] (then advance it),
-                       -1: take a count back */
-    uint32_t added;              /* cells counted for seg */
-    uint32_t px0, py0, px1, py1; /* cells of the previous piece (px0 > px1: none) */
-} visit;
-
-static uint32_t cell_of(int32_t v_q8, uint32_t n)
+uint32_t sl_cell_of(int32_t v_q8, uint32_t n)
 {
     uint32_t c;
     if (v_q8 < 0) {
@@ -50,80 +40,84 @@ static uint32_t cell_of(int32_t v_q8, uint32_t n)
     return c < n ? c : n - 1u;
 }
 
-static void visit_box(visit *v, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
-{
-    sl_segindex *ix = v->ix;
-    const uint32_t cx0 = cell_of(x0, ix->cols), cx1 = cell_of(x1, ix->cols);
-    const uint32_t cy0 = cell_of(y0, ix->rows), cy1 = cell_of(y1, ix->rows);
-    uint32_t cx, cy;
-    for (cy = cy0; cy <= cy1; cy++) {
-        for (cx = cx0; cx <= cx1; cx++) {
-            const uint32_t c = cy * ix->cols + cx;
-            if (cx >= v->px0 && cx <= v->px1 && cy >= v->py0 && cy <= v->py1) {
-                continue;
-            }
-            if (v->fill > 0) {
-                ix->ids[ix->end[c]++] = v->seg;
-            } else if (v->fill < 0) {
-                ix->end[c]--;
-            } else {
-                ix->end[c]++;
-                v->added++;
-            }
-        }
-    }
-    v->px0 = cx0;
-    v->px1 = cx1;
-    v->py0 = cy0;
-    v->py1 = cy1;
-}
-
-/* The chord a-b (Q8) in pieces of at most a cell, each box grown by margin. */
 static uint32_t scaled(uint32_t u, uint32_t k, uint32_t sh)
 {
     return (u >> sh) * k + (((u & ((1u << sh) - 1u)) * k) >> sh);
 }
 
-/* The chord a-b (Q8) in 2^sh pieces of at most a cell, each box grown by
- * margin. 32-bit arithmetic only (a 64-bit division would cost a firmware's
- * stack a library call): coordinates stay below 2^25, so u * k / 2^sh is
- * split into parts that fit. */
-static void visit_chord(visit *v, int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t tol)
+static void visit_cell(sl_cellwalk *w, uint32_t c)
+{
+    uint32_t node;
+    /* if/else rather than a switch: no jump table helper on small cores. */
+    if (w->mode == SL_WALK_COUNT) {
+        w->end[c]++;
+        w->added++;
+    } else if (w->mode == SL_WALK_UNCOUNT) {
+        w->end[c]--;
+    } else if (w->mode == SL_WALK_FILL) {
+        w->ids[w->end[c]++] = w->seg;
+    } else {
+        for (node = w->head[c]; node != 0xFFFFFFFFu && w->n <= w->cand_cap; node = w->next[node]) {
+            if (w->n < w->cand_cap) {
+                w->cand[w->n] = node >> 1;
+            }
+            w->n++;
+        }
+    }
+}
+
+void sl_cellwalk_chord(sl_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
+                       int32_t margin)
 {
     const uint32_t ux = (uint32_t)(bx > ax ? bx - ax : ax - bx);
     const uint32_t uy = (uint32_t)(by > ay ? by - ay : ay - by);
     const uint32_t len = ux > uy ? ux : uy;
-    const int32_t margin = tol + (int32_t)((len + (uint32_t)tol) >> 10) + 256;
     uint32_t sh = 0u, k;
     int32_t px = ax, py = ay;
+    margin += (int32_t)((len + (uint32_t)margin) >> 10) + SL_PX_Q8(1);
     while ((len >> sh) > (SL_PX_Q8(1u) << SL_CELL_SHIFT)) {
         sh++;
     }
     for (k = 1u; k <= (1u << sh); k++) {
         const int32_t ox = (int32_t)scaled(ux, k, sh), oy = (int32_t)scaled(uy, k, sh);
         const int32_t qx = bx >= ax ? ax + ox : ax - ox, qy = by >= ay ? ay + oy : ay - oy;
-        visit_box(v, (px < qx ? px : qx) - margin, (py < qy ? py : qy) - margin,
-                  (px > qx ? px : qx) + margin, (py > qy ? py : qy) + margin);
+        const uint32_t cx0 = sl_cell_of((px < qx ? px : qx) - margin, w->cols);
+        const uint32_t cx1 = sl_cell_of((px > qx ? px : qx) + margin, w->cols);
+        const uint32_t cy0 = sl_cell_of((py < qy ? py : qy) - margin, w->rows);
+        const uint32_t cy1 = sl_cell_of((py > qy ? py : qy) + margin, w->rows);
+        uint32_t cx, cy;
+        for (cy = cy0; cy <= cy1; cy++) {
+            for (cx = cx0; cx <= cx1; cx++) {
+                if (cx < w->px0 || cx > w->px1 || cy < w->py0 || cy > w->py1) {
+                    visit_cell(w, cy * w->cols + cx);
+                }
+            }
+        }
+        w->px0 = cx0;
+        w->px1 = cx1;
+        w->py0 = cy0;
+        w->py1 = cy1;
         px = qx;
         py = qy;
     }
 }
 
 /* Every piece sl_near_segment() tests for segment s. */
-static void visit_segment(visit *v, const symline_result *r, const symline_segment *s, int32_t tol)
+static void visit_segment(sl_cellwalk *v, const symline_result *r, const symline_segment *s,
+                          int32_t tol)
 {
     const symline_point *p = r->points + s->first;
     uint32_t i;
-    v->px0 = 1u;
+    v->px0 = 1u; /* no previous piece */
     v->px1 = 0u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
-        visit_chord(v, s->x0, s->y0, s->x1, s->y1, tol);
+        sl_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, tol);
         return;
     }
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
-        visit_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8, (int32_t)p[j].x << 8,
-                    (int32_t)p[j].y << 8, tol);
+        sl_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8, (int32_t)p[j].x << 8,
+                          (int32_t)p[j].y << 8, tol);
     }
 }
 
@@ -149,7 +143,7 @@ void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, si
     const uint32_t cells = cells_across(width) * cells_across(height);
     uint32_t c, s, cap, cap2, total = 0u, sum = 0u;
     uint32_t *ids2;
-    visit v;
+    sl_cellwalk v;
     ix->cols = cells_across(width);
     ix->rows = cells_across(height);
     ix->end = (uint32_t *)sl_carve(&cur, lim, (size_t)cells * sizeof(uint32_t));
@@ -164,19 +158,22 @@ void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, si
         ix->ids = ids2;
         cap = cap2;
     }
-    v.ix = ix;
+    v.cols = ix->cols;
+    v.rows = ix->rows;
+    v.end = ix->end;
+    v.ids = ix->ids;
     for (c = 0; c < cells; c++) {
         ix->end[c] = 0u;
     }
     /* Count, segment by segment, while the ids fit. */
-    v.fill = 0;
+    v.mode = SL_WALK_COUNT;
     for (s = 0; s < nseg; s++) {
         v.seg = s;
         v.added = 0u;
         visit_segment(&v, r, &r->segments[s], tol_q8);
         if (v.added > cap - total) {
             /* Does not fit: take its counts back; it and later ones stay out. */
-            v.fill = -1;
+            v.mode = SL_WALK_UNCOUNT;
             visit_segment(&v, r, &r->segments[s], tol_q8);
             break;
         }
@@ -189,7 +186,7 @@ void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, si
         ix->end[c] = sum;
         sum += n;
     }
-    v.fill = 1;
+    v.mode = SL_WALK_FILL;
     for (s = 0; s < ix->indexed; s++) {
         v.seg = s;
         visit_segment(&v, r, &r->segments[s], tol_q8);
@@ -201,7 +198,7 @@ bool sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t n
 {
     uint32_t i = 0u;
     if (ix != NULL && ix->cols != 0u) {
-        const uint32_t c = cell_of(y, ix->rows) * ix->cols + cell_of(x, ix->cols);
+        const uint32_t c = sl_cell_of(y, ix->rows) * ix->cols + sl_cell_of(x, ix->cols);
         uint32_t k;
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
             if (sl_near_segment(&r->segments[ix->ids[k]], r->points, x, y, tol_q8)) {

@@ -24,6 +24,35 @@ typedef struct sl_segindex {
     uint32_t indexed;    /* segments [0, indexed) are in the grid */
 } sl_segindex;
 
+/* A walk over the grid cells within margin (Q8, plus the rounding slack of
+ * the library's distance tests: length / 1024 + 1 px) of a chord, in pieces
+ * of at most a cell; each cell is visited once per piece (a cell the
+ * previous piece touched is skipped). What a visit does depends on the
+ * mode: the two sweeps of sl_segindex_build(), or the merge's gathering of
+ * the segment ends listed in the cells (endgrid.c). A switch rather than a
+ * function pointer, so that the firmware's stack analysis can follow it. */
+typedef enum sl_walk_mode {
+    SL_WALK_COUNT,   /* end[c]++ and added++ */
+    SL_WALK_UNCOUNT, /* end[c]-- */
+    SL_WALK_FILL,    /* ids[end[c]++] = seg */
+    SL_WALK_GATHER   /* every node of cell c's list (head, next) appended to cand */
+} sl_walk_mode;
+
+typedef struct sl_cellwalk {
+    uint32_t cols, rows;
+    sl_walk_mode mode;
+    uint32_t px0, py0, px1, py1;     /* the previous piece's cells; set px0 > px1 to start */
+    uint32_t *end, *ids, seg, added; /* COUNT, UNCOUNT, FILL */
+    const uint32_t *head, *next;     /* GATHER */
+    uint32_t *cand, cand_cap, n;     /* GATHER: n found; cap + 1 when full */
+} sl_cellwalk;
+
+void sl_cellwalk_chord(sl_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
+                       int32_t margin);
+
+/* The cell (column or row) of a Q8 coordinate, clamped to 0 .. n-1. */
+uint32_t sl_cell_of(int32_t v_q8, uint32_t n);
+
 /* Bytes of workspace sl_segindex_build() uses for a width x height frame. */
 size_t sl_segindex_ws_size(uint32_t width, uint32_t height);
 

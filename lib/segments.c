@@ -76,12 +76,11 @@ uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t
     return sl_div_q8(cross, len);
 }
 
-uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
-                    int32_t x1, int32_t y1)
+uint64_t sl_max_cross(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
+                      int32_t x1, int32_t y1, uint64_t best)
 {
     const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
     const uint64_t len = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
-    uint64_t best = 0u;
     uint32_t i;
     /* The largest cross product first, one square root and one division at the end. */
     for (i = 0; i < n; i++) {
@@ -91,6 +90,13 @@ uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t 
         const uint64_t a = (uint64_t)(c < 0 ? -c : c);
         best = a > best ? a : best;
     }
+    return best;
+}
+
+uint32_t sl_cross_dev(uint64_t best, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+{
+    const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
+    const uint64_t len = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
     if (len == 0u) {
         return (uint32_t)sl_isqrt64(best);
     }

@@ -33,8 +33,24 @@ uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t
 
 /* Largest distance (Q8) of points p[0..n-1] (grid coordinates at `level`;
  * level 0 for full-resolution points) to the chord (x0,y0)-(x1,y1) (Q8). */
-uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
-                    int32_t x1, int32_t y1);
+/* sl_max_dev() in two steps, for points in several runs: the largest of best
+ * and the runs' cross products (squared distances for a chord without
+ * length), then that as a distance (Q8). */
+uint64_t sl_max_cross(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
+                      int32_t x1, int32_t y1, uint64_t best);
+uint32_t sl_cross_dev(uint64_t best, int32_t x0, int32_t y0, int32_t x1, int32_t y1);
+
+/* Always inline: the two steps run one after the other, not nested (the
+ * firmware's stack depth; -Os would keep a call otherwise). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline uint32_t
+sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0, int32_t x1,
+           int32_t y1)
+{
+    return sl_cross_dev(sl_max_cross(p, n, level, x0, y0, x1, y1, 0u), x0, y0, x1, y1);
+}
 
 /* Curve test: max_dev above thr and above 1/32 of the chord. */
 bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr);

@@ -12,20 +12,27 @@
 
 #include "merge.h"
 
-/* Every test runs twice: with a workspace for the merge's grid of line ends,
- * and without one (every pair is tried); the results must be the same. */
+/* Every test runs three times, with the same results: with a workspace for
+ * the merge's grid of line ends, without one (every pair is tried), and
+ * with no free point storage either (each join rotates the points at once
+ * instead of one layout at the end). */
 typedef struct merge_ws {
     void *mem;
     size_t bytes;
+    bool tight;
 } merge_ws;
 
 static uint64_t ws_mem[1024];
-static merge_ws with_grid = {ws_mem, sizeof ws_mem};
-static merge_ws without_grid = {NULL, 0};
+static merge_ws with_grid = {ws_mem, sizeof ws_mem, false};
+static merge_ws without_grid = {NULL, 0, false};
+static merge_ws without_room = {NULL, 0, true};
 
 static void merge(void **state, symline_result *r, uint32_t gap, uint32_t dev, uint32_t curve)
 {
     const merge_ws *w = (const merge_ws *)*state;
+    if (w->tight) {
+        r->point_cap = r->point_count;
+    }
     sl_merge(r, gap, dev, curve, 64, 48, w->mem, w->bytes);
 }
 
@@ -132,8 +139,10 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_prestate(merge_collinear, &with_grid),
         cmocka_unit_test_prestate(merge_collinear, &without_grid),
+        cmocka_unit_test_prestate(merge_collinear, &without_room),
         cmocka_unit_test_prestate(merge_keeps_bent_joins_apart, &with_grid),
         cmocka_unit_test_prestate(merge_keeps_bent_joins_apart, &without_grid),
+        cmocka_unit_test_prestate(merge_keeps_bent_joins_apart, &without_room),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
