@@ -16,6 +16,7 @@ typedef struct lines_args {
     symline_config cfg;
     const char *in;
     const char *out;
+    uint32_t repeat; /* detections run on the frame (the output is printed once) */
 } lines_args;
 
 static void lines_usage(FILE *f, const char *cmd)
@@ -24,6 +25,9 @@ static void lines_usage(FILE *f, const char *cmd)
     fprintf(f, "usage: symline %s [options] IN%s\n", cmd, ov ? " OUT.png" : "");
     detopts_help(f);
     fprintf(f,
+            "  --repeat N          run the detection N times (1..1000000; default 1) and\n"
+            "                      print it once: (cost(N=11) - cost(N=1)) / 10 is one\n"
+            "                      detection (tools/bench/icount.sh)\n"
             "  IN                  binary PGM or PNG (colour is converted to luma)\n"
             "%s"
             "Prints JSON (SPEC section 7) on stdout%s.\n"
@@ -42,12 +46,20 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     detopts d;
     char err[128];
     detopts_init(&d);
+    a->repeat = 1u;
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
         int rc;
         if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) {
             lines_usage(stdout, argv[0]);
             return 1;
+        }
+        if (strcmp(o, "--repeat") == 0) {
+            if (i + 1 >= argc || detopts_u32(argv[i + 1], 1u, 1000000u, &a->repeat) != 0) {
+                return cli_error("%s: --repeat needs a number 1..1000000", argv[0]);
+            }
+            i++;
+            continue;
         }
         rc = detopts_parse(&d, argc, argv, &i, err, sizeof err);
         if (rc < 0) {
@@ -84,7 +96,8 @@ static int run_lines(int argc, char **argv, int overlay)
     char err[512];
     void *ws;
     size_t ws_size;
-    symline_status st;
+    symline_status st = SYMLINE_OK;
+    uint32_t r;
     int rc = parse_lines_args(argc, argv, &a, overlay ? 2 : 1);
     if (rc != 0) {
         return rc == 1 ? CLI_OK : rc;
@@ -110,7 +123,9 @@ static int run_lines(int argc, char **argv, int overlay)
     if (ws == NULL || res.segments == NULL || res.points == NULL) {
         rc = cli_error("out of memory");
     } else {
-        st = symline_detect(&view, &a.cfg, ws, ws_size, &res);
+        for (r = 0u; r < a.repeat && st == SYMLINE_OK; r++) {
+            st = symline_detect(&view, &a.cfg, ws, ws_size, &res);
+        }
         if (st != SYMLINE_OK) {
             cli_error("%s: %s", argv[0], symline_status_str(st));
             rc = CLI_FAIL;
