@@ -4,6 +4,7 @@
  * merge (merge.c) and the curve continuation (curvejoin.c).
  */
 #include "detect_internal.h"
+#include "stagemark.h"
 
 void symline_config_default(symline_config *cfg)
 {
@@ -184,6 +185,7 @@ SL_NOINLINE static uint32_t run_passes(const symline_image *img, const symline_c
             uint32_t *row_start;
             uint32_t n = 0u;
             sl_tracer *t;
+            SL_STAGE(SETUP);
             sl_pass_setup(p, cfg, axis_of(cfg, a), l, img->width, img->height);
             if (cfg->adaptive) {
                 adapt(p, cfg, d->mean, d->sigma_q4);
@@ -203,8 +205,8 @@ SL_NOINLINE static uint32_t run_passes(const symline_image *img, const symline_c
     return npts;
 }
 
-symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
-                              size_t ws_size, symline_result *out)
+static symline_status detect(const symline_image *img, const symline_config *cfg, void *ws,
+                             size_t ws_size, symline_result *out)
 {
     symline_status st = symline_image_check(img);
     sl_run d;
@@ -234,15 +236,28 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.mean = 0u;
     d.sigma_q4 = 0u;
     if (cfg->adaptive) {
+        SL_STAGE(STATS);
         frame_stats(img, &d.mean, &d.sigma_q4);
     }
     out->point_count = run_passes(img, cfg, (uint8_t *)ws, ws_size, &d);
     out->segment_count = d.nseg;
+    SL_STAGE(MERGE);
     if (cfg->merge_gap != 0u) {
         const uint32_t gap = cfg->merge_gap == 0xFFFFFFFFu ? img->width / 8u : cfg->merge_gap;
         sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
     }
+    SL_STAGE(CURVEJOIN);
     sl_curve_join(out, cfg->curve_bend_q8 != 0u);
     out->truncated = d.truncated;
     return SYMLINE_OK;
+}
+
+symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
+                              size_t ws_size, symline_result *out)
+{
+    symline_status st;
+    SL_STAGE(SETUP);
+    st = detect(img, cfg, ws, ws_size, out);
+    SL_STAGE(NONE);
+    return st;
 }

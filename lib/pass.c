@@ -7,6 +7,7 @@
  * scale) already reported are left out, so one physical line is reported once.
  */
 #include "detect_internal.h"
+#include "stagemark.h"
 
 static int covered(const sl_run *d, const symline_point *q, uint32_t level)
 {
@@ -125,11 +126,15 @@ void sl_trace_pass(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint3
     uint32_t tail = base + n, cnt, k, w;
     uint8_t cut = 0u;
     sl_tracer_init(t, r->points + base, n, row_start, p->h);
+    SL_STAGE(TRACE);
     while (tail < r->point_cap &&
            sl_tracer_next(t, r->points + tail, r->point_cap - tail, &cnt, &cut)) {
+        SL_STAGE(SEGMENTS);
         chain(d, p, tail, cnt);
         tail += cnt;
+        SL_STAGE(TRACE);
     }
+    SL_STAGE(SEGMENTS);
     if (cut || (tail >= r->point_cap && n > 0u)) {
         d->truncated = 1u;
     }
