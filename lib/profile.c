@@ -1,6 +1,8 @@
 /*
- * Stage names for profiling (include/symline/profile.h). The marks themselves
- * are the SL_STAGE() macro of stagemark.h, empty unless SYMLINE_PROFILE is set.
+ * Stage names for profiling (include/symline/profile.h), built into the
+ * profiled library only, so that the plain core carries no profiling code. The
+ * marks themselves are the SL_STAGE() macro of stagemark.h, empty unless
+ * SYMLINE_PROFILE is set.
  */
 #include "symline/profile.h"
 

@@ -1,8 +1,9 @@
 /*
  * symline — stage marks for profiling a detection (optional; off by default).
  *
- * A library built with SYMLINE_PROFILE defined (CMake target symline_profiled,
- * or -DSYMLINE_PROFILE=1 in a firmware's own build of lib/) calls
+ * A library built with SYMLINE_PROFILE defined and lib/profile.c added (CMake
+ * target symline_profiled, or -DSYMLINE_PROFILE=1 in a firmware's own build of
+ * lib/) calls
  *
  *     void symline_profile_mark(symline_stage stage);
  *
@@ -16,7 +17,7 @@
  * the function short and re-entrant-free (it runs on the detector's stack).
  *
  * Without SYMLINE_PROFILE the marks compile to nothing: no call, no symbol,
- * the same machine code as without them. symline_stage_name() is always there.
+ * the same machine code and size as without them.
  */
 #ifndef SYMLINE_PROFILE_H
 #define SYMLINE_PROFILE_H
@@ -41,7 +42,8 @@ typedef enum symline_stage {
     SYMLINE_STAGE_COUNT      /* number of stages, not a stage */
 } symline_stage;
 
-/* A short lower-case name of a stage ("operator"); "?" outside the range. */
+/* A short lower-case name of a stage ("operator"); "?" outside the range.
+ * In the profiled library only (lib/profile.c). */
 const char *symline_stage_name(symline_stage stage);
 
 /* Provided by the application, called only by a library built with SYMLINE_PROFILE. */

@@ -8,9 +8,10 @@
  *
  * Linked with the profiled library (SYMLINE_PROFILE, include/symline/profile.h).
  * Each frame is detected once to warm up, then N times with the stage marks
- * ignored (ms/frame: the median of the N), then N times more with every mark
- * timed (the split by stage: each stage's median over the N; and what the
- * marks themselves cost). Frames are reported by size. Seconds on a shared
+ * ignored (ms/frame: the median of the N, thread CPU time), then N times more
+ * with every mark timed (the split by stage: each stage's median over the N,
+ * less the measured cost of reading the clock in its marks; and the total
+ * with the marks, what they cost). Frames are reported by size. Seconds on a shared
  * machine vary from run to run; for figures to compare across changes count
  * instructions: tools/bench/icount.sh (whole detections) and
  * tools/bench/stages.sh (by stage), both with callgrind.
@@ -46,12 +47,37 @@
 
 /* ---- clock and instruction counter ---- */
 
-/* CPU time of this thread: on a shared machine the other processes' turns do not count. */
-static uint64_t now_ns(void)
+/* CPU time of this thread, for whole detections: on a shared machine the
+ * other processes' turns do not count. */
+static uint64_t cpu_ns(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return (uint64_t)ts.tv_sec * 1000000000u + (uint64_t)ts.tv_nsec;
+}
+
+/* The marks read the same clock, so that the turns of other processes count
+ * in no stage. Reading it costs a system call; calibrate() measures that cost,
+ * and each stage is charged it once per entry less (stage_ns - entries * cost). */
+static uint64_t now_ns(void)
+{
+    return cpu_ns();
+}
+
+static double g_read_ns; /* cost of one clock read (and counter read) in a mark */
+
+static uint64_t instructions(void);
+
+static void calibrate(void)
+{
+    const int n = 20000;
+    int i;
+    uint64_t t0 = now_ns();
+    for (i = 0; i < n; i++) {
+        (void)now_ns();
+        (void)instructions();
+    }
+    g_read_ns = (double)(now_ns() - t0) / n;
 }
 
 static int g_perf_fd = -1; /* user-space instructions of this thread, or -1 */
@@ -94,7 +120,7 @@ static int g_timing;             /* 0: marks are ignored */
 static int g_cg_stage = -1;      /* --callgrind-stage, or -1 */
 static symline_stage g_cur;      /* stage running since the last mark */
 static uint64_t g_t0, g_i0;      /* clock and counter at the last mark */
-static uint64_t g_ns[SYMLINE_STAGE_COUNT], g_ins[SYMLINE_STAGE_COUNT];
+static uint64_t g_ns[SYMLINE_STAGE_COUNT], g_ins[SYMLINE_STAGE_COUNT], g_entries[SYMLINE_STAGE_COUNT];
 
 void symline_profile_mark(symline_stage stage)
 {
@@ -123,6 +149,7 @@ void symline_profile_mark(symline_stage stage)
     g_t0 = t;
     g_i0 = i;
     g_cur = stage < SYMLINE_STAGE_COUNT ? stage : SYMLINE_STAGE_NONE;
+    g_entries[g_cur]++;
 }
 
 /* ---- per size ---- */
@@ -219,9 +246,9 @@ static int bench_frame(const char *path, const symline_config *cfg, uint32_t rep
         g_timing = 0;
         ins0 = instructions();
         for (r = 0; r < repeat; r++) {
-            t0 = now_ns();
+            t0 = cpu_ns();
             (void)symline_detect(&img, cfg, ws, ws_size, &res);
-            times[r] = now_ns() - t0;
+            times[r] = cpu_ns() - t0;
         }
         ins1 = instructions();
         s->ms += median_of(times, repeat, 1u, times) / 1e6;
@@ -231,17 +258,19 @@ static int bench_frame(const char *path, const symline_config *cfg, uint32_t rep
         for (r = 0; r < repeat; r++) {
             memset(g_ns, 0, sizeof g_ns);
             memset(g_ins, 0, sizeof g_ins);
+            memset(g_entries, 0, sizeof g_entries);
             g_cur = SYMLINE_STAGE_NONE;
             g_timing = 1;
-            t0 = now_ns();
-            g_t0 = t0;
+            t0 = cpu_ns();
+            g_t0 = now_ns();
             g_i0 = instructions();
             (void)symline_detect(&img, cfg, ws, ws_size, &res);
             symline_profile_mark(SYMLINE_STAGE_NONE);
             g_timing = 0;
-            times[r] = now_ns() - t0;
+            times[r] = cpu_ns() - t0;
             for (k = 0; k < SYMLINE_STAGE_COUNT; k++) {
-                per[(size_t)r * ps + k] = g_ns[k];
+                const double c = g_read_ns * (double)g_entries[k];
+                per[(size_t)r * ps + k] = (double)g_ns[k] > c ? g_ns[k] - (uint64_t)c : 0u;
                 per[(size_t)r * ps + SYMLINE_STAGE_COUNT + k] = g_ins[k];
             }
         }
@@ -275,7 +304,8 @@ static void report(const size_stats *s)
     for (k = 1; k < SYMLINE_STAGE_COUNT; k++) {
         marked += s->stage_ns[k];
     }
-    printf("  by stage, every mark timed (%.3f ms/frame with the marks):\n", s->ms_marked / n);
+    printf("  by stage, every mark timed (%.3f ms/frame with the marks; %.0f ns per clock read\n"
+           "  taken off each stage per entry):\n", s->ms_marked / n, g_read_ns);
     printf("  %-10s %10s %7s%s\n", "stage", "ms/frame", "share", have_ins ? "   instr/pixel" : "");
     for (k = 1; k < SYMLINE_STAGE_COUNT; k++) {
         printf("  %-10s %10.3f %6.1f%%", symline_stage_name((symline_stage)k),
@@ -376,6 +406,7 @@ int main(int argc, char **argv)
         return 1;
     }
     perf_open();
+    calibrate();
     for (i = 0; i < nframes && rc == 0; i++) {
         rc = bench_frame(frames[i], &d.cfg, repeat, sizes, &nsizes, times, &cg_pixels);
     }
