@@ -37,6 +37,7 @@ typedef enum symline_stage {
     SYMLINE_STAGE_FILTER,    /* line filter: S points to line points */
     SYMLINE_STAGE_TRACE,     /* tracing chains through the line points */
     SYMLINE_STAGE_SEGMENTS,  /* corner cuts, overlap with earlier passes, fits, tests */
+    SYMLINE_STAGE_SUBPIXEL,  /* sub-pixel offsets of a piece's points across the line */
     SYMLINE_STAGE_MERGE,     /* merging collinear pieces */
     SYMLINE_STAGE_CURVEJOIN, /* lines that continue curves */
     SYMLINE_STAGE_COUNT      /* number of stages, not a stage */

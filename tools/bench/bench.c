@@ -320,6 +320,7 @@ static void report(const size_stats *s)
 static void usage(FILE *f)
 {
     fprintf(f, "usage: symline-bench [--callgrind-stage STAGE] [--repeat N] [detector options] FRAME...\n"
+               "       symline-bench --list-stages\n"
                "  --repeat N          timed detections per frame and mode, 1..100000 (default 20)\n"
                "  --callgrind-stage STAGE  under valgrind --tool=callgrind --collect-atstart=no:\n"
                "                      count only STAGE (tools/bench/stages.sh); prints the pixels\n");
@@ -346,6 +347,14 @@ int main(int argc, char **argv)
         int r;
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             usage(stdout);
+            free(frames);
+            return 0;
+        }
+        if (strcmp(argv[i], "--list-stages") == 0) {
+            uint32_t k;
+            for (k = 1; k < SYMLINE_STAGE_COUNT; k++) {
+                printf("%s\n", symline_stage_name((symline_stage)k));
+            }
             free(frames);
             return 0;
         }

@@ -36,7 +36,7 @@ fi
 BENCH=$BUILD/bin/symline-bench
 command -v valgrind >/dev/null || { echo "stages.sh: valgrind is needed (apt-get install -y valgrind)" >&2; exit 2; }
 [ -x "$BENCH" ] || { echo "stages.sh: no $BENCH (build first: cmake --build --preset default)" >&2; exit 2; }
-STAGES="setup stats grid operator extrema filter trace segments merge curvejoin"
+STAGES=$("$BENCH" --list-stages)
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 
