@@ -13,7 +13,7 @@
 #define SL_Q8_SHIFT 8u
 #define SL_Q8_ONE 256u
 /* n whole pixels in Q8 (n an unsigned constant). */
-#define SL_PX_Q8(n) ((n) * SL_Q8_ONE)
+#define SL_PX_Q8(n) ((n) << SL_Q8_SHIFT)
 
 /* What sl_div_q8() returns for a zero length (no quotient). */
 #define SL_Q8_NO_QUOTIENT UINT32_MAX

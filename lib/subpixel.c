@@ -164,7 +164,8 @@ void sl_subpixel(const symline_image *img, const sl_pass *p, symline_point *q, u
     for (k = 0; k < n; k++) {
         int32_t off;
         a.i = vert ? q[k].x : q[k].y;
-        a.at = img->data + ((size_t)q[k].y << p->level) * img->stride + ((size_t)q[k].x << p->level);
+        a.at =
+            img->data + ((size_t)q[k].y << p->level) * img->stride + ((size_t)q[k].x << p->level);
         off = offset_at(&a);
         q[k].fx = (int8_t)(vert ? off : 0);
         q[k].fy = (int8_t)(vert ? 0 : off);
