@@ -6,8 +6,8 @@
 # errors, core rules, render, install) call the binaries directly and need the
 # host; they run in the host steps of tools/test.sh.
 # Installs what it needs (apt-get, as root): gcc-aarch64-linux-gnu,
-# qemu-user-static, and libcmocka-dev:arm64 (Debian multiarch: adds the arm64
-# architecture to dpkg first when it is missing).
+# qemu-user-static, libcmocka-dev:arm64 and libpng-dev:arm64 (Debian multiarch:
+# adds the arm64 architecture to dpkg first when it is missing).
 #
 # usage: tools/aarch64/check.sh [--build DIR] [--vec]
 #   --build DIR  build directory (default: REPO/build-aarch64)
@@ -42,7 +42,11 @@ missing=
 for p in gcc-aarch64-linux-gnu qemu-user-static cmake make pkg-config; do
     dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
 done
-[ "$VEC" -eq 1 ] || dpkg -s libcmocka-dev:arm64 >/dev/null 2>&1 || missing="$missing libcmocka-dev:arm64"
+if [ "$VEC" -eq 0 ]; then
+    for p in libcmocka-dev:arm64 libpng-dev:arm64; do
+        dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+    done
+fi
 if [ -n "$missing" ]; then
     [ "$(id -u)" -eq 0 ] || skip "missing packages:$missing (run as root, or install them)"
     echo "installing:$missing"
