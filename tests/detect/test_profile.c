@@ -48,7 +48,8 @@ static void default_detection_marks_every_stage(void **state)
     void *ws;
     uint32_t k;
     (void)state;
-    snprintf(path, sizeof path, "%s/%s", SYMLINE_TEST_DATA, "msl_20250403_r4_cam3_20250403_221433.pgm");
+    snprintf(path, sizeof path, "%s/%s", SYMLINE_TEST_DATA,
+             "msl_20250403_r4_cam3_20250403_221433.pgm");
     assert_int_equal(imgio_read_gray(path, &g, err, sizeof err), 0);
     img.width = g.width;
     img.height = g.height;

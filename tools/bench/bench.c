@@ -116,11 +116,12 @@ static uint64_t instructions(void)
 
 /* ---- the stage marks ---- */
 
-static int g_timing;             /* 0: marks are ignored */
-static int g_cg_stage = -1;      /* --callgrind-stage, or -1 */
-static symline_stage g_cur;      /* stage running since the last mark */
-static uint64_t g_t0, g_i0;      /* clock and counter at the last mark */
-static uint64_t g_ns[SYMLINE_STAGE_COUNT], g_ins[SYMLINE_STAGE_COUNT], g_entries[SYMLINE_STAGE_COUNT];
+static int g_timing;        /* 0: marks are ignored */
+static int g_cg_stage = -1; /* --callgrind-stage, or -1 */
+static symline_stage g_cur; /* stage running since the last mark */
+static uint64_t g_t0, g_i0; /* clock and counter at the last mark */
+static uint64_t g_ns[SYMLINE_STAGE_COUNT], g_ins[SYMLINE_STAGE_COUNT],
+    g_entries[SYMLINE_STAGE_COUNT];
 
 void symline_profile_mark(symline_stage stage)
 {
@@ -156,10 +157,10 @@ void symline_profile_mark(symline_stage stage)
 
 typedef struct size_stats {
     uint32_t w, h, frames;
-    double ms;         /* sum over frames of the median ms of one detection */
-    double ms_marked;  /* same with every mark timed */
-    double ins;        /* sum over frames of instructions per detection (0: unknown) */
-    double stage_ns[SYMLINE_STAGE_COUNT];  /* per detection, summed over frames */
+    double ms;        /* sum over frames of the median ms of one detection */
+    double ms_marked; /* same with every mark timed */
+    double ins;       /* sum over frames of instructions per detection (0: unknown) */
+    double stage_ns[SYMLINE_STAGE_COUNT]; /* per detection, summed over frames */
     double stage_ins[SYMLINE_STAGE_COUNT];
 } size_stats;
 
@@ -305,7 +306,8 @@ static void report(const size_stats *s)
         marked += s->stage_ns[k];
     }
     printf("  by stage, every mark timed (%.3f ms/frame with the marks; %.0f ns per clock read\n"
-           "  taken off each stage per entry):\n", s->ms_marked / n, g_read_ns);
+           "  taken off each stage per entry):\n",
+           s->ms_marked / n, g_read_ns);
     printf("  %-10s %10s %7s%s\n", "stage", "ms/frame", "share", have_ins ? "   instr/pixel" : "");
     for (k = 1; k < SYMLINE_STAGE_COUNT; k++) {
         printf("  %-10s %10.3f %6.1f%%", symline_stage_name((symline_stage)k),
@@ -319,11 +321,13 @@ static void report(const size_stats *s)
 
 static void usage(FILE *f)
 {
-    fprintf(f, "usage: symline-bench [--callgrind-stage STAGE] [--repeat N] [detector options] FRAME...\n"
-               "       symline-bench --list-stages\n"
-               "  --repeat N          timed detections per frame and mode, 1..100000 (default 20)\n"
-               "  --callgrind-stage STAGE  under valgrind --tool=callgrind --collect-atstart=no:\n"
-               "                      count only STAGE (tools/bench/stages.sh); prints the pixels\n");
+    fprintf(
+        f,
+        "usage: symline-bench [--callgrind-stage STAGE] [--repeat N] [detector options] FRAME...\n"
+        "       symline-bench --list-stages\n"
+        "  --repeat N          timed detections per frame and mode, 1..100000 (default 20)\n"
+        "  --callgrind-stage STAGE  under valgrind --tool=callgrind --collect-atstart=no:\n"
+        "                      count only STAGE (tools/bench/stages.sh); prints the pixels\n");
     detopts_help(f);
     fprintf(f, "Prints per frame size: ms/frame (median of N), frames/s, instructions per\n"
                "pixel (CPU counters, where readable) and the split by stage.\n");

@@ -60,15 +60,17 @@ bool write_segs(const std::string &path, int w, int h, const Segs &s)
     if (f == nullptr) {
         return false;
     }
-    std::fprintf(f, "{\"width\": %d, \"height\": %d, \"truncated\": false,\n \"segments\": [", w, h);
+    std::fprintf(f, "{\"width\": %d, \"height\": %d, \"truncated\": false,\n \"segments\": [", w,
+                 h);
     for (size_t i = 0; i < s.size(); i++) {
         const float dx = s[i][2] - s[i][0], dy = s[i][3] - s[i][1];
         const long pts = std::lround(std::sqrt((double)dx * dx + (double)dy * dy)) + 1;
-        std::fprintf(f,
-                     "%s\n  {\"x0\": %.2f, \"y0\": %.2f, \"x1\": %.2f, \"y1\": %.2f, \"points\": %ld, "
-                     "\"max_dev\": 0.00, \"kind\": \"line\", \"axis\": \"%s\"}",
-                     i ? "," : "", s[i][0], s[i][1], s[i][2], s[i][3], pts < 2 ? 2L : pts,
-                     std::fabs(dy) <= std::fabs(dx) ? "horizontal" : "vertical");
+        std::fprintf(
+            f,
+            "%s\n  {\"x0\": %.2f, \"y0\": %.2f, \"x1\": %.2f, \"y1\": %.2f, \"points\": %ld, "
+            "\"max_dev\": 0.00, \"kind\": \"line\", \"axis\": \"%s\"}",
+            i ? "," : "", s[i][0], s[i][1], s[i][2], s[i][3], pts < 2 ? 2L : pts,
+            std::fabs(dy) <= std::fabs(dx) ? "horizontal" : "vertical");
     }
     std::fprintf(f, "\n]}\n");
     return std::fclose(f) == 0;
@@ -98,7 +100,10 @@ struct Symline {
         res.points = pts.data();
         res.point_cap = (uint32_t)pts.size();
     }
-    bool run() { return symline_detect(&img, &cfg, ws.data(), ws.size(), &res) == SYMLINE_OK; }
+    bool run()
+    {
+        return symline_detect(&img, &cfg, ws.data(), ws.size(), &res) == SYMLINE_OK;
+    }
     bool write(const std::string &path) const
     {
         FILE *f = std::fopen(path.c_str(), "w");
@@ -128,7 +133,8 @@ double cpu_ms()
 }
 
 // An OpenCV detector given as "detect(image, segments)".
-Detector opencv_detector(const std::string &name, std::function<void(const cv::Mat &, Segs &)> detect)
+Detector opencv_detector(const std::string &name,
+                         std::function<void(const cv::Mat &, Segs &)> detect)
 {
     Detector d;
     std::shared_ptr<cv::Mat> frame = std::make_shared<cv::Mat>();
@@ -150,7 +156,7 @@ Detector opencv_detector(const std::string &name, std::function<void(const cv::M
 Detector symline_detector(const std::string &name, const symline_config &cfg)
 {
     Detector d;
-    std::shared_ptr<std::unique_ptr<Symline> > state = std::make_shared<std::unique_ptr<Symline> >();
+    std::shared_ptr<std::unique_ptr<Symline>> state = std::make_shared<std::unique_ptr<Symline>>();
     d.name = name;
     d.first = [cfg, state](const cv::Mat &m, const std::string &out) {
         state->reset(new Symline(m, cfg));
@@ -203,10 +209,11 @@ std::string stem(const std::string &path)
 
 int usage(FILE *f)
 {
-    std::fprintf(f, "usage: symline-peers [--repeat N] OUTDIR FRAME...\n"
-                    "Times symline and OpenCV's line detectors (one thread, the detection call\n"
-                    "only; N calls each, default 10, interleaved) and writes\n"
-                    "OUTDIR/DETECTOR/NAME.json. Prints: DETECTOR WIDTHxHEIGHT NAME FASTEST_MS MEDIAN_MS\n");
+    std::fprintf(
+        f, "usage: symline-peers [--repeat N] OUTDIR FRAME...\n"
+           "Times symline and OpenCV's line detectors (one thread, the detection call\n"
+           "only; N calls each, default 10, interleaved) and writes\n"
+           "OUTDIR/DETECTOR/NAME.json. Prints: DETECTOR WIDTHxHEIGHT NAME FASTEST_MS MEDIAN_MS\n");
     return f == stdout ? 0 : 2;
 }
 
@@ -248,11 +255,12 @@ int main(int argc, char **argv)
             std::fprintf(stderr, "symline-peers: cannot read '%s'\n", argv[i]);
             return 2;
         }
-        std::vector<std::vector<double> > ms(dets.size());
+        std::vector<std::vector<double>> ms(dets.size());
         for (size_t k = 0; k < dets.size(); k++) {
             const std::string out = outdir + "/" + dets[k].name + "/" + stem(argv[i]) + ".json";
             if (!dets[k].first(m, out)) {
-                std::fprintf(stderr, "symline-peers: %s failed on '%s'\n", dets[k].name.c_str(), argv[i]);
+                std::fprintf(stderr, "symline-peers: %s failed on '%s'\n", dets[k].name.c_str(),
+                             argv[i]);
                 return 1;
             }
         }
@@ -260,7 +268,8 @@ int main(int argc, char **argv)
             for (size_t k = 0; k < dets.size(); k++) {
                 const double t0 = cpu_ms();
                 if (!dets[k].again()) {
-                    std::fprintf(stderr, "symline-peers: %s failed on '%s'\n", dets[k].name.c_str(), argv[i]);
+                    std::fprintf(stderr, "symline-peers: %s failed on '%s'\n", dets[k].name.c_str(),
+                                 argv[i]);
                     return 1;
                 }
                 ms[k].push_back(cpu_ms() - t0);
