@@ -16,14 +16,14 @@ typedef struct num_opt {
 } num_opt;
 
 static const num_opt num_opts[] = {
-    {"--radius", 1, 32, offsetof(symline_config, radius), 0},
-    {"--levels", 1, 5, offsetof(symline_config, levels), 0},
+    {"--radius", 1, SYMLINE_DETECT_MAX_RADIUS, offsetof(symline_config, radius), 0},
+    {"--levels", 1, SYMLINE_DETECT_MAX_LEVELS, offsetof(symline_config, levels), 0},
     {"--illumination", 0, 255, offsetof(symline_config, illumination), 0},
     {"--adaptive", 0, 1, offsetof(symline_config, adaptive), 0},
     {"--bright-sigma", 0, 200, offsetof(symline_config, bright_sigma10), 100},
     {"--side-sigma", 0, 200, offsetof(symline_config, side_sigma10), 100},
     {"--ridge-sigma", 0, 100, offsetof(symline_config, ridge_sigma10), 0},
-    {"--a-distance", 1, 32, offsetof(symline_config, a_distance), 0},
+    {"--a-distance", 1, SYMLINE_DETECT_MAX_A_DISTANCE, offsetof(symline_config, a_distance), 0},
     {"--contrast", 0, 100, offsetof(symline_config, contrast_pct), 0},
     {"--contrast-min", 0, 255, offsetof(symline_config, contrast_min), 0},
     {"--contrast-asym", 0, 1000, offsetof(symline_config, contrast_asym_pct), 0},
