@@ -145,10 +145,20 @@ typedef struct symline_config {
 /* Fills *cfg with the defaults documented above (no-op on NULL). */
 void symline_config_default(symline_config *cfg);
 
-/* One traced point, in full-resolution pixels. */
+/*
+ * One traced point, in full-resolution pixels: the pixel (x, y) nearest to the
+ * point and the point's sub-pixel offset from that pixel's centre in 1/128 px,
+ * -64..63 (fx, fy): the point lies at (x + fx/128, y + fy/128). The offset is
+ * taken across the line (the ridge's middle, from the symmetry energies around
+ * the S point), so fy is 0 for points found along rows (vertical axis) and fx
+ * for points found along columns, except at coarse scales, whose grid points
+ * map to block centres between full-resolution pixels.
+ */
 typedef struct symline_point {
     uint16_t x;
     uint16_t y;
+    int8_t fx;
+    int8_t fy;
 } symline_point;
 
 /* One detected segment. */

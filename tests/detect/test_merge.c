@@ -19,6 +19,7 @@ static void merge_collinear(void **state)
     symline_result r;
     uint32_t i;
     (void)state;
+    memset(pts, 0, sizeof(pts)); /* no sub-pixel offsets */
     /* Two pieces of y = 5 (x 0..9 and 20..29) with a curve between them in storage. */
     for (i = 0; i < 10u; i++) {
         pts[i].x = (uint16_t)i;
@@ -78,6 +79,7 @@ static void merge_keeps_bent_joins_apart(void **state)
     symline_result r;
     uint32_t i;
     (void)state;
+    memset(pts, 0, sizeof(pts)); /* no sub-pixel offsets */
     /* Two pieces 4 px apart, the second 3 px lower: ends not on each other's line. */
     for (i = 0; i < 10u; i++) {
         pts[i].x = (uint16_t)i;

@@ -18,6 +18,7 @@
 static uint32_t l_chain(symline_point *p)
 {
     uint32_t n = 0u, i;
+    memset(p, 0, 15u * sizeof *p); /* no sub-pixel offsets */
     for (i = 0; i <= 6u; i++, n++) {
         p[n].x = 0;
         p[n].y = (uint16_t)i;
@@ -56,6 +57,7 @@ static void fit_line_and_curve(void **state)
     symline_segment s;
     uint32_t i;
     (void)state;
+    memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     for (i = 0; i < 40u; i++) {
         p[i].x = (uint16_t)(10u + i);
         p[i].y = (uint16_t)(20u + i / 4u);
@@ -98,6 +100,7 @@ static void bend_tells_flat_arc_from_line(void **state)
     symline_segment s;
     uint32_t i;
     (void)state;
+    memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     /* A staircase line (slope 1/4): pixel steps average out. */
     for (i = 0; i < 60u; i++) {
         p[i].x = (uint16_t)(10u + i);
@@ -119,6 +122,7 @@ static void distances(void **state)
 {
     symline_point p[4];
     (void)state;
+    memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     /* (3, 4) px from the line through the origin along x: 4 px (Q8). */
     assert_int_equal(sl_line_dist_q8(0, 0, 256, 0, 3 * 256, 4 * 256), 4u * 256u);
     /* A zero direction: the distance to the point itself (5 px). */
