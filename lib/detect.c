@@ -246,3 +246,60 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     out->truncated = d.truncated;
     return SYMLINE_OK;
 }
+
+symline_status symline_line_points(const symline_image *img, const symline_config *cfg, void *ws,
+                                   size_t ws_size, symline_point *pts, uint32_t cap,
+                                   uint32_t *count, uint8_t *truncated)
+{
+    symline_status st = symline_image_check(img);
+    uint32_t mean = 0u, sigma_q4 = 0u, L, l, a, n = 0u, k;
+    uint8_t *const end = (uint8_t *)ws + ws_size;
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (cfg == NULL || ws == NULL || count == NULL || truncated == NULL ||
+        (pts == NULL && cap != 0u)) {
+        return SYMLINE_ERR_NULL;
+    }
+    st = check_config(cfg);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (ws_size < symline_detect_workspace_size(img->width, img->height, cfg)) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    *truncated = 0u;
+    if (cfg->adaptive) {
+        frame_stats(img, &mean, &sigma_q4);
+    }
+    L = level_count(cfg, img->width, img->height);
+    for (l = 0; l < L; l++) {
+        for (a = 0; a < axis_count(cfg); a++) {
+            uint8_t *cur = (uint8_t *)ws;
+            sl_pass *p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
+            uint32_t *row_start;
+            uint32_t got = 0u;
+            if (p == NULL) {
+                return SYMLINE_ERR_BUFFER;
+            }
+            sl_pass_setup(p, cfg, axis_of(cfg, a), l, img->width, img->height);
+            if (cfg->adaptive) {
+                adapt(p, cfg, mean, sigma_q4);
+            }
+            row_start = (uint32_t *)sl_carve(&cur, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
+            if (row_start == NULL) {
+                return SYMLINE_ERR_BUFFER;
+            }
+            (void)sl_collect(img, p, cur, (size_t)(end - cur), pts + n, cap - n, &got, row_start,
+                             truncated);
+            /* grid to full resolution: the block's centre pixel */
+            for (k = n; k < n + got && l > 0u; k++) {
+                pts[k].x = (uint16_t)((pts[k].x << l) + (((1u << l) - 1u) >> 1));
+                pts[k].y = (uint16_t)((pts[k].y << l) + (((1u << l) - 1u) >> 1));
+            }
+            n += got;
+        }
+    }
+    *count = n;
+    return SYMLINE_OK;
+}

@@ -184,6 +184,21 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
 symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
                               size_t ws_size, symline_result *out);
 
+/*
+ * The line filter's output alone: the line points of every pass (axes and
+ * scales as configured, adaptive thresholds included), in full-resolution
+ * pixels (a coarse scale's point at its block's centre), pass after pass,
+ * each pass in raster order, written to pts[0 .. *count-1]. A pixel found by
+ * two passes is listed twice. This is what symline_detect() traces and what
+ * the Muff-space finder (symline/muff.h) votes with.
+ * ws: ws_size >= symline_detect_workspace_size() bytes. When cap runs out,
+ * the points that fit are kept and *truncated is set to 1 (else 0).
+ * Returns SYMLINE_OK, ERR_NULL, ERR_SIZE, ERR_STRIDE, ERR_CONFIG or ERR_BUFFER.
+ */
+symline_status symline_line_points(const symline_image *img, const symline_config *cfg, void *ws,
+                                   size_t ws_size, symline_point *pts, uint32_t cap,
+                                   uint32_t *count, uint8_t *truncated);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,175 @@
+/*
+ * symline_muff_find(): configuration, memory, and the order of the work:
+ * vote (muff_vote.c), peaks strongest first, and for each peak its segment
+ * (muff_extent.c): points near the peak's line, a fit, then the points near
+ * the fit, which the segment keeps.
+ */
+#include "muff_internal.h"
+
+void symline_muff_config_default(symline_muff_config *c)
+{
+    if (c == NULL) {
+        return;
+    }
+    c->cell = 0u;
+    c->min_votes = 24u;
+    c->nms_cells = 2u;
+    c->max_peaks = 128u;
+    c->tol_q8 = 512u;
+    c->gap = 10u;
+    c->min_points = 12u;
+    c->min_length = 12u;
+}
+
+static int config_ok(const symline_muff_config *c)
+{
+    return c != NULL && c->cell <= 64u && c->min_votes >= 1u && c->min_votes <= 65535u &&
+           c->nms_cells <= 16u && c->max_peaks >= 1u && c->max_peaks <= 1024u &&
+           c->tol_q8 >= 64u && c->tol_q8 <= 8192u && c->gap >= 1u && c->gap <= 65535u &&
+           c->min_points >= 2u && c->min_points <= 65535u && c->min_length <= 65535u;
+}
+
+uint32_t symline_muff_cell(const symline_muff_config *c, uint32_t width)
+{
+    if (c == NULL) {
+        return 0u;
+    }
+    if (c->cell != 0u) {
+        return c->cell;
+    }
+    return width / 80u > 2u ? width / 80u : 2u;
+}
+
+static int frame_ok(uint32_t width, uint32_t height)
+{
+    return width >= 3u && height >= 3u && width <= SYMLINE_MAX_DIM && height <= SYMLINE_MAX_DIM;
+}
+
+size_t symline_muff_accumulator_size(uint32_t width, uint32_t height,
+                                     const symline_muff_config *c)
+{
+    sl_perim p;
+    uint64_t bytes;
+    if (!frame_ok(width, height) || !config_ok(c)) {
+        return 0u;
+    }
+    sl_perim_setup(&p, width, height, symline_muff_cell(c, width));
+    bytes = sl_pair_count(&p) * sizeof(uint16_t);
+    if (p.ncell > 65535u || bytes > (uint64_t)(size_t)-1) {
+        return 0u;
+    }
+    return (size_t)bytes;
+}
+
+size_t symline_muff_workspace_size(uint32_t width, uint32_t height, const symline_muff_config *c)
+{
+    sl_perim p;
+    const size_t longer = width > height ? width : height;
+    if (symline_muff_accumulator_size(width, height, c) == 0u) {
+        return 0u;
+    }
+    sl_perim_setup(&p, width, height, symline_muff_cell(c, width));
+    return sl_align_up(sizeof(sl_extent)) + 2u * sl_align_up((size_t)p.ncell * sizeof(uint16_t)) +
+           sl_align_up((size_t)c->max_peaks * sizeof(sl_peak)) +
+           sl_align_up(longer * sizeof(uint16_t)) + 5u * SL_ALIGN;
+}
+
+/* The segments of the peaks, strongest first; returns how many were written. */
+SL_MUFF_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const uint16_t *cx,
+                                         const uint16_t *cy, const sl_peak *peaks,
+                                         uint32_t npeaks, symline_result *out)
+{
+    const symline_muff_config *c = e->cfg;
+    /* the peak's line runs through cell centres: up to half a cell off */
+    const uint32_t coarse = c->tol_q8 + (p->cell << 7);
+    uint32_t k, nseg = 0u;
+    for (k = 0; k < npeaks; k++) {
+        sl_uvline l, f1, f2;
+        symline_segment s;
+        sl_uvline_through(&l, cx[peaks[k].i], cy[peaks[k].i], cx[peaks[k].j], cy[peaks[k].j]);
+        if (!sl_extent_take(e, &l, coarse, &f1, &s)) {
+            continue;
+        }
+        e->used = s.first; /* give them back: the fit picks its own */
+        if (!sl_extent_take(e, &f1, c->tol_q8, &f2, &s)) {
+            continue;
+        }
+        if (nseg == out->segment_cap) {
+            e->used = s.first;
+            out->truncated = 1u;
+            break;
+        }
+        out->segments[nseg++] = s;
+    }
+    return nseg;
+}
+
+symline_status symline_muff_find(uint32_t width, uint32_t height, const symline_muff_config *c,
+                                 uint16_t *acc, size_t acc_size, void *ws, size_t ws_size,
+                                 uint32_t npoints, symline_result *out)
+{
+    sl_perim p;
+    uint8_t *cur, *end;
+    uint16_t *cx, *cy;
+    sl_peak *peaks;
+    sl_extent *e;
+    size_t need, i;
+    uint32_t k, npeaks;
+    if (acc == NULL || ws == NULL || out == NULL || c == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if ((out->points == NULL && out->point_cap != 0u) ||
+        (out->segments == NULL && out->segment_cap != 0u)) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (!frame_ok(width, height)) {
+        return SYMLINE_ERR_SIZE;
+    }
+    if (!config_ok(c)) {
+        return SYMLINE_ERR_CONFIG;
+    }
+    need = symline_muff_accumulator_size(width, height, c);
+    if (need == 0u) {
+        return SYMLINE_ERR_OVERFLOW;
+    }
+    if (acc_size < need || ws_size < symline_muff_workspace_size(width, height, c) ||
+        npoints > out->point_cap) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    for (k = 0; k < npoints; k++) {
+        if (out->points[k].x >= width || out->points[k].y >= height) {
+            return SYMLINE_ERR_RANGE;
+        }
+    }
+    sl_perim_setup(&p, width, height, symline_muff_cell(c, width));
+    cur = (uint8_t *)ws;
+    end = cur + ws_size;
+    e = (sl_extent *)sl_carve(&cur, end, sizeof(sl_extent));
+    cx = (uint16_t *)sl_carve(&cur, end, (size_t)p.ncell * sizeof(uint16_t));
+    cy = (uint16_t *)sl_carve(&cur, end, (size_t)p.ncell * sizeof(uint16_t));
+    peaks = (sl_peak *)sl_carve(&cur, end, (size_t)c->max_peaks * sizeof(sl_peak));
+    if (e == NULL || cx == NULL || cy == NULL || peaks == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    e->bins = (uint16_t *)sl_carve(&cur, end,
+                                   (size_t)(width > height ? width : height) * sizeof(uint16_t));
+    if (e->bins == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    sl_cell_centres(&p, cx, cy);
+    for (i = 0; i < need / sizeof(uint16_t); i++) {
+        acc[i] = 0u;
+    }
+    sl_muff_vote(&p, cx, cy, out->points, npoints, acc);
+    npeaks = sl_muff_peaks(&p, acc, c->min_votes, c->nms_cells, peaks, c->max_peaks);
+    e->pts = out->points;
+    e->n = npoints;
+    e->used = 0u;
+    e->width = width;
+    e->height = height;
+    e->cfg = c;
+    out->truncated = 0u;
+    out->segment_count = extract(e, &p, cx, cy, peaks, npeaks, out);
+    out->point_count = e->used;
+    return SYMLINE_OK;
+}

@@ -1,0 +1,185 @@
+/*
+ * Muff lines as segments: which line points support a peak's line, where
+ * along the line they lie, and the fitted segment over their extent.
+ *
+ * Everything is done in the line's dominant-axis frame (u along the axis the
+ * line runs closer to, v across it), so the position along the line is
+ * simply u: one counter per pixel of the longer side finds the longest run
+ * of supporting points without a gap, and the fit is a least-squares v(u)
+ * with |dv/du| near 1 at most, well conditioned.
+ */
+#include "muff_internal.h"
+
+#include "detect_internal.h" /* sl_isqrt64 */
+
+static uint32_t sec16_of(int32_t slope16)
+{
+    return (uint32_t)sl_isqrt64(((uint64_t)1u << 32) + (uint64_t)((int64_t)slope16 * slope16));
+}
+
+void sl_uvline_through(sl_uvline *l, uint32_t ax, uint32_t ay, uint32_t bx, uint32_t by)
+{
+    const int32_t dx = (int32_t)bx - (int32_t)ax, dy = (int32_t)by - (int32_t)ay;
+    const int32_t adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
+    l->u_is_y = (uint8_t)(ady > adx);
+    if (!l->u_is_y) {
+        l->u0 = (int32_t)(ax << 8);
+        l->v0 = (int32_t)(ay << 8);
+        l->slope16 = dx != 0 ? (int32_t)(((int64_t)dy << 16) / dx) : 0;
+    } else {
+        l->u0 = (int32_t)(ay << 8);
+        l->v0 = (int32_t)(ax << 8);
+        l->slope16 = (int32_t)(((int64_t)dx << 16) / dy);
+    }
+    l->sec16 = sec16_of(l->slope16);
+}
+
+/* v (Q8) of the line at u (Q8). */
+static int32_t v_at(const sl_uvline *l, int32_t u8)
+{
+    const int64_t t = (int64_t)l->slope16 * (u8 - l->u0);
+    return l->v0 + (int32_t)(t >= 0 ? (t + 32768) >> 16 : -((-t + 32768) >> 16));
+}
+
+/* |v distance| (Q8) of point p to l; u of p in *u. */
+static uint32_t v_dist(const sl_uvline *l, const symline_point *p, uint32_t *u)
+{
+    const uint32_t pu = l->u_is_y ? p->y : p->x, pv = l->u_is_y ? p->x : p->y;
+    const int32_t d = (int32_t)(pv << 8) - v_at(l, (int32_t)(pu << 8));
+    *u = pu;
+    return (uint32_t)(d < 0 ? -d : d);
+}
+
+/* Longest (most points) run of non-empty bins [*lo, *hi] without a gap above gap; its points. */
+static uint32_t best_run(const uint16_t *bins, uint32_t umax, uint32_t gap, uint32_t *lo,
+                         uint32_t *hi)
+{
+    uint32_t u, start = 0u, last = 0u, sum = 0u, best = 0u;
+    for (u = 0; u <= umax; u++) {
+        if (bins[u] == 0u) {
+            continue;
+        }
+        if (sum != 0u && u - last > gap) {
+            if (sum > best) {
+                best = sum;
+                *lo = start;
+                *hi = last;
+            }
+            sum = 0u;
+        }
+        if (sum == 0u) {
+            start = u;
+        }
+        sum += bins[u];
+        last = u;
+    }
+    if (sum > best) {
+        best = sum;
+        *lo = start;
+        *hi = last;
+    }
+    return best;
+}
+
+/* Least-squares v(u) through p[0..n-1] (n >= 1), in l's frame. */
+static void fit(const sl_uvline *l, const symline_point *p, uint32_t n, sl_uvline *out)
+{
+    uint64_t su = 0u, sv = 0u;
+    int64_t cuu = 0, cuv = 0;
+    int32_t mu4, mv4;
+    uint32_t k;
+    for (k = 0; k < n; k++) {
+        su += l->u_is_y ? p[k].y : p[k].x;
+        sv += l->u_is_y ? p[k].x : p[k].y;
+    }
+    mu4 = (int32_t)((su * 16u + n / 2u) / n);
+    mv4 = (int32_t)((sv * 16u + n / 2u) / n);
+    for (k = 0; k < n; k++) {
+        const int64_t du = (int64_t)((l->u_is_y ? p[k].y : p[k].x) * 16u) - mu4;
+        const int64_t dv = (int64_t)((l->u_is_y ? p[k].x : p[k].y) * 16u) - mv4;
+        cuu += du * du;
+        cuv += du * dv;
+    }
+    /* keep cuv * 2^16 within 64 bits */
+    while (cuv > ((int64_t)1 << 46) || cuv < -((int64_t)1 << 46)) {
+        cuv /= 2;
+        cuu /= 2;
+    }
+    out->u_is_y = l->u_is_y;
+    out->u0 = mu4 * 16;
+    out->v0 = mv4 * 16;
+    out->slope16 = cuu > 0 ? (int32_t)((cuv * 65536) / cuu) : 0;
+    if (out->slope16 > (1 << 17)) {
+        out->slope16 = 1 << 17;
+    } else if (out->slope16 < -(1 << 17)) {
+        out->slope16 = -(1 << 17);
+    }
+    out->sec16 = sec16_of(out->slope16);
+}
+
+static int32_t clamp_q8(int32_t v, uint32_t max_px)
+{
+    const int32_t hi = (int32_t)(max_px << 8);
+    return v < 0 ? 0 : (v > hi ? hi : v);
+}
+
+int sl_extent_take(sl_extent *e, const sl_uvline *l, uint32_t tol_q8, sl_uvline *ft,
+                   symline_segment *s)
+{
+    const uint32_t umax = (l->u_is_y ? e->height : e->width) - 1u;
+    const uint32_t vmax = (l->u_is_y ? e->width : e->height) - 1u;
+    const uint64_t lim = (uint64_t)tol_q8 * l->sec16; /* |dv| * 2^16 <= tol * sec */
+    uint32_t k, u, lo = 0u, hi = 0u, cnt = 0u, best, dev = 0u;
+    int32_t v_lo, v_hi;
+    for (u = 0; u <= umax; u++) {
+        e->bins[u] = 0u;
+    }
+    for (k = e->used; k < e->n; k++) {
+        if (((uint64_t)v_dist(l, &e->pts[k], &u) << 16) <= lim && e->bins[u] != 0xFFFFu) {
+            e->bins[u]++;
+        }
+    }
+    best = best_run(e->bins, umax, e->cfg->gap, &lo, &hi);
+    if (best < e->cfg->min_points) {
+        return 0;
+    }
+    for (k = e->used; k < e->n; k++) {
+        if (((uint64_t)v_dist(l, &e->pts[k], &u) << 16) <= lim && u >= lo && u <= hi) {
+            const symline_point t = e->pts[e->used + cnt];
+            e->pts[e->used + cnt] = e->pts[k];
+            e->pts[k] = t;
+            cnt++;
+        }
+    }
+    if (cnt < e->cfg->min_points ||
+        (uint64_t)(hi - lo) * l->sec16 < ((uint64_t)e->cfg->min_length << 16)) {
+        return 0;
+    }
+    fit(l, e->pts + e->used, cnt, ft);
+    for (k = 0; k < cnt; k++) {
+        const uint32_t d = v_dist(ft, &e->pts[e->used + k], &u);
+        dev = d > dev ? d : dev;
+    }
+    v_lo = clamp_q8(v_at(ft, (int32_t)(lo << 8)), vmax);
+    v_hi = clamp_q8(v_at(ft, (int32_t)(hi << 8)), vmax);
+    if (!ft->u_is_y) {
+        s->x0 = (int32_t)(lo << 8);
+        s->y0 = v_lo;
+        s->x1 = (int32_t)(hi << 8);
+        s->y1 = v_hi;
+    } else {
+        s->x0 = v_lo;
+        s->y0 = (int32_t)(lo << 8);
+        s->x1 = v_hi;
+        s->y1 = (int32_t)(hi << 8);
+    }
+    s->max_dev = (uint32_t)(((uint64_t)dev << 16) / ft->sec16);
+    s->first = e->used;
+    s->count = cnt;
+    s->kind = SYMLINE_KIND_LINE;
+    s->axis = (uint8_t)(ft->u_is_y ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL);
+    s->level = 0u;
+    s->reserved = 0u;
+    e->used += cnt;
+    return 1;
+}
