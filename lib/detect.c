@@ -253,7 +253,7 @@ symline_status symline_line_points(const symline_image *img, const symline_confi
 {
     symline_status st = symline_image_check(img);
     uint32_t mean = 0u, sigma_q4 = 0u, L, l, a, n = 0u, k;
-    uint8_t *const end = (uint8_t *)ws + ws_size;
+    uint8_t *end;
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -269,6 +269,7 @@ symline_status symline_line_points(const symline_image *img, const symline_confi
         return SYMLINE_ERR_BUFFER;
     }
     *truncated = 0u;
+    end = (uint8_t *)ws + ws_size;
     if (cfg->adaptive) {
         frame_stats(img, &mean, &sigma_q4);
     }

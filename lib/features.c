@@ -39,7 +39,7 @@ size_t symline_features_workspace_size(uint32_t width, uint32_t height, uint32_t
     return sl_align_up(sizeof(vcache)) + sl_align_up(sizeof(symline_colrun)) +
            2u * sl_align_up(w * sizeof(uint32_t)) + symline_colrun_buffer_size(width) +
            sl_align_up(w * sizeof(symline_extremum)) + sl_align_up(w * SL_FEAT_ROWS) +
-           8u * SL_ALIGN;
+           (size_t)8u * SL_ALIGN;
 }
 
 uint32_t symline_features_max_points(uint32_t width, uint32_t height)
@@ -77,7 +77,7 @@ static void sift_down(symline_point *p, uint32_t i, uint32_t n)
     for (;;) {
         uint32_t big = i;
         const uint32_t l = 2u * i + 1u;
-        symline_point t;
+        uint16_t tx, ty;
         if (l < n && key(&p[l]) > key(&p[big])) {
             big = l;
         }
@@ -87,9 +87,13 @@ static void sift_down(symline_point *p, uint32_t i, uint32_t n)
         if (big == i) {
             return;
         }
-        t = p[i];
-        p[i] = p[big];
-        p[big] = t;
+        /* field by field: a struct copy may become a memcpy call */
+        tx = p[i].x;
+        ty = p[i].y;
+        p[i].x = p[big].x;
+        p[i].y = p[big].y;
+        p[big].x = tx;
+        p[big].y = ty;
         i = big;
     }
 }
@@ -107,9 +111,11 @@ static void sort_points(symline_point *p, uint32_t n)
         sift_down(p, i, n);
     }
     for (i = n; i-- > 1u;) {
-        const symline_point t = p[0];
-        p[0] = p[i];
-        p[i] = t;
+        const uint16_t tx = p[0].x, ty = p[0].y;
+        p[0].x = p[i].x;
+        p[0].y = p[i].y;
+        p[i].x = tx;
+        p[i].y = ty;
         sift_down(p, 0u, i);
     }
 }

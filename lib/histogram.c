@@ -15,7 +15,7 @@ size_t symline_histogram_workspace_size(uint32_t width, uint32_t m)
     }
     /* one row of energies and one row of extrema */
     return sl_align_up((size_t)width * sizeof(uint32_t)) + sl_align_up((size_t)width) +
-           2u * SL_ALIGN;
+           (size_t)2u * SL_ALIGN;
 }
 
 /* Carves the energy and map rows; arguments already checked. */

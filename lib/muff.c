@@ -71,7 +71,7 @@ size_t symline_muff_workspace_size(uint32_t width, uint32_t height, const symlin
     sl_perim_setup(&p, width, height, symline_muff_cell(c, width));
     return sl_align_up(sizeof(sl_extent)) + 2u * sl_align_up((size_t)p.ncell * sizeof(uint16_t)) +
            sl_align_up((size_t)c->max_peaks * sizeof(sl_peak)) +
-           sl_align_up(longer * sizeof(uint16_t)) + 5u * SL_ALIGN;
+           sl_align_up(longer * sizeof(uint16_t)) + (size_t)5u * SL_ALIGN;
 }
 
 /* The segments of the peaks, strongest first; returns how many were written. */
@@ -84,22 +84,29 @@ SL_MUFF_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const 
     const uint32_t coarse = c->tol_q8 + (p->cell << 7);
     uint32_t k, nseg = 0u;
     for (k = 0; k < npeaks; k++) {
-        sl_uvline l, f1, f2;
-        symline_segment s;
-        sl_uvline_through(&l, cx[peaks[k].i], cy[peaks[k].i], cx[peaks[k].j], cy[peaks[k].j]);
-        if (!sl_extent_take(e, &l, coarse, &f1, &s)) {
+        /* written in place; the spare only tells that the array is full */
+        symline_segment *s = nseg < out->segment_cap ? &out->segments[nseg] : &e->spare;
+        uint32_t cnt;
+        sl_uvline_through(&e->line, cx[peaks[k].i], cy[peaks[k].i], cx[peaks[k].j],
+                          cy[peaks[k].j]);
+        cnt = sl_extent_gather(e, &e->line, coarse);
+        if (cnt == 0u) {
             continue;
         }
-        e->used = s.first; /* give them back: the fit picks its own */
-        if (!sl_extent_take(e, &f1, c->tol_q8, &f2, &s)) {
+        /* the fit to the points near the peak's line picks the segment's own points */
+        sl_extent_fit(e, cnt, &e->line, &e->fit1);
+        cnt = sl_extent_gather(e, &e->fit1, c->tol_q8);
+        if (cnt == 0u) {
             continue;
         }
-        if (nseg == out->segment_cap) {
-            e->used = s.first;
+        if (s == &e->spare) {
             out->truncated = 1u;
             break;
         }
-        out->segments[nseg++] = s;
+        sl_extent_fit(e, cnt, &e->fit1, &e->fit2);
+        sl_extent_segment(e, &e->fit2, cnt, s);
+        e->used += cnt;
+        nseg++;
     }
     return nseg;
 }

@@ -81,13 +81,17 @@ static uint32_t best_run(const uint16_t *bins, uint32_t umax, uint32_t gap, uint
     return best;
 }
 
-/* Least-squares v(u) through p[0..n-1] (n >= 1), in l's frame. */
-static void fit(const sl_uvline *l, const symline_point *p, uint32_t n, sl_uvline *out)
+/* Least-squares v(u) through the k gathered points, in l's frame. */
+void sl_extent_fit(const sl_extent *e, uint32_t n, const sl_uvline *l, sl_uvline *out)
 {
+    const symline_point *p = e->pts + e->used;
     uint64_t su = 0u, sv = 0u;
     int64_t cuu = 0, cuv = 0;
     int32_t mu4, mv4;
     uint32_t k;
+    if (n == 0u) {
+        return;
+    }
     for (k = 0; k < n; k++) {
         su += l->u_is_y ? p[k].y : p[k].x;
         sv += l->u_is_y ? p[k].x : p[k].y;
@@ -123,39 +127,22 @@ static int32_t clamp_q8(int32_t v, uint32_t max_px)
     return v < 0 ? 0 : (v > hi ? hi : v);
 }
 
-int sl_extent_take(sl_extent *e, const sl_uvline *l, uint32_t tol_q8, sl_uvline *ft,
-                   symline_segment *s)
+/* Swaps two points field by field (a struct copy may become a memcpy call). */
+static void swap_points(symline_point *a, symline_point *b)
 {
-    const uint32_t umax = (l->u_is_y ? e->height : e->width) - 1u;
-    const uint32_t vmax = (l->u_is_y ? e->width : e->height) - 1u;
-    const uint64_t lim = (uint64_t)tol_q8 * l->sec16; /* |dv| * 2^16 <= tol * sec */
-    uint32_t k, u, lo = 0u, hi = 0u, cnt = 0u, best, dev = 0u;
+    const uint16_t x = a->x, y = a->y;
+    a->x = b->x;
+    a->y = b->y;
+    b->x = x;
+    b->y = y;
+}
+
+void sl_extent_segment(const sl_extent *e, const sl_uvline *ft, uint32_t cnt, symline_segment *s)
+{
+    const uint32_t vmax = (ft->u_is_y ? e->width : e->height) - 1u;
+    const uint32_t lo = e->lo, hi = e->hi;
+    uint32_t k, u, dev = 0u;
     int32_t v_lo, v_hi;
-    for (u = 0; u <= umax; u++) {
-        e->bins[u] = 0u;
-    }
-    for (k = e->used; k < e->n; k++) {
-        if (((uint64_t)v_dist(l, &e->pts[k], &u) << 16) <= lim && e->bins[u] != 0xFFFFu) {
-            e->bins[u]++;
-        }
-    }
-    best = best_run(e->bins, umax, e->cfg->gap, &lo, &hi);
-    if (best < e->cfg->min_points) {
-        return 0;
-    }
-    for (k = e->used; k < e->n; k++) {
-        if (((uint64_t)v_dist(l, &e->pts[k], &u) << 16) <= lim && u >= lo && u <= hi) {
-            const symline_point t = e->pts[e->used + cnt];
-            e->pts[e->used + cnt] = e->pts[k];
-            e->pts[k] = t;
-            cnt++;
-        }
-    }
-    if (cnt < e->cfg->min_points ||
-        (uint64_t)(hi - lo) * l->sec16 < ((uint64_t)e->cfg->min_length << 16)) {
-        return 0;
-    }
-    fit(l, e->pts + e->used, cnt, ft);
     for (k = 0; k < cnt; k++) {
         const uint32_t d = v_dist(ft, &e->pts[e->used + k], &u);
         dev = d > dev ? d : dev;
@@ -180,6 +167,35 @@ int sl_extent_take(sl_extent *e, const sl_uvline *l, uint32_t tol_q8, sl_uvline 
     s->axis = (uint8_t)(ft->u_is_y ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL);
     s->level = 0u;
     s->reserved = 0u;
-    e->used += cnt;
-    return 1;
+}
+
+uint32_t sl_extent_gather(sl_extent *e, const sl_uvline *l, uint32_t tol_q8)
+{
+    const uint32_t umax = (l->u_is_y ? e->height : e->width) - 1u;
+    const uint64_t lim = (uint64_t)tol_q8 * l->sec16; /* |dv| * 2^16 <= tol * sec */
+    uint32_t k, u, lo = 0u, hi = 0u, cnt = 0u;
+    for (u = 0; u <= umax; u++) {
+        e->bins[u] = 0u;
+    }
+    for (k = e->used; k < e->n; k++) {
+        if (((uint64_t)v_dist(l, &e->pts[k], &u) << 16) <= lim && e->bins[u] != 0xFFFFu) {
+            e->bins[u]++;
+        }
+    }
+    if (best_run(e->bins, umax, e->cfg->gap, &lo, &hi) < e->cfg->min_points) {
+        return 0u;
+    }
+    for (k = e->used; k < e->n; k++) {
+        if (((uint64_t)v_dist(l, &e->pts[k], &u) << 16) <= lim && u >= lo && u <= hi) {
+            swap_points(&e->pts[e->used + cnt], &e->pts[k]);
+            cnt++;
+        }
+    }
+    if (cnt < e->cfg->min_points ||
+        (uint64_t)(hi - lo) * l->sec16 < ((uint64_t)e->cfg->min_length << 16)) {
+        return 0u;
+    }
+    e->lo = lo;
+    e->hi = hi;
+    return cnt;
 }

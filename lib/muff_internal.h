@@ -70,16 +70,24 @@ typedef struct sl_extent {
     uint16_t *bins;   /* one counter per u, max(width, height) of them */
     uint32_t width, height;
     const symline_muff_config *cfg;
+    /* scratch of one peak, here rather than on the stack (firmware budget) */
+    sl_uvline line, fit1, fit2;
+    symline_segment spare; /* a segment that no longer fits the caller's array */
+    uint32_t lo, hi;       /* u extent of the last gather */
 } sl_extent;
 
 /*
- * Takes the points near line l (within tol_q8, unclaimed) along its longest
- * run without a gap above cfg->gap px, moves them to [used, used + k) and
- * fits a line to them (*fit). Returns 1 and fills *s (first, count, ends,
- * max_dev, kind, axis) when the segment has enough points and length (its
- * points then stay claimed: used += k), else 0 (nothing claimed).
+ * Gathers the unclaimed points within tol_q8 of line l along its longest run
+ * without a gap above cfg->gap px: moves them to pts[used .. used+k-1] (not
+ * claimed: used is unchanged), their u extent to e->lo, e->hi. Returns k, or
+ * 0 when they are fewer than cfg->min_points or shorter than cfg->min_length.
  */
-int sl_extent_take(sl_extent *e, const sl_uvline *l, uint32_t tol_q8, sl_uvline *fit,
-                   symline_segment *s);
+uint32_t sl_extent_gather(sl_extent *e, const sl_uvline *l, uint32_t tol_q8);
+
+/* Least-squares fit (in l's frame) of the k gathered points. */
+void sl_extent_fit(const sl_extent *e, uint32_t k, const sl_uvline *l, sl_uvline *fit);
+
+/* The segment of the k gathered points on line ft (ends at e->lo, e->hi). */
+void sl_extent_segment(const sl_extent *e, const sl_uvline *ft, uint32_t k, symline_segment *s);
 
 #endif /* SYMLINE_MUFF_INTERNAL_H */

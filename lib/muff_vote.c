@@ -75,7 +75,7 @@ void sl_cell_centres(const sl_perim *p, uint16_t *cx, uint16_t *cy)
 /* (num + den/2) / den for num, den > 0 */
 static uint32_t div_round(uint64_t num, uint32_t den)
 {
-    return (uint32_t)((num + den / 2u) / den);
+    return den != 0u ? (uint32_t)((num + den / 2u) / den) : 0u;
 }
 
 /* Cell where the ray from border point (ax, ay) through (px, py) leaves the frame. */
@@ -130,12 +130,12 @@ void sl_muff_vote(const sl_perim *p, const uint16_t *cx, const uint16_t *cy,
 static uint32_t pair_votes(const sl_perim *p, const uint16_t *acc, int32_t a, int32_t b)
 {
     const int32_t nc = (int32_t)p->ncell;
-    uint32_t ua = (uint32_t)((a % nc + nc) % nc), ub = (uint32_t)((b % nc + nc) % nc), t;
+    uint32_t ua = (uint32_t)((a % nc + nc) % nc), ub = (uint32_t)((b % nc + nc) % nc);
     if (ua == ub) {
         return 0u;
     }
     if (ua > ub) {
-        t = ua;
+        const uint32_t t = ua;
         ua = ub;
         ub = t;
     }
@@ -199,7 +199,11 @@ uint32_t sl_muff_peaks(const sl_perim *p, const uint16_t *acc, uint32_t min_vote
             /* insert, strongest first (a full list drops its weakest) */
             k = n < cap ? n++ : cap - 1u;
             while (k > 0u && peaks[k - 1u].votes < v) {
-                peaks[k] = peaks[k - 1u];
+                /* field by field: a struct copy may become a memcpy call */
+                peaks[k].index = peaks[k - 1u].index;
+                peaks[k].i = peaks[k - 1u].i;
+                peaks[k].j = peaks[k - 1u].j;
+                peaks[k].votes = peaks[k - 1u].votes;
                 k--;
             }
             peaks[k].index = (uint32_t)idx;
