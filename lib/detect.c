@@ -247,12 +247,41 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     return SYMLINE_OK;
 }
 
+/* Leaves out the points of a pass's raster list pts[0..n-1] that have no line
+ * point among their 8 neighbours (type A, SPEC §4: neither method uses them),
+ * moves the rest to the front at full resolution (a coarse scale's point at
+ * its block's centre) and returns their number. */
+SL_NOINLINE static uint32_t drop_isolated(const sl_pass *p, symline_point *pts, uint32_t n,
+                                          const uint32_t *row_start, uint32_t level)
+{
+    sl_tracer t;
+    uint32_t y, i, k = 0u;
+    const uint32_t half = ((1u << level) - 1u) >> 1;
+    sl_tracer_init(&t, pts, n, row_start, p->h);
+    /* mark first (a lookup reads only x and the row index), then compact */
+    for (y = 0; y < p->h; y++) {
+        for (i = row_start[y]; i < row_start[y + 1u]; i++) {
+            if (sl_neighbours(&t, pts[i].x, y) == 0u) {
+                pts[i].y = SL_VISITED;
+            }
+        }
+    }
+    for (i = 0; i < n; i++) {
+        if (pts[i].y != SL_VISITED) {
+            pts[k].x = (uint16_t)((pts[i].x << level) + half);
+            pts[k].y = (uint16_t)((pts[i].y << level) + half);
+            k++;
+        }
+    }
+    return k;
+}
+
 symline_status symline_line_points(const symline_image *img, const symline_config *cfg, void *ws,
                                    size_t ws_size, symline_point *pts, uint32_t cap,
                                    uint32_t *count, uint8_t *truncated)
 {
     symline_status st = symline_image_check(img);
-    uint32_t mean = 0u, sigma_q4 = 0u, L, l, a, n = 0u, k;
+    uint32_t mean = 0u, sigma_q4 = 0u, L, l, a, n = 0u;
     uint8_t *end;
     if (st != SYMLINE_OK) {
         return st;
@@ -293,12 +322,7 @@ symline_status symline_line_points(const symline_image *img, const symline_confi
             }
             (void)sl_collect(img, p, cur, (size_t)(end - cur), pts + n, cap - n, &got, row_start,
                              truncated);
-            /* grid to full resolution: the block's centre pixel */
-            for (k = n; k < n + got && l > 0u; k++) {
-                pts[k].x = (uint16_t)((pts[k].x << l) + (((1u << l) - 1u) >> 1));
-                pts[k].y = (uint16_t)((pts[k].y << l) + (((1u << l) - 1u) >> 1));
-            }
-            n += got;
+            n += drop_isolated(p, pts + n, got, row_start, l);
         }
     }
     *count = n;

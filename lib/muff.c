@@ -15,17 +15,18 @@ void symline_muff_config_default(symline_muff_config *c)
     c->min_votes = 24u;
     c->nms_cells = 2u;
     c->max_peaks = 128u;
-    c->tol_q8 = 512u;
-    c->gap = 10u;
+    c->tol_q8 = 0u;
+    c->gap = 0u;
     c->min_points = 12u;
     c->min_length = 12u;
 }
 
+/* Ranges of symline_muff_config (see symline/muff.h). */
 static int config_ok(const symline_muff_config *c)
 {
     return c != NULL && c->cell <= 64u && c->min_votes >= 1u && c->min_votes <= 65535u &&
            c->nms_cells <= 16u && c->max_peaks >= 1u && c->max_peaks <= 1024u &&
-           c->tol_q8 >= 64u && c->tol_q8 <= 8192u && c->gap >= 1u && c->gap <= 65535u &&
+           (c->tol_q8 == 0u || (c->tol_q8 >= 64u && c->tol_q8 <= 8192u)) && c->gap <= 65535u &&
            c->min_points >= 2u && c->min_points <= 65535u && c->min_length <= 65535u;
 }
 
@@ -79,9 +80,8 @@ SL_MUFF_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const 
                                          const uint16_t *cy, const sl_peak *peaks,
                                          uint32_t npeaks, symline_result *out)
 {
-    const symline_muff_config *c = e->cfg;
     /* the peak's line runs through cell centres: up to half a cell off */
-    const uint32_t coarse = c->tol_q8 + (p->cell << 7);
+    const uint32_t coarse = e->tol_q8 + (p->cell << 7);
     uint32_t k, nseg = 0u;
     for (k = 0; k < npeaks; k++) {
         /* written in place; the spare only tells that the array is full */
@@ -95,7 +95,7 @@ SL_MUFF_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const 
         }
         /* the fit to the points near the peak's line picks the segment's own points */
         sl_extent_fit(e, cnt, &e->line, &e->fit1);
-        cnt = sl_extent_gather(e, &e->fit1, c->tol_q8);
+        cnt = sl_extent_gather(e, &e->fit1, e->tol_q8);
         if (cnt == 0u) {
             continue;
         }
@@ -175,6 +175,16 @@ symline_status symline_muff_find(uint32_t width, uint32_t height, const symline_
     e->width = width;
     e->height = height;
     e->cfg = c;
+    /* auto: 2 px at 320 wide, 3 px at 640 (the pixel pitch of far lines and
+     * of coarse scales grows with the frame); gaps width/32, and at least the
+     * hole a crossing line leaves (its points within the tolerance are taken
+     * by whichever line is found first) */
+    e->tol_q8 = c->tol_q8 != 0u ? c->tol_q8 : (width * 6u / 5u > 512u ? width * 6u / 5u : 512u);
+    e->gap = c->gap;
+    if (e->gap == 0u) {
+        const uint32_t hole = 2u * ((e->tol_q8 + 255u) >> 8) + 2u;
+        e->gap = width / 32u > hole ? width / 32u : hole;
+    }
     out->truncated = 0u;
     out->segment_count = extract(e, &p, cx, cy, peaks, npeaks, out);
     out->point_count = e->used;

@@ -182,7 +182,7 @@ uint32_t sl_extent_gather(sl_extent *e, const sl_uvline *l, uint32_t tol_q8)
             e->bins[u]++;
         }
     }
-    if (best_run(e->bins, umax, e->cfg->gap, &lo, &hi) < e->cfg->min_points) {
+    if (best_run(e->bins, umax, e->gap, &lo, &hi) < e->cfg->min_points) {
         return 0u;
     }
     for (k = e->used; k < e->n; k++) {

@@ -70,6 +70,7 @@ typedef struct sl_extent {
     uint16_t *bins;   /* one counter per u, max(width, height) of them */
     uint32_t width, height;
     const symline_muff_config *cfg;
+    uint32_t tol_q8, gap; /* support distance and gap in use (auto resolved) */
     /* scratch of one peak, here rather than on the stack (firmware budget) */
     sl_uvline line, fit1, fit2;
     symline_segment spare; /* a segment that no longer fits the caller's array */

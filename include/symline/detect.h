@@ -188,8 +188,10 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
  * The line filter's output alone: the line points of every pass (axes and
  * scales as configured, adaptive thresholds included), in full-resolution
  * pixels (a coarse scale's point at its block's centre), pass after pass,
- * each pass in raster order, written to pts[0 .. *count-1]. A pixel found by
- * two passes is listed twice. This is what symline_detect() traces and what
+ * each pass in raster order, written to pts[0 .. *count-1]. Points without a
+ * line point among their 8 neighbours in their pass (type A, SPEC §4) are
+ * left out, as the tracer ignores them. A pixel found by two passes is
+ * listed twice. This is what symline_detect() traces and what
  * the Muff-space finder (symline/muff.h) votes with.
  * ws: ws_size >= symline_detect_workspace_size() bytes. When cap runs out,
  * the points that fit are kept and *truncated is set to 1 (else 0).

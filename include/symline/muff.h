@@ -45,9 +45,12 @@ typedef struct symline_muff_config {
                             both ends, 0..16; default 2 */
     uint32_t max_peaks;  /* strongest peaks examined, 1..1024; default 128 */
     uint32_t tol_q8;     /* a line point supports a line within this distance,
-                            Q8 px, 64..8192; default 512 (2 px) */
+                            Q8 px, 64..8192; 0 = auto: 3 px * width/640, at
+                            least 2 px (default 0) */
     uint32_t gap;        /* largest gap between supporting points along a
-                            segment, px, 1..65535; default 10 */
+                            segment, px, 1..65535; 0 = auto: width/32, at
+                            least 2 tol + 2 px, the hole a crossing line
+                            leaves (default 0) */
     uint32_t min_points; /* fewest supporting points of a segment, 2..65535;
                             default 12 */
     uint32_t min_length; /* shortest segment, px, 0..65535; default 12 */

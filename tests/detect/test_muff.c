@@ -135,7 +135,7 @@ static void test_two_segments(void **state)
         assert_int_equal(segs[k].kind, SYMLINE_KIND_LINE);
         /* within the support distance (2 px): the other line's points next to
          * the crossing support the first line found */
-        if (segs[k].max_dev > c.tol_q8) {
+        if (segs[k].max_dev > 512u) {
             fail_msg("segment %u: max_dev %u/256 px, ends (%d,%d)-(%d,%d)/256", k,
                      segs[k].max_dev, segs[k].x0, segs[k].y0, segs[k].x1, segs[k].y1);
         }
@@ -248,7 +248,7 @@ static void test_errors(void **state)
                      SYMLINE_ERR_BUFFER);
     assert_int_equal(symline_muff_find(50, 40, &c, acc, sizeof acc, ws, sizeof ws, 4, &r),
                      SYMLINE_ERR_RANGE);
-    c.gap = 0;
+    c.nms_cells = 17;
     assert_int_equal(symline_muff_find(50, 40, &c, acc, sizeof acc, ws, sizeof ws, 3, &r),
                      SYMLINE_ERR_CONFIG);
     symline_muff_config_default(&c);

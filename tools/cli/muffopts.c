@@ -18,8 +18,8 @@ static const muff_opt opts[] = {
     {"--min-votes", 1, 65535, offsetof(symline_muff_config, min_votes)},
     {"--nms", 0, 16, offsetof(symline_muff_config, nms_cells)},
     {"--max-peaks", 1, 1024, offsetof(symline_muff_config, max_peaks)},
-    {"--muff-tol", 64, 8192, offsetof(symline_muff_config, tol_q8)},
-    {"--muff-gap", 1, 65535, offsetof(symline_muff_config, gap)},
+    {"--muff-tol", 0, 8192, offsetof(symline_muff_config, tol_q8)},
+    {"--muff-gap", 0, 65535, offsetof(symline_muff_config, gap)},
     {"--min-points", 2, 65535, offsetof(symline_muff_config, min_points)},
 };
 
@@ -72,8 +72,10 @@ void muffopts_help(FILE *f)
             "  --min-votes N       smallest accumulator peak (%u)\n"
             "  --nms N             a peak beats all pairs within N cells at both ends (%u)\n"
             "  --max-peaks N       strongest peaks examined (%u)\n"
-            "  --muff-tol Q8       support distance from a line, 1/256 px (%u)\n"
-            "  --muff-gap PX       largest gap between a segment's points (%u)\n"
+            "  --muff-tol Q8       support distance from a line, 1/256 px, 64..8192;\n"
+            "                      0 = 3 px * width/640, at least 2 px (%u)\n"
+            "  --muff-gap PX       largest gap between a segment's points; 0 = width/32,\n"
+            "                      at least 2 x tolerance + 2 px (%u)\n"
             "  --min-points N      fewest points of a segment (%u)\n",
             c.cell, c.min_votes, c.nms_cells, c.max_peaks, c.tol_q8, c.gap, c.min_points);
 }
