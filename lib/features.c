@@ -16,7 +16,7 @@
 
 #include "symline/extrema.h"
 #include "symline/symmetry.h"
-#include "internal.h"
+#include "common.h"
 
 /* Rows of vertical-axis extrema kept; almost every report is for row t-1 or t-2. */
 #define SL_FEAT_ROWS 4u

@@ -6,7 +6,7 @@
 
 #include "symline/extrema.h"
 #include "symline/symmetry.h"
-#include "internal.h"
+#include "common.h"
 
 size_t symline_histogram_workspace_size(uint32_t width, uint32_t m)
 {

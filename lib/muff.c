@@ -76,7 +76,7 @@ size_t symline_muff_workspace_size(uint32_t width, uint32_t height, const symlin
 }
 
 /* The segments of the peaks, strongest first; returns how many were written. */
-SL_MUFF_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const uint16_t *cx,
+SL_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const uint16_t *cx,
                                          const uint16_t *cy, const sl_peak *peaks,
                                          uint32_t npeaks, symline_result *out)
 {

@@ -10,7 +10,7 @@
  */
 #include "muff_internal.h"
 
-#include "detect_internal.h" /* sl_isqrt64 */
+#include "fixed.h"
 
 static uint32_t sec16_of(int32_t slope16)
 {

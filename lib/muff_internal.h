@@ -6,14 +6,7 @@
 #define SYMLINE_MUFF_INTERNAL_H
 
 #include "symline/muff.h"
-#include "internal.h"
-
-/* Keeps a helper's frame out of its caller's (stack budget, see detect_internal.h). */
-#if defined(__GNUC__)
-#define SL_MUFF_NOINLINE __attribute__((noinline))
-#else
-#define SL_MUFF_NOINLINE
-#endif
+#include "common.h"
 
 /* The frame's border as a perimeter cut into cells. */
 typedef struct sl_perim {

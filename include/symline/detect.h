@@ -193,7 +193,9 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
  * left out, as the tracer ignores them. A pixel found by two passes is
  * listed twice. This is what symline_detect() traces and what
  * the Muff-space finder (symline/muff.h) votes with.
- * ws: ws_size >= symline_detect_workspace_size() bytes. When cap runs out,
+ * ws: ws_size >= symline_detect_workspace_size() bytes; pts: cap entries
+ * (not NULL; give room for every line point: a few thousand in a 320x240
+ * field view). When cap runs out,
  * the points that fit are kept and *truncated is set to 1 (else 0).
  * Returns SYMLINE_OK, ERR_NULL, ERR_SIZE, ERR_STRIDE, ERR_CONFIG or ERR_BUFFER.
  */
