@@ -162,21 +162,33 @@ if command -v arm-none-eabi-gcc >/dev/null; then
             '$1 ~ /^\.(text|rodata)/ { s += $2 } END { printf "%s %d\n", f, s }'
     done > "$OUT/sizes.txt"
     echo
-    echo "Code size, Cortex-M4 -Os (.text + .rodata, arm-none-eabi-gcc $(arm-none-eabi-gcc -dumpversion)):"
+    echo "Code size, Cortex-M4 -Os (.text + .rodata, arm-none-eabi-gcc $(arm-none-eabi-gcc -dumpversion)),"
+    echo "per module of libsymline.a:"
     echo
     echo "| part | modules | bytes |"
     echo "|---|---|---:|"
     awk 'BEGIN {
-            g["status"] = "shared"; g["symmetry"] = "shared"; g["extrema"] = "shared";
-            g["linefilter"] = "shared"; g["linepoints"] = "shared"; g["linepoints_all"] = "shared";
+            g["status"] = "shared"; g["fixed"] = "shared"; g["symmetry"] = "shared"; g["extrema"] = "shared";
+            g["linefilter"] = "shared"; g["linepoints"] = "shared";
             g["tracer"] = "tracer"; g["segments"] = "tracer"; g["merge"] = "tracer";
             g["curvejoin"] = "tracer"; g["pass"] = "tracer"; g["detect"] = "tracer";
-            g["muff"] = "muff"; g["muff_vote"] = "muff"; g["muff_extent"] = "muff"; g["muff_detect"] = "muff" }
+            g["framepoints"] = "muff"; g["muff"] = "muff"; g["muff_vote"] = "muff";
+            g["muff_extent"] = "muff"; g["muff_detect"] = "muff" }
         ($1 in g) { s[g[$1]] += $2; mods[g[$1]] = mods[g[$1]] (mods[g[$1]] ? ", " : "") $1 }
         END {
             printf "| operator, extrema, line filter (both methods) | %s | %d |\n", mods["shared"], s["shared"]
-            printf "| tracer: tracing, segments, merge, driver | %s | %d |\n", mods["tracer"], s["tracer"]
-            printf "| Muff space: voting, peaks, extents, driver | %s | %d |\n", mods["muff"], s["muff"]
-            printf "| tracer in total | | %d |\n| Muff space in total | | %d |\n",
-                   s["shared"] + s["tracer"], s["shared"] + s["muff"] }' "$OUT/sizes.txt"
+            printf "| tracer: passes, tracing, segments, merge | %s | %d |\n", mods["tracer"], s["tracer"]
+            printf "| Muff space: line points, voting, peaks, extents | %s | %d |\n", mods["muff"], s["muff"] }' "$OUT/sizes.txt"
+    echo
+    echo "What a firmware calling only one entry point links (-Wl,--gc-sections, .text + .rodata;"
+    echo "the Muff finder reuses the tracer pass's setup and neighbour lookup):"
+    echo
+    echo "| entry point | bytes |"
+    echo "|---|---:|"
+    for e in symline_detect symline_detect_muff symline_muff_find symline_features symline_histogram; do
+        arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -nostartfiles \
+            -nostdlib -Wl,--gc-sections -Wl,--entry="$e" -Wl,-u,"$e" "$fw/lib/libsymline.a" -lgcc \
+            -o "$OUT/link.$e.elf"
+        echo "| $e | $(arm-none-eabi-size -A "$OUT/link.$e.elf" | awk '$1 ~ /^\.(text|rodata)/ { s += $2 } END { print s }') |"
+    done
 fi

@@ -159,7 +159,7 @@ step "code size on Cortex-M4 -Os (.text + .rodata, target <= $size_budget B)"
 # Optional modules (the paper's other methods) are reported on their own and
 # not counted against the budget: firmware that does not call them does not
 # link them (one object per module in the static library).
-optional="features histogram muff muff_vote muff_extent muff_detect"
+optional="features histogram framepoints muff muff_vote muff_extent muff_detect"
 objs=$(find "$prefix-m4-os/lib" -name '*.obj' | sort)
 if [ -n "$objs" ]; then
     for o in $objs; do
@@ -172,7 +172,7 @@ if [ -n "$objs" ]; then
     else bad "core: $total B (.text + .rodata) > $size_budget B"; fi
     echo "  optional modules (not in the budget):"
     awk -v opt=" $optional " 'index(opt, " " $1 " ") > 0 { printf "    %-14s %6d B\n", $1, $2 }' "$log"
-    awk -v opt=" $optional " 'index(opt, " " $1 " ") > 0 { t += $2; if ($1 ~ /^muff/) m += $2 }
+    awk -v opt=" $optional " 'index(opt, " " $1 " ") > 0 { t += $2; if ($1 ~ /^(muff|framepoints)/) m += $2 }
         END { printf "    feature points + histogram %d B, Muff-space finder %d B\n", t - m, m }' "$log"
 else
     bad "no Cortex-M4 -Os objects"
