@@ -25,8 +25,8 @@
 typedef struct vcache {
     const symline_image *img;
     uint32_t m;
-    uint32_t *E;     /* one row of energies (scratch) */
-    uint8_t *rows;   /* SL_FEAT_ROWS rows of extrema */
+    uint32_t *E;                /* one row of energies (scratch) */
+    uint8_t *rows;              /* SL_FEAT_ROWS rows of extrema */
     uint32_t tag[SL_FEAT_ROWS]; /* which image row each slot holds */
 } vcache;
 
@@ -177,6 +177,8 @@ symline_status symline_features(const symline_image *img, uint32_t m, void *ws, 
             if (n < cap) {
                 pts[n].x = ev[k].x;
                 pts[n].y = ev[k].y;
+                pts[n].fx = 0; /* feature points are whole pixels */
+                pts[n].fy = 0;
             }
             n++;
         }

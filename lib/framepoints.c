@@ -6,23 +6,23 @@
 #include "symline/detect.h"
 
 #include "common.h"
+#include "fixed.h"
 #include "linefilter.h"
 #include "linepoints.h"
 #include "pass.h"
 #include "passplan.h"
+#include "subpixel.h"
 #include "tracer.h"
 
 /* Leaves out the points of a pass's raster list pts[0..n-1] that have no line
  * point among their 8 neighbours (type A, SPEC §4: neither method uses them),
- * moves the rest to the front at full resolution (a coarse scale's point at
- * its block's centre) and returns their number. */
-SL_NOINLINE static uint32_t drop_isolated(const sl_pass *p, symline_point *pts, uint32_t n,
-                                          const uint32_t *row_start)
+ * moves the rest to the front at full resolution with their sub-pixel offsets
+ * across the line and returns their number. */
+SL_NOINLINE static uint32_t drop_isolated(const symline_image *img, const sl_pass *p,
+                                          symline_point *pts, uint32_t n, const uint32_t *row_start)
 {
     sl_tracer t;
     uint32_t y, i, k = 0u;
-    const uint32_t level = p->level;
-    const uint32_t half = ((1u << level) - 1u) >> 1;
     sl_tracer_init(&t, pts, n, row_start, p->h);
     /* mark first (a lookup reads only x and the row index), then compact */
     for (y = 0; y < p->h; y++) {
@@ -34,10 +34,14 @@ SL_NOINLINE static uint32_t drop_isolated(const sl_pass *p, symline_point *pts, 
     }
     for (i = 0; i < n; i++) {
         if (pts[i].y != SL_VISITED) {
-            pts[k].x = (uint16_t)((pts[i].x << level) + half);
-            pts[k].y = (uint16_t)((pts[i].y << level) + half);
+            pts[k].x = pts[i].x;
+            pts[k].y = pts[i].y;
             k++;
         }
+    }
+    sl_subpixel(img, p, pts, k);
+    for (i = 0; i < k; i++) {
+        sl_pt_to_full(&pts[i], p->level);
     }
     return k;
 }
@@ -45,7 +49,7 @@ SL_NOINLINE static uint32_t drop_isolated(const sl_pass *p, symline_point *pts, 
 /* The passes in the order of symline_detect(), each collected into pts + n. */
 SL_NOINLINE static uint32_t collect_all(const symline_image *img, const symline_config *cfg,
                                         uint8_t *ws, uint8_t *end, const sl_frame_stats *stats,
-                                        symline_point *pts, uint32_t cap, uint8_t *truncated)
+                                        symline_point *pts, uint32_t cap, bool *truncated)
 {
     const uint32_t L = sl_level_count(cfg, img->width, img->height);
     uint32_t l, a, n = 0u;
@@ -68,7 +72,7 @@ SL_NOINLINE static uint32_t collect_all(const symline_image *img, const symline_
             }
             (void)sl_collect(img, p, cur, (size_t)(end - cur), pts + n, cap - n, &got, row_start,
                              truncated);
-            n += drop_isolated(p, pts + n, got, row_start);
+            n += drop_isolated(img, p, pts + n, got, row_start);
         }
     }
     return n;
@@ -76,7 +80,7 @@ SL_NOINLINE static uint32_t collect_all(const symline_image *img, const symline_
 
 symline_status symline_line_points(const symline_image *img, const symline_config *cfg, void *ws,
                                    size_t ws_size, symline_point *pts, uint32_t cap,
-                                   uint32_t *count, uint8_t *truncated)
+                                   uint32_t *count, bool *truncated)
 {
     symline_status st = symline_image_check(img);
     sl_frame_stats stats;
@@ -93,13 +97,13 @@ symline_status symline_line_points(const symline_image *img, const symline_confi
     if (ws_size < symline_detect_workspace_size(img->width, img->height, cfg)) {
         return SYMLINE_ERR_BUFFER;
     }
-    *truncated = 0u;
+    *truncated = false;
     stats.mean = 0u;
     stats.sigma_q4 = 0u;
     if (cfg->adaptive) {
         sl_frame_stats_measure(img, &stats);
     }
-    *count = collect_all(img, cfg, (uint8_t *)ws, (uint8_t *)ws + ws_size, &stats, pts, cap,
-                         truncated);
+    *count =
+        collect_all(img, cfg, (uint8_t *)ws, (uint8_t *)ws + ws_size, &stats, pts, cap, truncated);
     return SYMLINE_OK;
 }

@@ -46,8 +46,7 @@ static int frame_ok(uint32_t width, uint32_t height)
     return width >= 3u && height >= 3u && width <= SYMLINE_MAX_DIM && height <= SYMLINE_MAX_DIM;
 }
 
-size_t symline_muff_accumulator_size(uint32_t width, uint32_t height,
-                                     const symline_muff_config *c)
+size_t symline_muff_accumulator_size(uint32_t width, uint32_t height, const symline_muff_config *c)
 {
     sl_perim p;
     uint64_t bytes;
@@ -77,8 +76,8 @@ size_t symline_muff_workspace_size(uint32_t width, uint32_t height, const symlin
 
 /* The segments of the peaks, strongest first; returns how many were written. */
 SL_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const uint16_t *cx,
-                                         const uint16_t *cy, const sl_peak *peaks,
-                                         uint32_t npeaks, symline_result *out)
+                                    const uint16_t *cy, const sl_peak *peaks, uint32_t npeaks,
+                                    symline_result *out)
 {
     /* the peak's line runs through cell centres: up to half a cell off */
     const uint32_t coarse = e->tol_q8 + (p->cell << 7);
@@ -87,8 +86,7 @@ SL_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const uint1
         /* written in place; the spare only tells that the array is full */
         symline_segment *s = nseg < out->segment_cap ? &out->segments[nseg] : &e->spare;
         uint32_t cnt;
-        sl_uvline_through(&e->line, cx[peaks[k].i], cy[peaks[k].i], cx[peaks[k].j],
-                          cy[peaks[k].j]);
+        sl_uvline_through(&e->line, cx[peaks[k].i], cy[peaks[k].i], cx[peaks[k].j], cy[peaks[k].j]);
         cnt = sl_extent_gather(e, &e->line, coarse);
         if (cnt == 0u) {
             continue;
@@ -100,7 +98,7 @@ SL_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const uint1
             continue;
         }
         if (s == &e->spare) {
-            out->truncated = 1u;
+            out->truncated = true;
             break;
         }
         sl_extent_fit(e, cnt, &e->fit1, &e->fit2);
@@ -137,7 +135,7 @@ symline_status symline_muff_find(uint32_t width, uint32_t height, const symline_
     }
     need = symline_muff_accumulator_size(width, height, c);
     if (need == 0u) {
-        return SYMLINE_ERR_OVERFLOW;
+        return SYMLINE_ERR_SIZE; /* the accumulator would not fit size_t */
     }
     if (acc_size < need || ws_size < symline_muff_workspace_size(width, height, c) ||
         npoints > out->point_cap) {
@@ -185,7 +183,7 @@ symline_status symline_muff_find(uint32_t width, uint32_t height, const symline_
         const uint32_t hole = 2u * ((e->tol_q8 + 255u) >> 8) + 2u;
         e->gap = width / 32u > hole ? width / 32u : hole;
     }
-    out->truncated = 0u;
+    out->truncated = false;
     out->segment_count = extract(e, &p, cx, cy, peaks, npeaks, out);
     out->point_count = e->used;
     return SYMLINE_OK;

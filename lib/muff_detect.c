@@ -6,8 +6,7 @@
 #include "symline/muff.h"
 
 size_t symline_detect_muff_workspace_size(uint32_t width, uint32_t height,
-                                          const symline_config *cfg,
-                                          const symline_muff_config *mc)
+                                          const symline_config *cfg, const symline_muff_config *mc)
 {
     const size_t a = symline_detect_workspace_size(width, height, cfg);
     const size_t b = symline_muff_workspace_size(width, height, mc);
@@ -18,12 +17,11 @@ size_t symline_detect_muff_workspace_size(uint32_t width, uint32_t height,
 }
 
 symline_status symline_detect_muff(const symline_image *img, const symline_config *cfg,
-                                   const symline_muff_config *mc, uint16_t *acc,
-                                   size_t acc_size, void *ws, size_t ws_size,
-                                   symline_result *out)
+                                   const symline_muff_config *mc, uint16_t *acc, size_t acc_size,
+                                   void *ws, size_t ws_size, symline_result *out)
 {
     uint32_t n = 0u;
-    uint8_t cut = 0u;
+    bool cut = false;
     symline_status st = symline_image_check(img);
     if (st != SYMLINE_OK) {
         return st;
@@ -52,7 +50,7 @@ symline_status symline_detect_muff(const symline_image *img, const symline_confi
     }
     st = symline_muff_find(img->width, img->height, mc, acc, acc_size, ws, ws_size, n, out);
     if (st == SYMLINE_OK && cut) {
-        out->truncated = 1u;
+        out->truncated = true;
     }
     return st;
 }

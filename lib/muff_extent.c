@@ -41,12 +41,22 @@ static int32_t v_at(const sl_uvline *l, int32_t u8)
     return l->v0 + (int32_t)(t >= 0 ? (t + 32768) >> 16 : -((-t + 32768) >> 16));
 }
 
-/* |v distance| (Q8) of point p to l; u of p in *u. */
+/* u and v of a point in Q8 px, its sub-pixel offset (1/128 px) included. */
+static int32_t u_q8(const sl_uvline *l, const symline_point *p)
+{
+    return l->u_is_y ? (int32_t)(p->y << 8) + 2 * p->fy : (int32_t)(p->x << 8) + 2 * p->fx;
+}
+
+static int32_t v_q8(const sl_uvline *l, const symline_point *p)
+{
+    return l->u_is_y ? (int32_t)(p->x << 8) + 2 * p->fx : (int32_t)(p->y << 8) + 2 * p->fy;
+}
+
+/* |v distance| (Q8) of point p to l; the pixel u of p in *u. */
 static uint32_t v_dist(const sl_uvline *l, const symline_point *p, uint32_t *u)
 {
-    const uint32_t pu = l->u_is_y ? p->y : p->x, pv = l->u_is_y ? p->x : p->y;
-    const int32_t d = (int32_t)(pv << 8) - v_at(l, (int32_t)(pu << 8));
-    *u = pu;
+    const int32_t d = v_q8(l, p) - v_at(l, u_q8(l, p));
+    *u = l->u_is_y ? p->y : p->x;
     return (uint32_t)(d < 0 ? -d : d);
 }
 
@@ -92,15 +102,17 @@ void sl_extent_fit(const sl_extent *e, uint32_t n, const sl_uvline *l, sl_uvline
     if (n == 0u) {
         return;
     }
+    /* sums in Q4 px (coordinates are >= -1/2 px: sub-pixel offsets at 0 stay
+     * above -64/128, so +8 keeps them non-negative) */
     for (k = 0; k < n; k++) {
-        su += l->u_is_y ? p[k].y : p[k].x;
-        sv += l->u_is_y ? p[k].x : p[k].y;
+        su += (uint64_t)((u_q8(l, &p[k]) + 128) >> 4);
+        sv += (uint64_t)((v_q8(l, &p[k]) + 128) >> 4);
     }
-    mu4 = (int32_t)((su * 16u + n / 2u) / n);
-    mv4 = (int32_t)((sv * 16u + n / 2u) / n);
+    mu4 = (int32_t)((su + n / 2u) / n) - 8;
+    mv4 = (int32_t)((sv + n / 2u) / n) - 8;
     for (k = 0; k < n; k++) {
-        const int64_t du = (int64_t)((l->u_is_y ? p[k].y : p[k].x) * 16u) - mu4;
-        const int64_t dv = (int64_t)((l->u_is_y ? p[k].x : p[k].y) * 16u) - mv4;
+        const int64_t du = (int64_t)(((u_q8(l, &p[k]) + 128) >> 4) - 8) - mu4;
+        const int64_t dv = (int64_t)(((v_q8(l, &p[k]) + 128) >> 4) - 8) - mv4;
         cuu += du * du;
         cuv += du * dv;
     }
@@ -131,10 +143,15 @@ static int32_t clamp_q8(int32_t v, uint32_t max_px)
 static void swap_points(symline_point *a, symline_point *b)
 {
     const uint16_t x = a->x, y = a->y;
+    const int8_t fx = a->fx, fy = a->fy;
     a->x = b->x;
     a->y = b->y;
+    a->fx = b->fx;
+    a->fy = b->fy;
     b->x = x;
     b->y = y;
+    b->fx = fx;
+    b->fy = fy;
 }
 
 void sl_extent_segment(const sl_extent *e, const sl_uvline *ft, uint32_t cnt, symline_segment *s)
@@ -166,7 +183,7 @@ void sl_extent_segment(const sl_extent *e, const sl_uvline *ft, uint32_t cnt, sy
     s->kind = SYMLINE_KIND_LINE;
     s->axis = (uint8_t)(ft->u_is_y ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL);
     s->level = 0u;
-    s->reserved = 0u;
+    s->merged = false;
 }
 
 uint32_t sl_extent_gather(sl_extent *e, const sl_uvline *l, uint32_t tol_q8)

@@ -48,8 +48,8 @@ void sl_muff_vote(const sl_perim *p, const uint16_t *cx, const uint16_t *cy,
                   const symline_point *pts, uint32_t n, uint16_t *acc);
 /* The peaks (votes >= min_votes, beating their neighbourhood), strongest
  * first, at most cap of them; returns their number. */
-uint32_t sl_muff_peaks(const sl_perim *p, const uint16_t *acc, uint32_t min_votes,
-                       uint32_t nms, sl_peak *peaks, uint32_t cap);
+uint32_t sl_muff_peaks(const sl_perim *p, const uint16_t *acc, uint32_t min_votes, uint32_t nms,
+                       sl_peak *peaks, uint32_t cap);
 
 /* muff_extent.c */
 /* The line through two border points (full pixels). */
@@ -58,9 +58,9 @@ void sl_uvline_through(sl_uvline *l, uint32_t ax, uint32_t ay, uint32_t bx, uint
 /* State of the segment extraction over the caller's point list. */
 typedef struct sl_extent {
     symline_point *pts;
-    uint32_t n;       /* points in the list */
-    uint32_t used;    /* points [0, used) belong to segments already made */
-    uint16_t *bins;   /* one counter per u, max(width, height) of them */
+    uint32_t n;     /* points in the list */
+    uint32_t used;  /* points [0, used) belong to segments already made */
+    uint16_t *bins; /* one counter per u, max(width, height) of them */
     uint32_t width, height;
     const symline_muff_config *cfg;
     uint32_t tol_q8, gap; /* support distance and gap in use (auto resolved) */

@@ -181,8 +181,8 @@ static int is_peak(const sl_perim *p, const uint16_t *acc, uint32_t i, uint32_t 
     return 1;
 }
 
-uint32_t sl_muff_peaks(const sl_perim *p, const uint16_t *acc, uint32_t min_votes,
-                       uint32_t nms, sl_peak *peaks, uint32_t cap)
+uint32_t sl_muff_peaks(const sl_perim *p, const uint16_t *acc, uint32_t min_votes, uint32_t nms,
+                       sl_peak *peaks, uint32_t cap)
 {
     uint32_t i, j, n = 0u;
     size_t idx = 0u;

@@ -67,8 +67,7 @@ uint32_t symline_muff_cell(const symline_muff_config *c, uint32_t width);
  * frame with this configuration; 0 when invalid (frames narrower or lower
  * than 3 px, a bad configuration, or a size that does not fit size_t).
  */
-size_t symline_muff_accumulator_size(uint32_t width, uint32_t height,
-                                     const symline_muff_config *c);
+size_t symline_muff_accumulator_size(uint32_t width, uint32_t height, const symline_muff_config *c);
 
 /*
  * Bytes of workspace symline_muff_find() needs besides the accumulator
@@ -87,7 +86,8 @@ size_t symline_muff_workspace_size(uint32_t width, uint32_t height, const symlin
  * strongest peak first. out->truncated is set when segment_cap ran out.
  * acc: acc_size >= symline_muff_accumulator_size() bytes, uint16_t-aligned,
  * overwritten; ws: ws_size bytes, any alignment.
- * Returns SYMLINE_OK, ERR_NULL, ERR_SIZE, ERR_CONFIG, ERR_BUFFER (acc or ws
+ * Returns SYMLINE_OK, ERR_NULL, ERR_SIZE (also: an accumulator beyond size_t),
+ * ERR_CONFIG, ERR_BUFFER (acc or ws
  * too small, npoints > point_cap) or ERR_RANGE (a point outside the frame);
  * on an error *out is unchanged apart from the order of its points.
  */
@@ -100,8 +100,7 @@ symline_status symline_muff_find(uint32_t width, uint32_t height, const symline_
  * filter's (symline_detect_workspace_size()) and the finder's; 0 if invalid.
  */
 size_t symline_detect_muff_workspace_size(uint32_t width, uint32_t height,
-                                          const symline_config *cfg,
-                                          const symline_muff_config *mc);
+                                          const symline_config *cfg, const symline_muff_config *mc);
 
 /*
  * The paper's first method end to end, next to symline_detect(): the line
@@ -116,9 +115,8 @@ size_t symline_detect_muff_workspace_size(uint32_t width, uint32_t height,
  * Returns the status codes of symline_detect() and symline_muff_find().
  */
 symline_status symline_detect_muff(const symline_image *img, const symline_config *cfg,
-                                   const symline_muff_config *mc, uint16_t *acc,
-                                   size_t acc_size, void *ws, size_t ws_size,
-                                   symline_result *out);
+                                   const symline_muff_config *mc, uint16_t *acc, size_t acc_size,
+                                   void *ws, size_t ws_size, symline_result *out);
 
 #ifdef __cplusplus
 }

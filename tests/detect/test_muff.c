@@ -21,9 +21,11 @@
 /* A horizontal line y = 19, x = 10..89, and a vertical one x = 62, y = 5..70.
  * Both cross the border inside perimeter cells (not on a cell boundary, where
  * the votes would split between two neighbouring pairs). */
+/* p: room for 200 points */
 static uint32_t two_lines(symline_point *p)
 {
     uint32_t n = 0, x, y;
+    memset(p, 0, 200 * sizeof *p);
     for (x = 10; x <= 89; x++) {
         p[n].x = (uint16_t)x;
         p[n++].y = 19;
@@ -222,7 +224,7 @@ static void test_detect_muff(void **state)
 static void test_errors(void **state)
 {
     symline_muff_config c;
-    symline_point pts[4] = {{1, 1}, {2, 2}, {3, 3}, {200, 3}};
+    symline_point pts[4] = {{1, 1, 0, 0}, {2, 2, 0, 0}, {3, 3, 0, 0}, {200, 3, 0, 0}};
     symline_segment segs[2];
     symline_result r;
     uint16_t acc[4096];

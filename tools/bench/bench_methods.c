@@ -42,7 +42,7 @@ int main(int argc, char **argv)
     void *ws, *lws;
     uint16_t *acc = NULL;
     uint32_t nlp = 0u;
-    uint8_t cut = 0u;
+    bool cut = false;
     double t0, t1;
     if (argc != 4 || (strcmp(argv[1], "tracer") != 0 && strcmp(argv[1], "muff") != 0)) {
         fprintf(stderr, "usage: symline-bench-methods tracer|muff REPEAT IN\n");
