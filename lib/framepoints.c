@@ -16,10 +16,9 @@
 
 /* Leaves out the points of a pass's raster list pts[0..n-1] that have no line
  * point among their 8 neighbours (type A, SPEC §4: neither method uses them),
- * moves the rest to the front at full resolution with their sub-pixel offsets
- * across the line and returns their number. */
-SL_NOINLINE static uint32_t drop_isolated(const symline_image *img, const sl_pass *p,
-                                          symline_point *pts, uint32_t n, const uint32_t *row_start)
+ * moves the rest to the front and returns their number. */
+SL_NOINLINE static uint32_t drop_isolated(const sl_pass *p, symline_point *pts, uint32_t n,
+                                          const uint32_t *row_start)
 {
     sl_tracer t;
     uint32_t y, i, k = 0u;
@@ -39,10 +38,6 @@ SL_NOINLINE static uint32_t drop_isolated(const symline_image *img, const sl_pas
             k++;
         }
     }
-    sl_subpixel(img, p, pts, k);
-    for (i = 0; i < k; i++) {
-        sl_pt_to_full(&pts[i], p->level);
-    }
     return k;
 }
 
@@ -52,7 +47,7 @@ SL_NOINLINE static uint32_t collect_all(const symline_image *img, const symline_
                                         symline_point *pts, uint32_t cap, bool *truncated)
 {
     const uint32_t L = sl_level_count(cfg, img->width, img->height);
-    uint32_t l, a, n = 0u;
+    uint32_t l, a, k, n = 0u;
     for (l = 0; l < L; l++) {
         for (a = 0; a < sl_axis_count(cfg); a++) {
             uint8_t *cur = ws;
@@ -72,7 +67,14 @@ SL_NOINLINE static uint32_t collect_all(const symline_image *img, const symline_
             }
             (void)sl_collect(img, p, cur, (size_t)(end - cur), pts + n, cap - n, &got, row_start,
                              truncated);
-            n += drop_isolated(img, p, pts + n, got, row_start);
+            got = drop_isolated(p, pts + n, got, row_start);
+            /* sub-pixel offsets across the line, then full resolution (a call
+             * apart from drop_isolated: the stack holds one of them at a time) */
+            sl_subpixel(img, p, pts + n, got);
+            for (k = n; k < n + got; k++) {
+                sl_pt_to_full(&pts[k], p->level);
+            }
+            n += got;
         }
     }
     return n;
