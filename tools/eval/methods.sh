@@ -169,7 +169,7 @@ if command -v arm-none-eabi-gcc >/dev/null; then
     echo "|---|---|---:|"
     awk 'BEGIN {
             g["status"] = "shared"; g["fixed"] = "shared"; g["symmetry"] = "shared"; g["extrema"] = "shared";
-            g["linefilter"] = "shared"; g["linepoints"] = "shared";
+            g["linefilter"] = "shared"; g["linepoints"] = "shared"; g["subpixel"] = "shared";
             g["tracer"] = "tracer"; g["segments"] = "tracer"; g["merge"] = "tracer";
             g["curvejoin"] = "tracer"; g["pass"] = "tracer"; g["detect"] = "tracer";
             g["framepoints"] = "muff"; g["muff"] = "muff"; g["muff_vote"] = "muff";
