@@ -19,6 +19,7 @@ void symline_muff_config_default(symline_muff_config *c)
     c->gap = 0u;
     c->min_points = 12u;
     c->min_length = 12u;
+    c->min_fill_pct = 80u;
 }
 
 /* Ranges of symline_muff_config (see symline/muff.h). */
@@ -27,7 +28,8 @@ static int config_ok(const symline_muff_config *c)
     return c != NULL && c->cell <= 64u && c->min_votes >= 1u && c->min_votes <= 65535u &&
            c->nms_cells <= 16u && c->max_peaks >= 1u && c->max_peaks <= 1024u &&
            (c->tol_q8 == 0u || (c->tol_q8 >= 64u && c->tol_q8 <= 8192u)) && c->gap <= 65535u &&
-           c->min_points >= 2u && c->min_points <= 65535u && c->min_length <= 65535u;
+           c->min_points >= 2u && c->min_points <= 65535u && c->min_length <= 65535u &&
+           c->min_fill_pct <= 100u;
 }
 
 uint32_t symline_muff_cell(const symline_muff_config *c, uint32_t width)

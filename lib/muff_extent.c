@@ -91,6 +91,24 @@ static uint32_t best_run(const uint16_t *bins, uint32_t umax, uint32_t gap, uint
     return best;
 }
 
+/* 1 when the non-empty bins cover at least fill_pct % of [lo, hi]; gaps of up
+ * to `skip` bins count as covered (a coarse scale's points lie 2^level px
+ * apart). Collinear clutter (nets, spectators) fails it: its points line up
+ * only here and there. */
+static int well_filled(const uint16_t *bins, uint32_t lo, uint32_t hi, uint32_t skip,
+                       uint32_t fill_pct)
+{
+    uint32_t u, empty = 0u, last = lo;
+    for (u = lo + 1u; u <= hi; u++) {
+        if (bins[u] != 0u) {
+            const uint32_t g = u - last - 1u;
+            empty += g > skip ? g - skip : 0u;
+            last = u;
+        }
+    }
+    return (uint64_t)empty * 100u <= (uint64_t)(100u - fill_pct) * (hi - lo + 1u);
+}
+
 /* Least-squares v(u) through the k gathered points, in l's frame. */
 void sl_extent_fit(const sl_extent *e, uint32_t n, const sl_uvline *l, sl_uvline *out)
 {
@@ -199,7 +217,8 @@ uint32_t sl_extent_gather(sl_extent *e, const sl_uvline *l, uint32_t tol_q8)
             e->bins[u]++;
         }
     }
-    if (best_run(e->bins, umax, e->gap, &lo, &hi) < e->cfg->min_points) {
+    if (best_run(e->bins, umax, e->gap, &lo, &hi) < e->cfg->min_points ||
+        !well_filled(e->bins, lo, hi, e->width / 160u, e->cfg->min_fill_pct)) {
         return 0u;
     }
     for (k = e->used; k < e->n; k++) {

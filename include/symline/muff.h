@@ -16,7 +16,8 @@
  * centre and the point (the pair of that cell and the cell where the line
  * leaves the frame). Peaks that beat every pair within `nms_cells` cells at
  * both ends are lines; strongest first, each takes the line points within
- * `tol_q8` of it, along the longest run without a gap of more than `gap` px,
+ * `tol_q8` of it, along the longest run without a gap of more than `gap` px
+ * (and covering at least `min_fill_pct` % of the run),
  * gets a least-squares fit, takes the points near the fit once more and is
  * reported as a segment clipped to the extent of those points (not border to
  * border). A point supports at most one segment.
@@ -38,22 +39,26 @@ extern "C" {
 #endif
 
 typedef struct symline_muff_config {
-    uint32_t cell;       /* perimeter cell, px along the border, 1..64;
+    uint32_t cell;         /* perimeter cell, px along the border, 1..64;
                             0 = auto: width/80, at least 2 (default 0) */
-    uint32_t min_votes;  /* smallest accumulator peak, 1..65535; default 24 */
-    uint32_t nms_cells;  /* a peak beats every pair within this many cells at
+    uint32_t min_votes;    /* smallest accumulator peak, 1..65535; default 24 */
+    uint32_t nms_cells;    /* a peak beats every pair within this many cells at
                             both ends, 0..16; default 2 */
-    uint32_t max_peaks;  /* strongest peaks examined, 1..1024; default 128 */
-    uint32_t tol_q8;     /* a line point supports a line within this distance,
+    uint32_t max_peaks;    /* strongest peaks examined, 1..1024; default 128 */
+    uint32_t tol_q8;       /* a line point supports a line within this distance,
                             Q8 px, 64..8192; 0 = auto: 3 px * width/640, at
                             least 2 px (default 0) */
-    uint32_t gap;        /* largest gap between supporting points along a
+    uint32_t gap;          /* largest gap between supporting points along a
                             segment, px, 1..65535; 0 = auto: width/32, at
                             least 2 tol + 2 px, the hole a crossing line
                             leaves (default 0) */
-    uint32_t min_points; /* fewest supporting points of a segment, 2..65535;
+    uint32_t min_points;   /* fewest supporting points of a segment, 2..65535;
                             default 12 */
-    uint32_t min_length; /* shortest segment, px, 0..65535; default 12 */
+    uint32_t min_length;   /* shortest segment, px, 0..65535; default 12 */
+    uint32_t min_fill_pct; /* the points of a segment cover at least this % of
+                            its length, gaps up to width/160 px counting as
+                            covered (coarse scales' points lie apart);
+                            0..100, 0 = off; default 80 */
 } symline_muff_config;
 
 /* Fills *c with the defaults above (no-op on NULL). */

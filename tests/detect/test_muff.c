@@ -165,6 +165,48 @@ static void test_two_segments(void **state)
     free(ws);
 }
 
+/* Points every 6 px along a line: enough votes and no gap above `gap`, but
+ * they cover a sixth of its length, so the fill test rejects them. */
+static void test_sparse_line(void **state)
+{
+    symline_muff_config c;
+    symline_point pts[32];
+    symline_segment segs[4];
+    symline_result r;
+    uint16_t *acc;
+    void *ws;
+    size_t acc_size, ws_size;
+    uint32_t n = 0, x;
+    (void)state;
+    memset(pts, 0, sizeof pts);
+    for (x = 10; x <= 88; x += 6) {
+        pts[n].x = (uint16_t)x;
+        pts[n++].y = 30;
+    }
+    symline_muff_config_default(&c);
+    c.cell = 4;
+    c.min_votes = 8;
+    c.gap = 10;
+    acc_size = symline_muff_accumulator_size(W, H, &c);
+    ws_size = symline_muff_workspace_size(W, H, &c);
+    acc = (uint16_t *)malloc(acc_size);
+    ws = malloc(ws_size);
+    memset(&r, 0, sizeof r);
+    r.segments = segs;
+    r.segment_cap = 4;
+    r.points = pts;
+    r.point_cap = 32;
+    assert_int_equal(symline_muff_find(W, H, &c, acc, acc_size, ws, ws_size, n, &r), SYMLINE_OK);
+    assert_int_equal(r.segment_count, 0u);
+    c.min_fill_pct = 0;
+    assert_int_equal(symline_muff_find(W, H, &c, acc, acc_size, ws, ws_size, n, &r), SYMLINE_OK);
+    assert_int_equal(r.segment_count, 1u);
+    near_q8(segs[0].x0, 10, 64);
+    near_q8(segs[0].x1, 88, 64);
+    free(acc);
+    free(ws);
+}
+
 /* End to end: a bright cross drawn on a dark frame, through the line filter. */
 static void test_detect_muff(void **state)
 {
@@ -265,6 +307,7 @@ int main(void)
         cmocka_unit_test(test_perimeter),
         cmocka_unit_test(test_two_peaks),
         cmocka_unit_test(test_two_segments),
+        cmocka_unit_test(test_sparse_line),
         cmocka_unit_test(test_detect_muff),
         cmocka_unit_test(test_errors),
     };

@@ -21,6 +21,7 @@ static const muff_opt opts[] = {
     {"--muff-tol", 0, 8192, offsetof(symline_muff_config, tol_q8)},
     {"--muff-gap", 0, 65535, offsetof(symline_muff_config, gap)},
     {"--min-points", 2, 65535, offsetof(symline_muff_config, min_points)},
+    {"--min-fill", 0, 100, offsetof(symline_muff_config, min_fill_pct)},
 };
 
 void muffopts_init(muffopts *m)
@@ -76,6 +77,9 @@ void muffopts_help(FILE *f)
             "                      0 = 3 px * width/640, at least 2 px (%u)\n"
             "  --muff-gap PX       largest gap between a segment's points; 0 = width/32,\n"
             "                      at least 2 x tolerance + 2 px (%u)\n"
-            "  --min-points N      fewest points of a segment (%u)\n",
-            c.cell, c.min_votes, c.nms_cells, c.max_peaks, c.tol_q8, c.gap, c.min_points);
+            "  --min-points N      fewest points of a segment (%u)\n"
+            "  --min-fill PCT      a segment's points cover PCT %% of its length, gaps up\n"
+            "                      to width/160 px counted as covered; 0 = off (%u)\n",
+            c.cell, c.min_votes, c.nms_cells, c.max_peaks, c.tol_q8, c.gap, c.min_points,
+            c.min_fill_pct);
 }
