@@ -25,11 +25,11 @@ void sl_uvline_through(sl_uvline *l, uint32_t ax, uint32_t ay, uint32_t bx, uint
     if (!l->u_is_y) {
         l->u0 = (int32_t)(ax << 8);
         l->v0 = (int32_t)(ay << 8);
-        l->slope16 = dx != 0 ? (int32_t)(((int64_t)dy << 16) / dx) : 0;
+        l->slope16 = dx != 0 ? (int32_t)(((int64_t)dy * 65536) / dx) : 0;
     } else {
         l->u0 = (int32_t)(ay << 8);
         l->v0 = (int32_t)(ax << 8);
-        l->slope16 = (int32_t)(((int64_t)dx << 16) / dy);
+        l->slope16 = (int32_t)(((int64_t)dx * 65536) / dy);
     }
     l->sec16 = sec16_of(l->slope16);
 }

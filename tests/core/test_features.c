@@ -388,6 +388,8 @@ int main(void)
         dot = strstr(name, ".m");
         if (c == NULL || us == NULL || dot == NULL) {
             fprintf(stderr, "bad golden file name %s\n", e->d_name);
+            free(c);
+            closedir(d);
             return 1;
         }
         *us = '\0';
@@ -411,5 +413,9 @@ int main(void)
     }
     rc = cmocka_run_group_tests_name("features", fixed, NULL, NULL);
     rc |= _cmocka_run_group_tests("features_golden", golden, n, NULL, NULL);
+    while (n-- > 0u) {
+        free((void *)golden[n].name);
+        free(golden[n].initial_state);
+    }
     return rc;
 }
