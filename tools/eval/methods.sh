@@ -12,7 +12,8 @@
 #   --repeat N    detections per frame for the time per frame (default 20)
 #   --jobs N      parallel jobs (default 2)
 # DATA_DIR/synth: the given synthetic scenes; DATA_DIR/field: real frames, those
-# with NAME.lines.txt are scored. Both methods run at default settings with
+# with NAME.lines.txt are scored (line-free ones, with empty ground truth, by
+# their number of segments). Both methods run at default settings with
 # --axis both (the default); the Muff finder with `symline lines --method muff`.
 set -eu
 
@@ -92,9 +93,16 @@ SYMLINE="$BIN/symline" xargs -P "$JOBS" -n 3 sh -c '
     mkdir -p "$(dirname "$2")"
     "$SYMLINE" lines --method "$0" "$1" > "$2" 2> "$2.err" || echo "{\"segments\": []}" > "$2"' < "$OUT/detect.todo"
 : > "$OUT/scores.txt"
+: > "$OUT/linefree.txt"
 while read -r m img json; do
     label=$(basename "$(dirname "$json")")
-    s=$("$BIN/symline-score" gt "${img%.pgm}" "$json" | head -n 1)
+    name=${img%.pgm}
+    if [ ! -s "$name.lines.txt" ] && [ ! -s "$name.arcs.txt" ]; then
+        # a line-free frame: F1 is 0 or 1 there, so it is reported as a segment count
+        echo "$m $(tr '{' '\n' < "$json" | grep -c '"x0"' || true) $(basename "$name")" >> "$OUT/linefree.txt"
+        continue
+    fi
+    s=$("$BIN/symline-score" gt "$name" "$json" | head -n 1)
     echo "$m $label $s" >> "$OUT/scores.txt"
 done < "$OUT/detect.todo"
 
@@ -126,6 +134,15 @@ for sd in $set_dirs; do
     echo "$row"
 done
 echo "| mean of the synthetic sets | | $(setmean tracer) | | | $(setmean muff) | | |"
+if [ -s "$OUT/linefree.txt" ]; then
+    echo
+    echo "Line-free real frames (empty ground truth), segments reported:"
+    echo
+    echo "| frame | tracer | muff |"
+    echo "|---|---:|---:|"
+    awk '{ seg[$3, $1] = $2; if (!($3 in seen)) { seen[$3] = 1; order[++n] = $3 } }
+         END { for (k = 1; k <= n; k++) printf "| %s | %s | %s |\n", order[k], seg[order[k], "tracer"], seg[order[k], "muff"] }' "$OUT/linefree.txt"
+fi
 echo
 
 # ---- time, instructions, memory ----
