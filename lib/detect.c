@@ -11,6 +11,7 @@
 #include "linefilter.h"
 #include "merge.h"
 #include "pass.h"
+#include "passplan.h"
 
 void symline_config_default(symline_config *cfg)
 {
@@ -40,7 +41,7 @@ void symline_config_default(symline_config *cfg)
 /* Largest value of the Q8 length settings: the largest frame dimension. */
 #define SL_MAX_LENGTH_Q8 (SYMLINE_MAX_DIM << SL_Q8_SHIFT)
 
-static symline_status check_config(const symline_config *c)
+symline_status sl_config_check(const symline_config *c)
 {
     if (c->axes != SYMLINE_AXES_HORIZONTAL && c->axes != SYMLINE_AXES_VERTICAL &&
         c->axes != SYMLINE_AXES_BOTH) {
@@ -67,7 +68,7 @@ static symline_status check_config(const symline_config *c)
 /* Number of scales (levels): as configured, or enough that the coarsest one reaches
  * lines width/16 px wide (radius m spans lines up to about 2m+1 px); never
  * a grid smaller than the operator's window. */
-static uint32_t level_count(const symline_config *c, uint32_t width, uint32_t height)
+uint32_t sl_level_count(const symline_config *c, uint32_t width, uint32_t height)
 {
     uint32_t levels = c->levels;
     const uint32_t span = 2u * c->radius + 1u;
@@ -85,12 +86,12 @@ static uint32_t level_count(const symline_config *c, uint32_t width, uint32_t he
 }
 
 /* The axes of a detection: how many, and the index-th (horizontal first). */
-static uint32_t axis_count(const symline_config *c)
+uint32_t sl_axis_count(const symline_config *c)
 {
     return c->axes == SYMLINE_AXES_BOTH ? 2u : 1u;
 }
 
-static symline_axis axis_of(const symline_config *c, uint32_t index)
+symline_axis sl_axis_of(const symline_config *c, uint32_t index)
 {
     if (c->axes == SYMLINE_AXES_BOTH) {
         return index == 0u ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL;
@@ -104,15 +105,15 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
     uint32_t levels, level, axis;
     size_t best = 0u;
     if (cfg == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
-        height > SYMLINE_MAX_DIM || check_config(cfg) != SYMLINE_OK) {
+        height > SYMLINE_MAX_DIM || sl_config_check(cfg) != SYMLINE_OK) {
         return 0u;
     }
-    levels = level_count(cfg, width, height);
+    levels = sl_level_count(cfg, width, height);
     for (level = 0; level < levels; level++) {
-        for (axis = 0; axis < axis_count(cfg); axis++) {
+        for (axis = 0; axis < sl_axis_count(cfg); axis++) {
             sl_pass p;
             size_t n;
-            sl_pass_setup(&p, cfg, axis_of(cfg, axis), level, width, height);
+            sl_pass_setup(&p, cfg, sl_axis_of(cfg, axis), level, width, height);
             n = sl_pass_ws_size(&p, width);
             best = n > best ? n : best;
         }
@@ -129,10 +130,10 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
     uint32_t levels, level, axis;
     uint8_t *cur = ws, *const end = ws + ws_size;
     sl_pass *p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
-    levels = level_count(cfg, d->img->width, d->img->height);
+    levels = sl_level_count(cfg, d->img->width, d->img->height);
     for (level = 0; level < levels && p != NULL; level++) {
-        for (axis = 0; axis < axis_count(cfg); axis++) {
-            sl_pass_setup(p, cfg, axis_of(cfg, axis), level, d->img->width, d->img->height);
+        for (axis = 0; axis < sl_axis_count(cfg); axis++) {
+            sl_pass_setup(p, cfg, sl_axis_of(cfg, axis), level, d->img->width, d->img->height);
             if (cfg->adaptive) {
                 sl_linefilter_adapt(&p->filter, cfg, &d->stats);
             }
@@ -158,7 +159,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
         (out->points == NULL && out->point_cap != 0u)) {
         return SYMLINE_ERR_NULL;
     }
-    st = check_config(cfg);
+    st = sl_config_check(cfg);
     if (st != SYMLINE_OK) {
         return st;
     }

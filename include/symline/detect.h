@@ -213,6 +213,26 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
 symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
                               size_t ws_size, symline_result *out);
 
+/*
+ * The line filter's output alone: the line points of every pass (axes and
+ * scales as configured, adaptive thresholds included), in full-resolution
+ * pixels with their sub-pixel offsets across the line (fx, fy, as in the
+ * segments' points), pass after pass,
+ * each pass in raster order, written to pts[0 .. *count-1]. Points without a
+ * line point among their 8 neighbours in their pass (type A, SPEC §4) are
+ * left out, as the tracer ignores them. A pixel found by two passes is
+ * listed twice. This is what symline_detect() traces and what
+ * the Muff-space finder (symline/muff.h) votes with.
+ * ws: ws_size >= symline_detect_workspace_size() bytes; pts: cap entries
+ * (not NULL; give room for every line point: a few thousand in a 320x240
+ * field view). When cap runs out,
+ * the points that fit are kept and *truncated is set to true (else false).
+ * Returns SYMLINE_OK, ERR_NULL, ERR_SIZE, ERR_STRIDE, ERR_CONFIG or ERR_BUFFER.
+ */
+symline_status symline_line_points(const symline_image *img, const symline_config *cfg, void *ws,
+                                   size_t ws_size, symline_point *pts, uint32_t cap,
+                                   uint32_t *count, bool *truncated);
+
 #ifdef __cplusplus
 }
 #endif
