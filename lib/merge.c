@@ -92,10 +92,23 @@ SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_s
                                        uint32_t curve_q8)
 {
     uint32_t d = sl_max_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    uint32_t sm = sl_smooth_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     const uint32_t d2 =
         sl_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    const uint32_t sm2 =
+        sl_smooth_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     d = d2 > d ? d2 : d;
-    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], d, curve_q8) ? SL_JOINED_IS_CURVE : d;
+    sm = sm2 > sm ? sm2 : sm;
+    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_JOINED_IS_CURVE : d;
+}
+
+/* A line may join; so may a piece taken for a curve whose points, smoothed,
+ * stay within half the curve threshold of its chord: a straight piece whose
+ * ridge jitters on the turf, not an arc of the circle. */
+static bool joinable(const symline_segment *s, const symline_point *pts, uint32_t curve_q8)
+{
+    return s->kind == SYMLINE_KIND_LINE ||
+           sl_smooth_dev(pts + s->first, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <= curve_q8 / 2u;
 }
 
 /* A segment's ends, Q8. */
@@ -149,9 +162,6 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
     while (changed) {
         changed = false;
         for (i = 0; i < r->segment_count; i++) {
-            if (r->segments[i].kind != SYMLINE_KIND_LINE) {
-                continue;
-            }
             for (j = i + 1u; j < r->segment_count; j++) {
                 int32_t ends[4];
                 uint32_t dev;
@@ -159,7 +169,8 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 const symline_segment *b = &r->segments[j];
                 const uint32_t level = a->level > b->level ? a->level : b->level;
                 const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
-                if (b->kind != SYMLINE_KIND_LINE) {
+                if (!joinable(a, r->points, curve_dev_q8) ||
+                    !joinable(b, r->points, curve_dev_q8)) {
                     continue;
                 }
                 if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(level), ends)) {
@@ -171,12 +182,70 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 }
                 set_ends(a, ends[0], ends[1], ends[2], ends[3]);
                 a->max_dev = dev;
+                a->kind = SYMLINE_KIND_LINE;
                 a->level = (uint8_t)level;
                 a->merged = true; /* points piece after piece (curvejoin.c) */
                 absorb(r, i, j);
                 changed = true;
                 j = i; /* the grown segment may now reach pieces it missed */
             }
+        }
+    }
+}
+
+/* Short pieces tested for lying along a longer line, and how many of their
+ * points are looked at. */
+#define SL_DUP_MAX_POINTS 48u
+#define SL_DUP_SAMPLES 16u
+
+/* True when at least 70 % of the sampled points of s lie within tol of line h. */
+static bool along(const symline_segment *s, const symline_segment *h, const symline_point *pts,
+                  int32_t tol)
+{
+    const uint32_t step = s->count / SL_DUP_SAMPLES + 1u;
+    uint32_t i, near = 0u, all = 0u;
+    for (i = 0; i < s->count; i += step, all++) {
+        const symline_point *q = &pts[s->first + i];
+        near += sl_near_segment(h, pts, sl_pt_q8x(q, 0u), sl_pt_q8y(q, 0u), tol) ? 1u : 0u;
+    }
+    return near * 10u >= all * 7u;
+}
+
+/* Removes segment j and its points; the later ranges move down. */
+static void drop(symline_result *r, uint32_t j)
+{
+    const uint32_t first = r->segments[j].first, cnt = r->segments[j].count;
+    uint32_t k;
+    for (k = first; k + cnt < r->point_count; k++) {
+        r->points[k].x = r->points[k + cnt].x;
+        r->points[k].y = r->points[k + cnt].y;
+        r->points[k].fx = r->points[k + cnt].fx;
+        r->points[k].fy = r->points[k + cnt].fy;
+    }
+    for (k = j; k + 1u < r->segment_count; k++) {
+        copy_segment(&r->segments[k], &r->segments[k + 1u]);
+        r->segments[k].first -= cnt;
+    }
+    r->point_count -= cnt;
+    r->segment_count--;
+}
+
+void sl_drop_duplicates(symline_result *r, uint32_t tol_q8)
+{
+    uint32_t i = 0u;
+    while (i < r->segment_count) {
+        const symline_segment *s = &r->segments[i];
+        bool dup = false;
+        uint32_t k;
+        for (k = 0; s->count <= SL_DUP_MAX_POINTS && k < r->segment_count && !dup; k++) {
+            const symline_segment *h = &r->segments[k];
+            dup = k != i && h->kind == SYMLINE_KIND_LINE && h->count > s->count &&
+                  along(s, h, r->points, (int32_t)(tol_q8 + sl_block_half_q8(s->level)));
+        }
+        if (dup) {
+            drop(r, i);
+        } else {
+            i++;
         }
     }
 }

@@ -97,6 +97,42 @@ uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t 
     return sl_div_q8(best, len);
 }
 
+/* Points per window of the smoothed deviation: a traced ridge on turf jitters
+ * by a pixel or two from point to point, an arc's sagitta does not average out. */
+#define SL_SMOOTH_WIN 5u
+
+uint32_t sl_smooth_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
+                       int32_t x1, int32_t y1)
+{
+    const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
+    const uint64_t len = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
+    const uint32_t win = n < SL_SMOOTH_WIN ? n : SL_SMOOTH_WIN;
+    int64_t sum = 0;
+    uint64_t best = 0u;
+    uint32_t i;
+    if (len == 0u || win == 0u) {
+        return sl_max_dev(p, n, level, x0, y0, x1, y1);
+    }
+    /* The cross product is linear in the point: the window's mean point lies
+     * sum/win from the chord. Differences of Q8 coordinates of one frame fit
+     * 25 bits, so every product and a 5-term sum stay well inside 64 bits. */
+    for (i = 0; i < n; i++) {
+        const int64_t wx = (int64_t)sl_pt_q8x(&p[i], level) - x0;
+        const int64_t wy = (int64_t)sl_pt_q8y(&p[i], level) - y0;
+        sum += wx * dy - wy * dx;
+        if (i >= win) {
+            const int64_t ox = (int64_t)sl_pt_q8x(&p[i - win], level) - x0;
+            const int64_t oy = (int64_t)sl_pt_q8y(&p[i - win], level) - y0;
+            sum -= ox * dy - oy * dx;
+        }
+        if (i + 1u >= win) {
+            const uint64_t a = (uint64_t)(sum < 0 ? -sum : sum);
+            best = a > best ? a : best;
+        }
+    }
+    return sl_div_q8(best / win, len);
+}
+
 /* A curve bends away from its chord by more than the threshold and by more
  * than 1/32 of the chord: a straight line's pixel steps and noise stay near
  * 1-2 px however long it is, while an arc's sagitta grows with its chord. */
@@ -245,7 +281,8 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
     bool curve;
     chord_ends(p, n, level, s);
     s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
-    curve = sl_is_curve(s->x0, s->y0, s->x1, s->y1, s->max_dev, thr);
+    curve = sl_is_curve(s->x0, s->y0, s->x1, s->y1,
+                        sl_smooth_dev(p, n, level, s->x0, s->y0, s->x1, s->y1), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
         s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);

@@ -36,6 +36,11 @@ uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t
 uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
                     int32_t x1, int32_t y1);
 
+/* Like sl_max_dev(), for the mean of every run of a few consecutive points:
+ * the bend of the piece without the point-to-point jitter of its ridge. */
+uint32_t sl_smooth_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
+                       int32_t x1, int32_t y1);
+
 /* Curve test: max_dev above thr and above 1/32 of the chord. */
 bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr);
 
