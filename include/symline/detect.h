@@ -35,6 +35,7 @@
 #ifndef SYMLINE_DETECT_H
 #define SYMLINE_DETECT_H
 
+#include "symline/field.h"
 #include "symline/types.h"
 
 #ifdef __cplusplus
@@ -163,6 +164,8 @@ typedef struct symline_result {
     uint32_t point_cap;
     uint32_t point_count; /* points referenced by the segments, [0, point_count) */
     uint8_t truncated;    /* 1 when segments or points did not fit */
+    symline_field_boundary field; /* the field boundary (symline/field.h);
+                                     count 0 when not computed */
 } symline_result;
 
 /*
