@@ -324,6 +324,12 @@ SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, sl_fc
         out->v[i].x = col[i].cur;
         out->v[i].y = col[i].best;
     }
+    if (out->v[n - 1u].x != (int32_t)img->width - 1) {
+        /* One grid column (a frame no wider than a cell): span the frame. */
+        out->v[n].x = (int32_t)img->width - 1;
+        out->v[n].y = out->v[n - 1u].y;
+        n++;
+    }
     out->count = n;
 }
 
