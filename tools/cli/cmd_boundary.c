@@ -1,6 +1,7 @@
 /*
  * `symline boundary`: the field boundary alone (include/symline/field.h).
  */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,23 +13,52 @@
 #include "symline/detect.h"
 #include "symline/field.h"
 
+/* The settings of symline/field.h as options. */
+typedef struct fb_opt {
+    const char *name;
+    size_t off;
+    uint32_t lo, hi;
+    const char *help;
+} fb_opt;
+
+#define FB_OFF(f) offsetof(symline_field_config, f)
+static const fb_opt FB_OPTS[] = {
+    {"--cell", FB_OFF(cell), 0u, 64u, "grid step px, a power of two 2..64; 0 = auto (8 or 16)"},
+    {"--band-pct", FB_OFF(band_pct), 1u, 100u, "carpet model from the lowest % of the rows"},
+    {"--mean-tol", FB_OFF(mean_tol), 0u, 255u, "gray distance of a carpet cell to the model"},
+    {"--local-tol", FB_OFF(local_tol), 0u, 255u, "... or to its column's running carpet mean"},
+    {"--tex-lo-pct", FB_OFF(tex_lo_pct), 0u, 100u, "smallest texture, % of the model's"},
+    {"--tex-hi-pct", FB_OFF(tex_hi_pct), 100u, 10000u, "largest texture, % of the model's"},
+    {"--miss-cost", FB_OFF(miss_cost), 1u, 16u, "penalty of a non-carpet cell in the column scan"},
+    {"--gap-pct", FB_OFF(gap_pct), 0u, 100u, "a column ends after this % of rows without carpet"},
+    {"--support", FB_OFF(support), 1u, 8u, "columns nearby that must reach as high"},
+    {"--col-cells", FB_OFF(col_cells), 1u, 4u, "grid columns lie this many cells apart"},
+    {"--restore-cells", FB_OFF(restore_cells), 0u, 64u, "own tops count up to this many cells higher"},
+};
+#define FB_NOPTS (sizeof FB_OPTS / sizeof FB_OPTS[0])
+
+static uint32_t *fb_field(symline_field_config *fc, size_t off)
+{
+    return (uint32_t *)(void *)((char *)fc + off);
+}
+
 static void boundary_usage(FILE *f)
 {
     symline_field_config fc;
+    size_t i;
     symline_field_config_default(&fc);
+    fprintf(f, "usage: symline boundary [options] IN [OUT.png]\n");
+    for (i = 0; i < FB_NOPTS; i++) {
+        fprintf(f, "  %-14s N  %s (default %u)\n", FB_OPTS[i].name, FB_OPTS[i].help,
+                *fb_field(&fc, FB_OPTS[i].off));
+    }
     fprintf(f,
-            "usage: symline boundary [--cell N] [--miss-cost N] IN [OUT.png]\n"
-            "  --cell N        grid step in px, a power of two 2..64 (default: auto,\n"
-            "                  about width/64)\n"
-            "  --miss-cost N   score of a non-carpet cell in the column scan, 1..16\n"
-            "                  (default %u)\n"
-            "  IN              binary PGM or PNG (colour is converted to luma)\n"
-            "  OUT.png         the frame with the boundary drawn in yellow\n"
+            "  IN                binary PGM or PNG (colour is converted to luma)\n"
+            "  OUT.png           the frame with the boundary drawn in yellow\n"
             "Prints {\"width\": W, \"height\": H, \"cell\": N, \"carpet_mean\": G,\n"
             "\"field_boundary\": [[x, y], ...]} (SPEC section 7): rows at and below the\n"
-            "polyline are field.\n"
-            "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n",
-            fc.miss_cost);
+            "polyline are field. See include/symline/field.h for the settings.\n"
+            "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n");
 }
 
 int cmd_boundary(int argc, char **argv)
@@ -50,13 +80,14 @@ int cmd_boundary(int argc, char **argv)
             boundary_usage(stdout);
             return CLI_OK;
         }
-        if (strcmp(o, "--cell") == 0 || strcmp(o, "--miss-cost") == 0) {
-            const int cell = strcmp(o, "--cell") == 0;
-            if (i + 1 >= argc ||
-                detopts_u32(argv[i + 1], cell ? 2u : 1u, cell ? 64u : 16u,
-                            cell ? &fc.cell : &fc.miss_cost) != 0) {
-                return cli_error("%s: %s needs a number in %s", argv[0], o,
-                                 cell ? "2..64" : "1..16");
+        size_t k;
+        for (k = 0; k < FB_NOPTS && strcmp(o, FB_OPTS[k].name) != 0; k++) {
+        }
+        if (k < FB_NOPTS) {
+            if (i + 1 >= argc || detopts_u32(argv[i + 1], FB_OPTS[k].lo, FB_OPTS[k].hi,
+                                             fb_field(&fc, FB_OPTS[k].off)) != 0) {
+                return cli_error("%s: %s needs a number in %u..%u", argv[0], o, FB_OPTS[k].lo,
+                                 FB_OPTS[k].hi);
             }
             i++;
         } else if (o[0] == '-' && o[1] != '\0') {
