@@ -91,8 +91,8 @@ typedef struct sl_fstate {
     uint32_t mid;            /* the carpet's median */
     uint32_t tex_lo, tex_hi; /* accepted cell textures, Q1 */
     uint32_t hm[SL_FIELD_BINS], ht[SL_FIELD_BINS];
-    uint32_t nb;    /* grid rows of the model's band */
-    uint8_t *band;  /* their cells' means and textures, read once */
+    uint32_t nb;   /* grid rows of the model's band */
+    uint8_t *band; /* their cells' means and textures, read once */
 } sl_fstate;
 
 static size_t cols_bytes(uint32_t nc)
@@ -107,8 +107,7 @@ static uint32_t band_rows(uint32_t nr, const symline_field_config *fc)
     return nb < 1u ? 1u : nb;
 }
 
-size_t symline_field_workspace_size(uint32_t width, uint32_t height,
-                                    const symline_field_config *fc)
+size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symline_field_config *fc)
 {
     uint32_t s, nc, nb;
     if (fc == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
@@ -153,8 +152,8 @@ static inline void cell_stats(const sl_fstate *f, const uint8_t *row, uint32_t w
     if (f->s == 8u && x0 + 8u <= w) {
         /* Written out: all 8 pixels, and 4 of the differences (every other
          * pair measures the grain as well at half the cost). */
-        const uint32_t a0 = p[0], a1 = p[1], a2 = p[2], a3 = p[3], a4 = p[4], a5 = p[5],
-                       a6 = p[6], a7 = p[7];
+        const uint32_t a0 = p[0], a1 = p[1], a2 = p[2], a3 = p[3], a4 = p[4], a5 = p[5], a6 = p[6],
+                       a7 = p[7];
         sum = a0 + a1 + a2 + a3 + a4 + a5 + a6 + a7;
         *mean = sum >> 3;
         *tex = rel_tex(2u * (absdiff(a0, a1) + absdiff(a2, a3) + absdiff(a4, a5) + absdiff(a6, a7)),

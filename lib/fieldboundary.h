@@ -7,15 +7,7 @@
 #define SYMLINE_FIELDBOUNDARY_H
 
 #include "symline/field.h"
-#include "internal.h"
-
-#ifndef SL_NOINLINE
-#if defined(__GNUC__)
-#define SL_NOINLINE __attribute__((noinline))
-#else
-#define SL_NOINLINE
-#endif
-#endif
+#include "common.h"
 
 /* Grid step for a frame `width` wide under fc (fc->cell or the automatic one). */
 uint32_t sl_field_cell(uint32_t width, const symline_field_config *fc);

@@ -5,14 +5,20 @@
  * point storage by rotating the points in between (three reversals), so a
  * segment is always one range of points.
  */
-#include "detect_internal.h"
+#include "merge.h"
+
+#include "fixed.h"
+#include "segments.h"
+#include "tracer.h"
+
+/* What joined_dev() returns for a pair whose joined piece would be a curve. */
+#define SL_JOINED_IS_CURVE UINT32_MAX
 
 static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
     const int64_t dx = (int64_t)ax - bx, dy = (int64_t)ay - by;
     return (uint64_t)(dx * dx + dy * dy);
 }
-
 
 /* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
 static void end_of(const symline_segment *a, const symline_segment *b, uint32_t i, int32_t *x,
@@ -25,8 +31,8 @@ static void end_of(const symline_segment *a, const symline_segment *b, uint32_t 
 
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece). */
-SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment *b,
-                                 uint64_t gap2, uint32_t dev_q8, int32_t ends[4])
+SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b, uint64_t gap2,
+                                  uint32_t dev_q8, int32_t ends[4])
 {
     const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
     const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
@@ -34,7 +40,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
     const int32_t aax = adx < 0 ? -adx : adx, aay = ady < 0 ? -ady : ady;
     const int32_t abx = bdx < 0 ? -bdx : bdx, aby = bdy < 0 ? -bdy : bdy;
     const int32_t al = aax > aay ? aax : aay, bl = abx > aby ? abx : aby;
-    const int a_longer = al >= bl;
+    const bool a_longer = al >= bl;
     const int32_t dx = a_longer ? adx : bdx;
     const int32_t dy = a_longer ? ady : bdy;
     int64_t lo = 0, hi = 0;
@@ -47,7 +53,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
         uint64_t t;
         end_of(a, b, i, &x, &y);
         if (sl_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
-            return 0;
+            return false;
         }
         end_of(a, b, (i ^ 2u) & 2u, &ox, &oy);
         t = dist2(x, y, ox, oy);
@@ -57,7 +63,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
         g = t < g ? t : g;
     }
     if (g > gap2) {
-        return 0;
+        return false;
     }
     /* New ends: the extreme end points along the longer piece. */
     for (i = 0; i < 4u; i++) {
@@ -76,10 +82,10 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
             ends[3] = y;
         }
     }
-    return 1;
+    return true;
 }
 
-/* The joined piece's max_dev, or 0xFFFFFFFF when it would be a curve. Kept
+/* The joined piece's max_dev, or SL_JOINED_IS_CURVE when it would be a curve. Kept
  * apart from mergeable() so their frames are never on the stack together. */
 SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_segment *b,
                                        const symline_point *pts, const int32_t ends[4],
@@ -89,23 +95,29 @@ SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_s
     const uint32_t d2 =
         sl_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     d = d2 > d ? d2 : d;
-    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], d, curve_q8) ? 0xFFFFFFFFu : d;
+    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], d, curve_q8) ? SL_JOINED_IS_CURVE : d;
+}
+
+/* A segment's ends, Q8. */
+static void set_ends(symline_segment *s, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+{
+    s->x0 = x0;
+    s->y0 = y0;
+    s->x1 = x1;
+    s->y1 = y1;
 }
 
 /* Field-by-field copy (a struct assignment may become a libc memcpy call). */
 static void copy_segment(symline_segment *d, const symline_segment *s)
 {
-    d->x0 = s->x0;
-    d->y0 = s->y0;
-    d->x1 = s->x1;
-    d->y1 = s->y1;
+    set_ends(d, s->x0, s->y0, s->x1, s->y1);
     d->max_dev = s->max_dev;
     d->first = s->first;
     d->count = s->count;
     d->kind = s->kind;
     d->axis = s->axis;
     d->level = s->level;
-    d->reserved = s->reserved;
+    d->merged = s->merged;
 }
 
 /* Moves segment j's points right behind segment i's (i < j, ranges ordered), removes j. */
@@ -131,11 +143,11 @@ static void absorb(symline_result *r, uint32_t i, uint32_t j)
 
 void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8)
 {
-    const uint64_t gap2 = ((uint64_t)gap_px << 8) * ((uint64_t)gap_px << 8);
+    const uint64_t gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
     uint32_t i, j;
-    int changed = 1;
+    bool changed = true;
     while (changed) {
-        changed = 0;
+        changed = false;
         for (i = 0; i < r->segment_count; i++) {
             if (r->segments[i].kind != SYMLINE_KIND_LINE) {
                 continue;
@@ -145,27 +157,24 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 uint32_t dev;
                 symline_segment *a = &r->segments[i];
                 const symline_segment *b = &r->segments[j];
-                const uint32_t lv = a->level > b->level ? a->level : b->level;
-                const uint32_t thr = curve_dev_q8 + (((1u << lv) - 1u) << 7);
+                const uint32_t level = a->level > b->level ? a->level : b->level;
+                const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
                 if (b->kind != SYMLINE_KIND_LINE) {
                     continue;
                 }
-                if (!mergeable(a, b, gap2, dev_q8 + (((1u << lv) - 1u) << 7), ends)) {
+                if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(level), ends)) {
                     continue;
                 }
                 dev = joined_dev(a, b, r->points, ends, thr);
-                if (dev == 0xFFFFFFFFu) {
+                if (dev == SL_JOINED_IS_CURVE) {
                     continue;
                 }
-                a->x0 = ends[0];
-                a->y0 = ends[1];
-                a->x1 = ends[2];
-                a->y1 = ends[3];
+                set_ends(a, ends[0], ends[1], ends[2], ends[3]);
                 a->max_dev = dev;
-                a->level = (uint8_t)lv;
-                a->reserved = 1u; /* merged: points piece after piece (curvejoin.c) */
+                a->level = (uint8_t)level;
+                a->merged = true; /* points piece after piece (curvejoin.c) */
                 absorb(r, i, j);
-                changed = 1;
+                changed = true;
                 j = i; /* the grown segment may now reach pieces it missed */
             }
         }

@@ -36,7 +36,8 @@ static uint8_t *make_field(top_fn top)
     assert_non_null(px);
     for (y = 0; y < H; y++) {
         for (x = 0; x < W; x++) {
-            px[y * W + x] = (int32_t)y >= top((int32_t)x) ? carpet_px(&s) : (uint8_t)(190u + x / 64u);
+            px[y * W + x] =
+                (int32_t)y >= top((int32_t)x) ? carpet_px(&s) : (uint8_t)(190u + x / 64u);
         }
     }
     return px;
@@ -83,8 +84,8 @@ static void check_form(const symline_field_boundary *b, uint32_t w, uint32_t h)
 /* At every 8th column of [x0, x1], the boundary lies at most `low` px below
  * want(x) and at most `high` px above it (too high only keeps clutter, too
  * low loses field lines). */
-static void check_near_in(const symline_field_boundary *b, top_fn want, int32_t low,
-                          int32_t high, int32_t x0, int32_t x1)
+static void check_near_in(const symline_field_boundary *b, top_fn want, int32_t low, int32_t high,
+                          int32_t x0, int32_t x1)
 {
     int32_t x;
     for (x = x0; x <= x1; x += 8) {
@@ -336,10 +337,10 @@ static void test_errors(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_known_row),   cmocka_unit_test(test_known_slant),
-        cmocka_unit_test(test_corner),      cmocka_unit_test(test_occluders_and_light),
-        cmocka_unit_test(test_all_carpet),  cmocka_unit_test(test_degenerate),
-        cmocka_unit_test(test_query),       cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_known_row),  cmocka_unit_test(test_known_slant),
+        cmocka_unit_test(test_corner),     cmocka_unit_test(test_occluders_and_light),
+        cmocka_unit_test(test_all_carpet), cmocka_unit_test(test_degenerate),
+        cmocka_unit_test(test_query),      cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -6,9 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../common/detopts.h"
-#include "../common/imgio.h"
-#include "../common/overlay.h"
+#include "detopts.h"
+#include "imgio.h"
+#include "overlay.h"
 #include "cli.h"
 #include "symline/detect.h"
 #include "symline/field.h"
@@ -33,7 +33,8 @@ static const fb_opt FB_OPTS[] = {
     {"--gap-pct", FB_OFF(gap_pct), 0u, 100u, "a column ends after this % of rows without carpet"},
     {"--support", FB_OFF(support), 1u, 8u, "columns nearby that must reach as high"},
     {"--col-cells", FB_OFF(col_cells), 1u, 4u, "grid columns lie this many cells apart"},
-    {"--restore-cells", FB_OFF(restore_cells), 0u, 64u, "own tops count up to this many cells higher"},
+    {"--restore-cells", FB_OFF(restore_cells), 0u, 64u,
+     "own tops count up to this many cells higher"},
 };
 #define FB_NOPTS (sizeof FB_OPTS / sizeof FB_OPTS[0])
 
@@ -52,13 +53,12 @@ static void boundary_usage(FILE *f)
         fprintf(f, "  %-14s N  %s (default %u)\n", FB_OPTS[i].name, FB_OPTS[i].help,
                 *fb_field(&fc, FB_OPTS[i].off));
     }
-    fprintf(f,
-            "  IN                binary PGM or PNG (colour is converted to luma)\n"
-            "  OUT.png           the frame with the boundary drawn in yellow\n"
-            "Prints {\"width\": W, \"height\": H, \"cell\": N, \"carpet_mean\": G,\n"
-            "\"field_boundary\": [[x, y], ...]} (SPEC section 7): rows at and below the\n"
-            "polyline are field. See include/symline/field.h for the settings.\n"
-            "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n");
+    fprintf(f, "  IN                binary PGM or PNG (colour is converted to luma)\n"
+               "  OUT.png           the frame with the boundary drawn in yellow\n"
+               "Prints {\"width\": W, \"height\": H, \"cell\": N, \"carpet_mean\": G,\n"
+               "\"field_boundary\": [[x, y], ...]} (SPEC section 7): rows at and below the\n"
+               "polyline are field. See include/symline/field.h for the settings.\n"
+               "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n");
 }
 
 int cmd_boundary(int argc, char **argv)
@@ -136,8 +136,8 @@ int cmd_boundary(int argc, char **argv)
         printf("]}\n");
         if (fflush(stdout) != 0 || ferror(stdout)) {
             rc = CLI_FAIL;
-        } else if (npos == 2 && overlay_write(pos[1], in.px, in.width, in.height, in.width,
-                                              &res, err, sizeof err) != 0) {
+        } else if (npos == 2 && overlay_write(pos[1], in.px, in.width, in.height, in.width, &res,
+                                              err, sizeof err) != 0) {
             cli_error("%s", err);
             rc = CLI_FAIL;
         }
