@@ -54,7 +54,7 @@ void symline_field_config_default(symline_field_config *fc)
     fc->col_cells = 2u;
 }
 
-static int config_ok(const symline_field_config *fc)
+bool sl_field_config_ok(const symline_field_config *fc)
 {
     const uint32_t c = fc->cell;
     return (c == 0u || (c >= 2u && c <= 64u && (c & (c - 1u)) == 0u)) && fc->band_pct >= 1u &&
@@ -111,7 +111,7 @@ size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symli
 {
     uint32_t s, nc, nb;
     if (fc == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
-        height > SYMLINE_MAX_DIM || !config_ok(fc)) {
+        height > SYMLINE_MAX_DIM || !sl_field_config_ok(fc)) {
         return 0u;
     }
     s = sl_field_cell(width, fc);
@@ -486,7 +486,7 @@ symline_status symline_field_find(const symline_image *img, const symline_field_
     if (fc == NULL || ws == NULL || out == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    if (!config_ok(fc)) {
+    if (!sl_field_config_ok(fc)) {
         return SYMLINE_ERR_CONFIG;
     }
     if (ws_size < symline_field_workspace_size(img->width, img->height, fc)) {
@@ -516,4 +516,34 @@ int32_t symline_field_y(const symline_field_boundary *b, int32_t x)
 int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
 {
     return (b != NULL && b->count != 0u && y < symline_field_y(b, x)) ? 1 : 0;
+}
+
+void sl_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w, uint32_t width,
+                   uint32_t margin, uint16_t *rows)
+{
+    const uint32_t s = 1u << level;
+    uint32_t x;
+    for (x = 0; x < w; x++) {
+        /* Keep grid row y when its centre y*s + s/2 >= boundary - margin. */
+        const uint32_t xc = x * s + s / 2u < width ? x * s + s / 2u : width - 1u;
+        const int64_t lim = (int64_t)symline_field_y(b, (int32_t)xc) - margin - s / 2u;
+        const int64_t y = lim <= 0 ? 0 : (lim + s - 1u) >> level;
+        rows[x] = (uint16_t)(y > 0xFFFF ? 0xFFFF : y);
+    }
+}
+
+uint32_t sl_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start, uint32_t h)
+{
+    uint32_t y, i = 0u, k = 0u;
+    for (y = 0; y < h; y++) {
+        const uint32_t end = row_start[y + 1u];
+        row_start[y] = k;
+        for (; i < end; i++) {
+            if (pts[i].y >= rows[pts[i].x]) {
+                pts[k++] = pts[i];
+            }
+        }
+    }
+    row_start[h] = k;
+    return k;
 }

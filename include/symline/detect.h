@@ -54,6 +54,13 @@ extern "C" {
 /* config.merge_gap: the gap follows the frame, width / 8 px. */
 #define SYMLINE_MERGE_GAP_AUTO 0xFFFFFFFFu
 
+/* What the detector does with the field boundary. */
+typedef enum symline_field_mode {
+    SYMLINE_FIELD_OFF = 0,  /* not computed (result.field.count = 0) */
+    SYMLINE_FIELD_DROP = 1, /* computed, reported; line points above it dropped */
+    SYMLINE_FIELD_KEEP = 2  /* computed, reported; every detection kept */
+} symline_field_mode;
+
 /* Which axes a detection runs. */
 typedef enum symline_axes {
     SYMLINE_AXES_HORIZONTAL = 0, /* near-horizontal lines only (symmetry along columns) */
@@ -140,6 +147,16 @@ typedef struct symline_config {
                               SYMLINE_MERGE_GAP_AUTO = width / 8 */
     uint32_t merge_dev_q8; /* ... and whose ends lie within this distance of the
                               other's line, Q8 px; default 640 (2.5 px) */
+    symline_field_mode field_boundary; /* the field boundary (symline/field.h),
+                              found before the passes and reported in
+                              result.field: SYMLINE_FIELD_DROP (default) also
+                              drops line points above it before they are
+                              traced, SYMLINE_FIELD_KEEP keeps them,
+                              SYMLINE_FIELD_OFF does not look for it */
+    uint32_t field_margin; /* DROP keeps line points up to this many px above
+                              the boundary, 0..SYMLINE_MAX_DIM; default 4 */
+    symline_field_config field; /* the boundary's settings; default
+                              symline_field_config_default() */
 } symline_config;
 /* clang-format on */
 
