@@ -14,6 +14,7 @@
 
 #include <cmocka.h>
 
+#include "symline/detect.h"
 #include "symline/field.h"
 #include "testutil.h"
 
@@ -334,13 +335,108 @@ static void test_errors(void **state)
     assert_int_equal(symline_field_find(&img, &fc, ws, need, &b), SYMLINE_OK);
 }
 
+/* The detector with the boundary: a bright line painted on the wall above
+ * the field is dropped by default, kept with SYMLINE_FIELD_KEEP, and the
+ * line on the carpet is found in every mode; OFF reports no boundary. */
+static uint32_t detect_rows(const uint8_t *px, symline_field_mode mode, symline_result *r,
+                            uint32_t *above, uint32_t *below)
+{
+    symline_config cfg;
+    symline_image img;
+    static symline_segment segs[256];
+    static symline_point pts[2u * W * H];
+    size_t need;
+    uint8_t *ws;
+    uint32_t i;
+    symline_config_default(&cfg);
+    cfg.field_boundary = mode;
+    img.width = W;
+    img.height = H;
+    img.stride = W;
+    img.data = px;
+    need = symline_detect_workspace_size(W, H, &cfg);
+    assert_true(need > 0u);
+    ws = tu_guard_alloc(need);
+    memset(r, 0, sizeof *r);
+    r->segments = segs;
+    r->segment_cap = 256u;
+    r->points = pts;
+    r->point_cap = 2u * W * H;
+    assert_int_equal(symline_detect(&img, &cfg, ws, need, r), SYMLINE_OK);
+    assert_true(tu_guard_ok(ws, need));
+    tu_guard_free(ws);
+    *above = *below = 0u;
+    for (i = 0; i < r->segment_count; i++) {
+        const int32_t y = (r->segments[i].y0 + r->segments[i].y1) / 512;
+        if (y < 100) {
+            (*above)++;
+        } else {
+            (*below)++;
+        }
+    }
+    return r->segment_count;
+}
+
+static void test_detector_drops_above(void **state)
+{
+    symline_result r;
+    uint32_t above, below, x, y;
+    uint8_t *px = make_field(top_row);
+    (void)state;
+    for (x = 20u; x < W - 20u; x++) {
+        for (y = 48u; y < 52u; y++) {
+            px[y * W + x] = 60; /* a dark band on the wall ... */
+        }
+        for (y = 40u; y < 44u; y++) {
+            px[y * W + x] = 250; /* ... and a bright stripe: line-like, above the field */
+        }
+        for (y = 170u; y < 174u; y++) {
+            px[y * W + x] = 230; /* a painted line on the carpet */
+        }
+    }
+    (void)detect_rows(px, SYMLINE_FIELD_KEEP, &r, &above, &below);
+    assert_true(r.field.count >= 2u);
+    assert_true(above >= 1u); /* the wall stripe is found when kept ... */
+    assert_true(below >= 1u);
+    (void)detect_rows(px, SYMLINE_FIELD_DROP, &r, &above, &below);
+    assert_int_equal(above, 0u); /* ... and dropped by default */
+    assert_true(below >= 1u);
+    check_near(&r.field, top_row, 8, 8);
+    (void)detect_rows(px, SYMLINE_FIELD_OFF, &r, &above, &below);
+    assert_int_equal(r.field.count, 0u);
+    assert_true(above >= 1u && below >= 1u);
+    free(px);
+}
+
+static void test_detector_config(void **state)
+{
+    symline_config cfg;
+    (void)state;
+    symline_config_default(&cfg);
+    assert_int_equal(cfg.field_boundary, SYMLINE_FIELD_DROP);
+    cfg.field_boundary = (symline_field_mode)3;
+    assert_int_equal(symline_detect_workspace_size(W, H, &cfg), 0u);
+    symline_config_default(&cfg);
+    cfg.field.cell = 5u;
+    assert_int_equal(symline_detect_workspace_size(W, H, &cfg), 0u);
+    symline_config_default(&cfg);
+    cfg.field_margin = 70000u;
+    assert_int_equal(symline_detect_workspace_size(W, H, &cfg), 0u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_known_row),  cmocka_unit_test(test_known_slant),
-        cmocka_unit_test(test_corner),     cmocka_unit_test(test_occluders_and_light),
-        cmocka_unit_test(test_all_carpet), cmocka_unit_test(test_degenerate),
-        cmocka_unit_test(test_query),      cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_known_row),
+        cmocka_unit_test(test_known_slant),
+        cmocka_unit_test(test_corner),
+        cmocka_unit_test(test_occluders_and_light),
+        cmocka_unit_test(test_all_carpet),
+        cmocka_unit_test(test_degenerate),
+        cmocka_unit_test(test_query),
+        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_detector_drops_above),
+        cmocka_unit_test(test_detector_config),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
