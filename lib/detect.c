@@ -7,6 +7,7 @@
 
 #include "common.h"
 #include "curvejoin.h"
+#include "fieldboundary.h"
 #include "fixed.h"
 #include "linefilter.h"
 #include "merge.h"
@@ -35,6 +36,9 @@ void symline_config_default(symline_config *cfg)
     cfg->curve_bend_q8 = 80u; /* 0.31 px */
     cfg->merge_gap = SYMLINE_MERGE_GAP_AUTO;
     cfg->merge_dev_q8 = SL_PX_Q8(5u) / 2u; /* 2.5 px */
+    cfg->field_boundary = SYMLINE_FIELD_DROP;
+    cfg->field_margin = 4u;
+    symline_field_config_default(&cfg->field);
 }
 
 /* Largest value of the Q8 length settings: the largest frame dimension. */
@@ -59,6 +63,11 @@ static symline_status check_config(const symline_config *c)
         c->contrast_pct > 100u || c->contrast_min > 255u || c->contrast_asym_pct > 1000u ||
         c->min_length > SYMLINE_MAX_DIM || c->curve_dev_q8 > SL_MAX_LENGTH_Q8 ||
         c->curve_bend_q8 > SL_MAX_LENGTH_Q8 || c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
+        return SYMLINE_ERR_CONFIG;
+    }
+    if ((c->field_boundary != SYMLINE_FIELD_OFF && c->field_boundary != SYMLINE_FIELD_DROP &&
+         c->field_boundary != SYMLINE_FIELD_KEEP) ||
+        c->field_margin > SYMLINE_MAX_DIM || !sl_field_config_ok(&c->field)) {
         return SYMLINE_ERR_CONFIG;
     }
     return SYMLINE_OK;
@@ -98,6 +107,12 @@ static symline_axis axis_of(const symline_config *c, uint32_t index)
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
 }
 
+/* Workspace of the per-column rows of the field boundary (sl_run.field_rows). */
+static size_t field_rows_size(uint32_t width)
+{
+    return sl_align_up((size_t)width * sizeof(uint16_t)) + SL_ALIGN;
+}
+
 SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height,
                                                  const symline_config *cfg)
 {
@@ -117,6 +132,14 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
             best = n > best ? n : best;
         }
     }
+    if (cfg->field_boundary == SYMLINE_FIELD_DROP) {
+        best += field_rows_size(width); /* kept through the passes */
+    }
+    if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
+        /* The boundary is found first, in the same workspace. */
+        const size_t f = symline_field_workspace_size(width, height, &cfg->field);
+        best = f > best ? f : best;
+    }
     return best;
 }
 
@@ -128,7 +151,13 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
 {
     uint32_t levels, level, axis;
     uint8_t *cur = ws, *const end = ws + ws_size;
-    sl_pass *p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
+    sl_pass *p;
+    /* The field boundary's rows stay through the passes (the boundary's own
+     * workspace is free again). */
+    d->field_rows = cfg->field_boundary == SYMLINE_FIELD_DROP
+                        ? (uint16_t *)sl_carve(&cur, end, (size_t)d->img->width * sizeof(uint16_t))
+                        : NULL;
+    p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
     levels = level_count(cfg, d->img->width, d->img->height);
     for (level = 0; level < levels && p != NULL; level++) {
         for (axis = 0; axis < axis_count(cfg); axis++) {
@@ -176,6 +205,10 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.stats.sigma_q4 = 0u;
     if (cfg->adaptive) {
         sl_frame_stats_measure(img, &d.stats);
+    }
+    out->field.count = 0u;
+    if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
+        sl_field_run(img, &cfg->field, (uint8_t *)ws, ws_size, &out->field);
     }
     run_passes(cfg, (uint8_t *)ws, ws_size, &d);
     out->point_count = d.npts;

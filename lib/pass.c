@@ -9,6 +9,8 @@
  */
 #include "pass.h"
 
+#include "fieldboundary.h"
+
 #include "fixed.h"
 #include "segments.h"
 #include "subpixel.h"
@@ -152,8 +154,15 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
                                           const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
-    return sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
-                      d->r->point_cap - d->npts, n, row_start, &d->truncated);
+    symline_status st = sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
+                                   d->r->point_cap - d->npts, n, row_start, &d->truncated);
+    if (st == SYMLINE_OK && d->field_rows != NULL) {
+        /* Above the field: nothing to trace. */
+        sl_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
+                      d->field_rows);
+        *n = sl_field_drop(d->field_rows, d->r->points + d->npts, row_start, p->h);
+    }
+    return st;
 }
 
 symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end)

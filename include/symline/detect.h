@@ -38,6 +38,7 @@
 
 #include <stdbool.h>
 
+#include "symline/field.h"
 #include "symline/types.h"
 
 #ifdef __cplusplus
@@ -52,6 +53,13 @@ extern "C" {
 #define SYMLINE_DETECT_MAX_A_DISTANCE 32u
 /* config.merge_gap: the gap follows the frame, width / 8 px. */
 #define SYMLINE_MERGE_GAP_AUTO 0xFFFFFFFFu
+
+/* What the detector does with the field boundary. */
+typedef enum symline_field_mode {
+    SYMLINE_FIELD_OFF = 0,  /* not computed (result.field.count = 0) */
+    SYMLINE_FIELD_DROP = 1, /* computed, reported; line points above it dropped */
+    SYMLINE_FIELD_KEEP = 2  /* computed, reported; every detection kept */
+} symline_field_mode;
 
 /* Which axes a detection runs. */
 typedef enum symline_axes {
@@ -139,6 +147,16 @@ typedef struct symline_config {
                               SYMLINE_MERGE_GAP_AUTO = width / 8 */
     uint32_t merge_dev_q8; /* ... and whose ends lie within this distance of the
                               other's line, Q8 px; default 640 (2.5 px) */
+    symline_field_mode field_boundary; /* the field boundary (symline/field.h),
+                              found before the passes and reported in
+                              result.field: SYMLINE_FIELD_DROP (default) also
+                              drops line points above it before they are
+                              traced, SYMLINE_FIELD_KEEP keeps them,
+                              SYMLINE_FIELD_OFF does not look for it */
+    uint32_t field_margin; /* DROP keeps line points up to this many px above
+                              the boundary, 0..SYMLINE_MAX_DIM; default 4 */
+    symline_field_config field; /* the boundary's settings; default
+                              symline_field_config_default() */
 } symline_config;
 /* clang-format on */
 
@@ -190,8 +208,10 @@ typedef struct symline_result {
     uint32_t segment_count;
     symline_point *points;
     uint32_t point_cap;
-    uint32_t point_count; /* points referenced by the segments, [0, point_count) */
-    bool truncated;       /* true when segments or points did not fit */
+    uint32_t point_count;         /* points referenced by the segments, [0, point_count) */
+    bool truncated;               /* true when segments or points did not fit */
+    symline_field_boundary field; /* the field boundary (symline/field.h);
+                                     count 0 when not computed */
 } symline_result;
 
 /*
