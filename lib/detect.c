@@ -25,8 +25,8 @@ void symline_config_default(symline_config *cfg)
     cfg->illumination = 0u;
     cfg->adaptive = 1u;
     cfg->bright_sigma10 = 0;
-    cfg->ridge_sigma10 = 10u;
-    cfg->side_sigma10 = 15;
+    cfg->ridge_sigma10 = 12u;
+    cfg->side_sigma10 = 30;
     cfg->a_distance = 0u;
     cfg->contrast_pct = 0u;
     cfg->contrast_min = 3u;
@@ -132,7 +132,7 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
             best = n > best ? n : best;
         }
     }
-    if (cfg->field_boundary == SYMLINE_FIELD_DROP) {
+    if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
         best += field_rows_size(width); /* kept through the passes */
     }
     if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
@@ -141,6 +141,27 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
         best = f > best ? f : best;
     }
     return best;
+}
+
+/* The adaptive thresholds' statistics: of the field where a boundary was
+ * found (lights, walls and people above it would set the thresholds for lines
+ * on the carpet), else (field NULL or empty) of the whole frame. */
+SL_NOINLINE static void field_stats(const symline_image *img, const symline_field_boundary *field,
+                                    uint8_t *ws, size_t ws_size, sl_frame_stats *st)
+{
+    uint8_t *cur = ws;
+    uint16_t *top =
+        field != NULL && field->count != 0u
+            ? (uint16_t *)sl_carve(&cur, ws + ws_size, (size_t)img->width * sizeof(uint16_t))
+            : NULL;
+    uint32_t *hist = (uint32_t *)sl_carve(&cur, ws + ws_size, 256u * sizeof(uint32_t));
+    if (top != NULL) {
+        sl_field_rows(field, 0u, img->width, img->width, 0u, top);
+    }
+    sl_frame_stats_measure(img, top, hist, st);
+    if (st->mean == 0u && st->sigma_q4 == 0u && top != NULL) {
+        sl_frame_stats_measure(img, NULL, hist, st); /* no field in view */
+    }
 }
 
 /* Every pass, fine scale first, horizontal before vertical. Kept apart from
@@ -203,12 +224,14 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.truncated = false;
     d.stats.mean = 0u;
     d.stats.sigma_q4 = 0u;
-    if (cfg->adaptive) {
-        sl_frame_stats_measure(img, &d.stats);
-    }
     out->field.count = 0u;
     if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
         sl_field_run(img, &cfg->field, (uint8_t *)ws, ws_size, &out->field);
+    }
+    if (cfg->adaptive) {
+        /* Detections kept above the field are measured against the whole frame. */
+        field_stats(img, cfg->field_boundary == SYMLINE_FIELD_DROP ? &out->field : NULL,
+                    (uint8_t *)ws, ws_size, &d.stats);
     }
     run_passes(cfg, (uint8_t *)ws, ws_size, &d);
     out->point_count = d.npts;

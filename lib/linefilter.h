@@ -21,17 +21,22 @@ typedef struct sl_linefilter {
     uint32_t a_distance; /* paper: A point search distance across the line, grid px; 0 otherwise */
 } sl_linefilter;
 
-/* Mean and standard deviation of a frame's gray values. */
+/* Level and spread of the gray values the thresholds adapt to, robust to the
+ * lines, robots and lights among them. */
 typedef struct sl_frame_stats {
-    uint32_t mean;     /* gray levels, rounded */
-    uint32_t sigma_q4; /* gray levels, Q4 */
+    uint32_t mean;     /* the median, gray levels */
+    uint32_t sigma_q4; /* 1.4826 x the median absolute deviation (the standard
+                          deviation of normal noise), gray levels, Q4 */
 } sl_frame_stats;
 
 /* The thresholds as configured (no range checks). */
 void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg);
 
-/* One read of the frame: its mean and standard deviation. */
-void sl_frame_stats_measure(const symline_image *img, sl_frame_stats *st);
+/* The statistics of the field (rows y >= top[x] of each column x; top NULL:
+ * the whole frame) on every 2nd pixel of every 2nd row. hist: 256 counters of
+ * scratch. Both 0 when no pixel is measured. */
+void sl_frame_stats_measure(const symline_image *img, const uint16_t *top, uint32_t *hist,
+                            sl_frame_stats *st);
 
 /* The adaptive thresholds (cfg->adaptive) folded into f: each only raises
  * the configured one (side_max: replaces it unless side_sigma10 is 100). */

@@ -106,8 +106,12 @@ typedef struct symline_config {
     symline_filter filter; /* default SYMLINE_FILTER_CONTRAST */
     uint32_t illumination; /* minimum gray value of a line point, 0..255
                               (0 disables); default 0, the paper used 100 */
-    uint32_t adaptive;     /* 1: the two thresholds below follow the frame's
-                              mean gray value and its standard deviation sigma,
+    uint32_t adaptive;     /* 1: the thresholds below follow the gray values of
+                              the field (below the field boundary; the whole
+                              frame when there is none or detections above it
+                              are kept): their median ("mean" below) and their
+                              spread sigma (1.4826 x the median absolute
+                              deviation), on every 2nd pixel of every 2nd row,
                               so a brighter, darker or lower-contrast exposure
                               of the same scene gives the same lines; 0: off.
                               Default 1 */
@@ -115,11 +119,11 @@ typedef struct symline_config {
                               mean + bright_sigma10/10 * sigma, -100..100;
                               default 0 (the mean) */
     uint32_t ridge_sigma10; /* adaptive: contrast filter ridge height of at
-                              least ridge_sigma10/10 * sigma, 0..100; default 10 */
+                              least ridge_sigma10/10 * sigma, 0..100; default 12 */
     int32_t side_sigma10;  /* adaptive, contrast filter: both sides of the ridge
                               must stay at or below mean + side_sigma10/10 *
                               sigma (a line lies on the darker carpet, not on a
-                              bright wall), -100..100; 100 = off; default 15 */
+                              bright wall), -100..100; 100 = off; default 30 */
     uint32_t a_distance;   /* paper filter: largest distance (px, at the pass's
                               scale) of the A point across the line,
                               1..SYMLINE_DETECT_MAX_A_DISTANCE (32);

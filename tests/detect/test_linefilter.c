@@ -101,23 +101,46 @@ static void statistics_and_adaptive_thresholds(void **state)
     sl_frame_stats st;
     symline_config cfg;
     sl_linefilter f;
+    uint16_t top[20];
+    uint32_t hist[256];
+    uint32_t i;
     (void)state;
-    /* Half 0, half 200: mean 100, sigma 100. */
-    memset(px, 0, sizeof px);
-    memset(px, 200, sizeof px / 2u);
+    /* Rows 0-3: a bright wall (250); rows 4-9: carpet whose sampled columns
+     * (every 2nd) read 90 (3), 100 (4) and 110 (3). */
+    for (i = 0; i < 20u * 10u; i++) {
+        const uint32_t x = i % 20u;
+        px[i] = (uint8_t)(i < 4u * 20u ? 250u : (x < 6u ? 90u : (x < 14u ? 100u : 110u)));
+    }
     img.width = 20;
     img.height = 10;
     img.stride = 20;
     img.data = px;
-    sl_frame_stats_measure(&img, &st);
+    /* The whole frame: the wall's 20 of 50 samples pull the median to 110. */
+    sl_frame_stats_measure(&img, NULL, hist, &st);
+    assert_int_equal(st.mean, 110);
+    /* The field from row 4: median 100, MAD 10, sigma 1.4826 * 10 = 14.8 (Q4 237). */
+    for (i = 0; i < 20u; i++) {
+        top[i] = 4u;
+    }
+    sl_frame_stats_measure(&img, top, hist, &st);
     assert_int_equal(st.mean, 100);
-    assert_int_equal(st.sigma_q4, 1600);
+    assert_int_equal(st.sigma_q4, 237);
+    /* No field in the frame: nothing measured. */
+    for (i = 0; i < 20u; i++) {
+        top[i] = 10u;
+    }
+    sl_frame_stats_measure(&img, top, hist, &st);
+    assert_int_equal(st.mean, 0);
+    assert_int_equal(st.sigma_q4, 0);
+    /* Thresholds from a spread of 40 about a level of 100. */
+    st.mean = 100u;
+    st.sigma_q4 = 640u;
     symline_config_default(&cfg);
     sl_linefilter_setup(&f, &cfg);
     sl_linefilter_adapt(&f, &cfg, &st);
     assert_int_equal(f.min_gray, 100);  /* mean + 0 sigma */
-    assert_int_equal(f.ridge_min, 100); /* 1.0 sigma */
-    assert_int_equal(f.side_max, 250);  /* mean + 1.5 sigma */
+    assert_int_equal(f.ridge_min, 48);  /* 1.2 sigma */
+    assert_int_equal(f.side_max, 220);  /* mean + 3.0 sigma */
     /* Configured thresholds above the adaptive ones stay; side_sigma10 100 is off. */
     cfg.illumination = 150u;
     cfg.contrast_min = 120u;
