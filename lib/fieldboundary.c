@@ -14,10 +14,12 @@
  *    fits the model or continues the column's carpet (a running mean follows
  *    the drift with distance) scores +1; a brighter cell (a line) 0; a
  *    carpet-textured cell of another brightness (a shadow's or a sunlit
- *    patch's edge; the running mean follows the step) -1; any other
- *    -miss_cost. The top of the best-scoring run is the column's top. A long
- *    run of non-carpet cells (the boards, a wall band) ends the column's scan
- *    for good, so a ceiling that looks like carpet is never reached.
+ *    patch's edge; the running mean follows the step), or one of the
+ *    carpet's brightness without its grain, -1; any other -miss_cost. The top
+ *    of the best-scoring run is the column's top. A long run of cells that
+ *    are neither carpet nor bright (the boards' dark foot, people, a wall
+ *    band) ends the column's scan for good, so a ceiling that looks like
+ *    carpet is never reached.
  * 4. Support: a column's top counts as high as the k-th highest top within k
  *    columns either side (a net or a banner that looks like carpet over a few
  *    columns does not lift the boundary); the upper convex hull of these tops
@@ -115,9 +117,10 @@ size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symli
         return 0u;
     }
     s = sl_field_cell(width, fc);
-    nc = (width + s * fc->col_cells - 1u) / (s * fc->col_cells);
+    nc = (width + s * fc->col_cells - 1u) / (s * fc->col_cells); /* <= 65535 */
     nb = band_rows((height + s - 1u) / s, fc);
-    return sl_align_up(sizeof(sl_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc + 3u * SL_ALIGN;
+    return sl_align_up(sizeof(sl_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
+           (size_t)3u * SL_ALIGN;
 }
 
 /* Middle row of grid row r (0 = the lowest). */
@@ -160,7 +163,12 @@ static inline void cell_stats(const sl_fstate *f, const uint8_t *row, uint32_t w
                        sum, 8u);
         return;
     }
-    n = w - x0 < f->s ? w - x0 : f->s;
+    n = w - x0 < f->s ? w - x0 : f->s; /* >= 1: cells start inside the row */
+    if (n == 0u) {
+        *mean = 0u;
+        *tex = 0u;
+        return;
+    }
     for (i = 0; i < n; i++) {
         sum += p[i];
         if (i + 1u < w - x0) {
@@ -250,8 +258,9 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
                 continue; /* behind a barrier: this column is done */
             }
             if (r < f->nb) {
-                m = f->band[2u * (r * f->nc + c)];
-                t = f->band[2u * (r * f->nc + c) + 1u];
+                const size_t at = 2u * ((size_t)r * f->nc + c);
+                m = f->band[at];
+                t = f->band[at + 1u];
             } else {
                 cell_stats(f, row, img->width, c, &m, &t);
             }
@@ -264,14 +273,15 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
                 q->ema += dm / 4;
                 q->gap = 0u;
             } else {
-                /* Brighter than the carpet below: a line, mostly (free, but a long
-                 * run of them is a barrier); carpet grain at another brightness:
-                 * a shadow's or a sunlit patch's edge (the running mean follows
-                 * the step); anything else costs more. */
+                /* Brighter than the carpet below: a line, mostly: free, and no
+                 * part of a barrier. Carpet grain at another brightness (a
+                 * shadow's or a sunlit patch's edge; the running mean follows
+                 * the step), or the carpet's brightness without its grain: -1.
+                 * Anything else: -miss_cost. */
                 if (dm > lt) {
                     v = 0;
                 } else {
-                    v = (tex_ok || (dm >= -lt && dm <= lt)) ? -1 : miss;
+                    v = (tex_ok || dm >= -lt) ? -1 : miss; /* dm <= lt here */
                     q->gap++;
                 }
                 if (tex_ok) {
@@ -293,7 +303,7 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
  * Reads col[].top, writes col[].ema. */
 SL_NOINLINE static void support_filter(const sl_fstate *f, uint32_t k, sl_fcol *col)
 {
-    int32_t best[SL_FIELD_MAX_SUPPORT]; /* the k smallest rows so far, ascending */
+    int32_t best[SL_FIELD_MAX_SUPPORT] = {0}; /* the k smallest rows so far, ascending */
     uint32_t c;
     for (c = 0; c < f->nc; c++) {
         const uint32_t lo = c >= k ? c - k : 0u;
@@ -401,7 +411,8 @@ SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, sl_fc
             }
         }
         for (i = drop; i + 1u < n; i++) {
-            col[i] = col[i + 1u];
+            col[i].cur = col[i + 1u].cur; /* field by field: no memcpy call */
+            col[i].best = col[i + 1u].best;
         }
         n--;
     }
@@ -540,7 +551,8 @@ uint32_t sl_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_s
         row_start[y] = k;
         for (; i < end; i++) {
             if (pts[i].y >= rows[pts[i].x]) {
-                pts[k++] = pts[i];
+                pts[k].x = pts[i].x;
+                pts[k++].y = pts[i].y;
             }
         }
     }

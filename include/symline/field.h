@@ -91,10 +91,11 @@ typedef struct symline_field_config {
     uint32_t miss_cost;     /* the upward column scan scores a carpet cell +1, a
                             cell brighter than the carpet below it 0 (a line
                             crossing it), a carpet-textured cell of another
-                            brightness -1 (a shadow's or a sunlit patch's edge;
-                            the running mean follows the step) and any other cell
-                            -miss_cost. The top of the best-scoring run is the
-                            column's top, 1..16; default 2 */
+                            brightness (a shadow's or a sunlit patch's edge;
+                            the running mean follows the step) or of the
+                            carpet's brightness without its grain -1, and any
+                            other cell -miss_cost. The top of the best-scoring
+                            run is the column's top, 1..16; default 2 */
     uint32_t gap_pct;       /* a column's scan ends for good after this % of the
                             grid rows in a row that are neither carpet nor
                             bright (a barrier: the boards, a wall band; what lies
