@@ -303,28 +303,27 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
  * Reads col[].top, writes col[].ema. */
 SL_NOINLINE static void support_filter(const sl_fstate *f, uint32_t k, sl_fcol *col)
 {
-    int32_t best[SL_FIELD_MAX_SUPPORT] = {0}; /* the k smallest rows so far, ascending */
-    uint32_t c;
+    int32_t best[SL_FIELD_MAX_SUPPORT]; /* the k smallest rows so far, ascending */
+    uint32_t c, i, j;
     for (c = 0; c < f->nc; c++) {
         const uint32_t lo = c >= k ? c - k : 0u;
         const uint32_t hi = c + k < f->nc ? c + k : f->nc - 1u;
-        uint32_t j, n = 0u;
-        for (j = lo; j <= hi; j++) {
-            int32_t y = col[j].top;
-            uint32_t i;
-            if (n == k && y >= best[k - 1u]) {
-                continue;
-            }
-            i = n < k ? n++ : k - 1u;
-            while (i > 0u && best[i - 1u] > y) {
-                best[i] = best[i - 1u];
-                i--;
-            }
-            best[i] = y;
+        for (i = 0; i < k; i++) {
+            best[i] = 0x7FFFFFFF;
         }
-        /* A window cut by the image edge asks for proportionally fewer. */
+        for (j = lo; j <= hi; j++) {
+            const int32_t y = col[j].top;
+            if (y < best[k - 1u]) {
+                for (i = k - 1u; i > 0u && best[i - 1u] > y; i--) {
+                    best[i] = best[i - 1u];
+                }
+                best[i] = y;
+            }
+        }
+        /* A window cut by the image edge asks for proportionally fewer:
+         * 1 <= j <= the window's columns, j <= k. */
         j = (k * (hi - lo + 1u) + 2u * k) / (2u * k + 1u);
-        col[c].ema = best[(j < n ? j : n) - 1u];
+        col[c].ema = best[j - 1u];
     }
 }
 
