@@ -54,6 +54,7 @@ void symline_field_config_default(symline_field_config *fc)
     fc->support = 3u;
     fc->restore_cells = 1u;
     fc->col_cells = 2u;
+    fc->edge_slope_pct = 50u;
 }
 
 bool sl_field_config_ok(const symline_field_config *fc)
@@ -64,7 +65,7 @@ bool sl_field_config_ok(const symline_field_config *fc)
            fc->tex_lo_pct <= 100u && fc->tex_hi_pct >= 100u && fc->tex_hi_pct <= 10000u &&
            fc->miss_cost >= 1u && fc->miss_cost <= 16u && fc->gap_pct <= 100u &&
            fc->support >= 1u && fc->support <= SL_FIELD_MAX_SUPPORT && fc->restore_cells <= 64u &&
-           fc->col_cells >= 1u && fc->col_cells <= 4u;
+           fc->col_cells >= 1u && fc->col_cells <= 4u && fc->edge_slope_pct <= 10000u;
 }
 
 uint32_t sl_field_cell(uint32_t width, const symline_field_config *fc)
@@ -354,8 +355,8 @@ static int32_t chord_y(const symline_field_vertex *a, const symline_field_vertex
 /* Column tops -> boundary polyline (upper hull, thinned). col[c].ema holds
  * the filtered top row in pixels. The hull is built in place over col[].cur
  * (x) and col[].best (y). */
-SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, sl_fcol *col,
-                             symline_field_boundary *out)
+SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, uint32_t edge_pct,
+                             sl_fcol *col, symline_field_boundary *out)
 {
     const int32_t h = (int32_t)img->height, xr = (int32_t)img->width - 1;
     uint32_t c, n = 0u, i, k = 0u;
@@ -415,6 +416,17 @@ SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, sl_fc
         }
         n--;
     }
+    if (edge_pct != 0u && n >= 2u) {
+        /* Near an image edge the columns have neighbours on one side only: a
+         * robot or a person standing there holds the last columns down and
+         * nothing beyond them can bridge it. The end segments fall toward
+         * the edges no steeper than edge_pct % (too high only keeps clutter). */
+        const int64_t l = col[1].best + (int64_t)(col[1].cur - col[0].cur) * edge_pct / 100u;
+        const int64_t r =
+            col[n - 2u].best + (int64_t)(col[n - 1u].cur - col[n - 2u].cur) * edge_pct / 100u;
+        col[0].best = col[0].best > l ? (int32_t)l : col[0].best;
+        col[n - 1u].best = col[n - 1u].best > r ? (int32_t)r : col[n - 1u].best;
+    }
     /* Columns without field at the sides: the boundary continues level to
      * the image edges. */
     if (col[0].cur > 0) {
@@ -465,7 +477,7 @@ void sl_field_run(const symline_image *img, const symline_field_config *fc, uint
         col[c].top = r < 0 ? (int32_t)img->height : (y < 0 ? 0 : (int32_t)y);
     }
     support_filter(f, fc->support, col);
-    hull(img, f, col, out);
+    hull(img, f, fc->edge_slope_pct, col, out);
     if (fc->restore_cells != 0u) {
         /* The support filter lowers peaks (a field corner) by a few columns'
          * slope: every column's own top counts again, but no higher than
@@ -482,7 +494,7 @@ void sl_field_run(const symline_image *img, const symline_field_config *fc, uint
             }
             col[c].ema = t;
         }
-        hull(img, f, col, out);
+        hull(img, f, fc->edge_slope_pct, col, out);
     }
 }
 
