@@ -14,10 +14,12 @@
  *    fits the model or continues the column's carpet (a running mean follows
  *    the drift with distance) scores +1; a brighter cell (a line) 0; a
  *    carpet-textured cell of another brightness (a shadow's or a sunlit
- *    patch's edge; the running mean follows the step) -1; any other
- *    -miss_cost. The top of the best-scoring run is the column's top. A long
- *    run of non-carpet cells (the boards, a wall band) ends the column's scan
- *    for good, so a ceiling that looks like carpet is never reached.
+ *    patch's edge; the running mean follows the step), or one of the
+ *    carpet's brightness without its grain, -1; any other -miss_cost. The top
+ *    of the best-scoring run is the column's top. A long run of cells that
+ *    are neither carpet nor bright (the boards' dark foot, people, a wall
+ *    band) ends the column's scan for good, so a ceiling that looks like
+ *    carpet is never reached.
  * 4. Support: a column's top counts as high as the k-th highest top within k
  *    columns either side (a net or a banner that looks like carpet over a few
  *    columns does not lift the boundary); the upper convex hull of these tops
@@ -52,6 +54,7 @@ void symline_field_config_default(symline_field_config *fc)
     fc->support = 3u;
     fc->restore_cells = 1u;
     fc->col_cells = 2u;
+    fc->edge_slope_pct = 50u;
 }
 
 bool sl_field_config_ok(const symline_field_config *fc)
@@ -62,7 +65,7 @@ bool sl_field_config_ok(const symline_field_config *fc)
            fc->tex_lo_pct <= 100u && fc->tex_hi_pct >= 100u && fc->tex_hi_pct <= 10000u &&
            fc->miss_cost >= 1u && fc->miss_cost <= 16u && fc->gap_pct <= 100u &&
            fc->support >= 1u && fc->support <= SL_FIELD_MAX_SUPPORT && fc->restore_cells <= 64u &&
-           fc->col_cells >= 1u && fc->col_cells <= 4u;
+           fc->col_cells >= 1u && fc->col_cells <= 4u && fc->edge_slope_pct <= 10000u;
 }
 
 uint32_t sl_field_cell(uint32_t width, const symline_field_config *fc)
@@ -115,9 +118,10 @@ size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symli
         return 0u;
     }
     s = sl_field_cell(width, fc);
-    nc = (width + s * fc->col_cells - 1u) / (s * fc->col_cells);
+    nc = (width + s * fc->col_cells - 1u) / (s * fc->col_cells); /* <= 65535 */
     nb = band_rows((height + s - 1u) / s, fc);
-    return sl_align_up(sizeof(sl_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc + 3u * SL_ALIGN;
+    return sl_align_up(sizeof(sl_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
+           (size_t)3u * SL_ALIGN;
 }
 
 /* Middle row of grid row r (0 = the lowest). */
@@ -160,7 +164,12 @@ static inline void cell_stats(const sl_fstate *f, const uint8_t *row, uint32_t w
                        sum, 8u);
         return;
     }
-    n = w - x0 < f->s ? w - x0 : f->s;
+    n = w - x0 < f->s ? w - x0 : f->s; /* >= 1: cells start inside the row */
+    if (n == 0u) {
+        *mean = 0u;
+        *tex = 0u;
+        return;
+    }
     for (i = 0; i < n; i++) {
         sum += p[i];
         if (i + 1u < w - x0) {
@@ -250,8 +259,9 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
                 continue; /* behind a barrier: this column is done */
             }
             if (r < f->nb) {
-                m = f->band[2u * (r * f->nc + c)];
-                t = f->band[2u * (r * f->nc + c) + 1u];
+                const size_t at = 2u * ((size_t)r * f->nc + c);
+                m = f->band[at];
+                t = f->band[at + 1u];
             } else {
                 cell_stats(f, row, img->width, c, &m, &t);
             }
@@ -264,14 +274,15 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
                 q->ema += dm / 4;
                 q->gap = 0u;
             } else {
-                /* Brighter than the carpet below: a line, mostly (free, but a long
-                 * run of them is a barrier); carpet grain at another brightness:
-                 * a shadow's or a sunlit patch's edge (the running mean follows
-                 * the step); anything else costs more. */
+                /* Brighter than the carpet below: a line, mostly: free, and no
+                 * part of a barrier. Carpet grain at another brightness (a
+                 * shadow's or a sunlit patch's edge; the running mean follows
+                 * the step), or the carpet's brightness without its grain: -1.
+                 * Anything else: -miss_cost. */
                 if (dm > lt) {
                     v = 0;
                 } else {
-                    v = (tex_ok || (dm >= -lt && dm <= lt)) ? -1 : miss;
+                    v = (tex_ok || dm >= -lt) ? -1 : miss; /* dm <= lt here */
                     q->gap++;
                 }
                 if (tex_ok) {
@@ -294,27 +305,26 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
 SL_NOINLINE static void support_filter(const sl_fstate *f, uint32_t k, sl_fcol *col)
 {
     int32_t best[SL_FIELD_MAX_SUPPORT]; /* the k smallest rows so far, ascending */
-    uint32_t c;
+    uint32_t c, i, j;
     for (c = 0; c < f->nc; c++) {
         const uint32_t lo = c >= k ? c - k : 0u;
         const uint32_t hi = c + k < f->nc ? c + k : f->nc - 1u;
-        uint32_t j, n = 0u;
-        for (j = lo; j <= hi; j++) {
-            int32_t y = col[j].top;
-            uint32_t i;
-            if (n == k && y >= best[k - 1u]) {
-                continue;
-            }
-            i = n < k ? n++ : k - 1u;
-            while (i > 0u && best[i - 1u] > y) {
-                best[i] = best[i - 1u];
-                i--;
-            }
-            best[i] = y;
+        for (i = 0; i < k; i++) {
+            best[i] = 0x7FFFFFFF;
         }
-        /* A window cut by the image edge asks for proportionally fewer. */
+        for (j = lo; j <= hi; j++) {
+            const int32_t y = col[j].top;
+            if (y < best[k - 1u]) {
+                for (i = k - 1u; i > 0u && best[i - 1u] > y; i--) {
+                    best[i] = best[i - 1u];
+                }
+                best[i] = y;
+            }
+        }
+        /* A window cut by the image edge asks for proportionally fewer:
+         * 1 <= j <= the window's columns, j <= k. */
         j = (k * (hi - lo + 1u) + 2u * k) / (2u * k + 1u);
-        col[c].ema = best[(j < n ? j : n) - 1u];
+        col[c].ema = best[j - 1u];
     }
 }
 
@@ -345,8 +355,8 @@ static int32_t chord_y(const symline_field_vertex *a, const symline_field_vertex
 /* Column tops -> boundary polyline (upper hull, thinned). col[c].ema holds
  * the filtered top row in pixels. The hull is built in place over col[].cur
  * (x) and col[].best (y). */
-SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, sl_fcol *col,
-                             symline_field_boundary *out)
+SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, uint32_t edge_pct,
+                             sl_fcol *col, symline_field_boundary *out)
 {
     const int32_t h = (int32_t)img->height, xr = (int32_t)img->width - 1;
     uint32_t c, n = 0u, i, k = 0u;
@@ -401,9 +411,21 @@ SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, sl_fc
             }
         }
         for (i = drop; i + 1u < n; i++) {
-            col[i] = col[i + 1u];
+            col[i].cur = col[i + 1u].cur; /* field by field: no memcpy call */
+            col[i].best = col[i + 1u].best;
         }
         n--;
+    }
+    if (edge_pct != 0u && n >= 2u) {
+        /* Near an image edge the columns have neighbours on one side only: a
+         * robot or a person standing there holds the last columns down and
+         * nothing beyond them can bridge it. The end segments fall toward
+         * the edges no steeper than edge_pct % (too high only keeps clutter). */
+        const int64_t l = col[1].best + (int64_t)(col[1].cur - col[0].cur) * edge_pct / 100u;
+        const int64_t r =
+            col[n - 2u].best + (int64_t)(col[n - 1u].cur - col[n - 2u].cur) * edge_pct / 100u;
+        col[0].best = col[0].best > l ? (int32_t)l : col[0].best;
+        col[n - 1u].best = col[n - 1u].best > r ? (int32_t)r : col[n - 1u].best;
     }
     /* Columns without field at the sides: the boundary continues level to
      * the image edges. */
@@ -455,7 +477,7 @@ void sl_field_run(const symline_image *img, const symline_field_config *fc, uint
         col[c].top = r < 0 ? (int32_t)img->height : (y < 0 ? 0 : (int32_t)y);
     }
     support_filter(f, fc->support, col);
-    hull(img, f, col, out);
+    hull(img, f, fc->edge_slope_pct, col, out);
     if (fc->restore_cells != 0u) {
         /* The support filter lowers peaks (a field corner) by a few columns'
          * slope: every column's own top counts again, but no higher than
@@ -472,7 +494,7 @@ void sl_field_run(const symline_image *img, const symline_field_config *fc, uint
             }
             col[c].ema = t;
         }
-        hull(img, f, col, out);
+        hull(img, f, fc->edge_slope_pct, col, out);
     }
 }
 
@@ -540,7 +562,8 @@ uint32_t sl_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_s
         row_start[y] = k;
         for (; i < end; i++) {
             if (pts[i].y >= rows[pts[i].x]) {
-                pts[k++] = pts[i];
+                pts[k].x = pts[i].x;
+                pts[k++].y = pts[i].y;
             }
         }
     }

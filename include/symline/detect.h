@@ -9,10 +9,13 @@
  *     ... ws = a static or stack buffer of `need` bytes ...
  *     symline_segment segs[64];
  *     symline_point pts[8192];
- *     symline_result res = { segs, 64, 0, pts, 8192, 0, 0 };
+ *     symline_result res = { segs, 64, 0, pts, 8192, 0, 0, {0} };
  *     symline_status st = symline_detect(&img, &cfg, ws, need, &res);
  *
- * Pipeline, run once per axis and scale ("pass"), fine scale first:
+ * First the field boundary (symline/field.h, config field_boundary): where
+ * the carpet ends, reported in result.field; by default line points above it
+ * are dropped before they are traced. Then the pipeline, run once per axis
+ * and scale ("pass"), fine scale first:
  *  1. operator + extrema over a ring of rows (the frame is processed in
  *     horizontal strips; working memory grows with width * radius, not with
  *     the frame height);

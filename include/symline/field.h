@@ -69,48 +69,54 @@ typedef struct symline_field_boundary {
  * chosen on real NAO, humanoid and MSL frames (docs/detector.md).
  */
 typedef struct symline_field_config {
-    uint32_t cell;          /* grid step, px: 0 = auto (8, or 16 from 1024 px wide
+    uint32_t cell;           /* grid step, px: 0 = auto (8, or 16 from 1024 px wide
                             on), else a power of two 2..64; default 0 */
-    uint32_t band_pct;      /* the carpet model (median gray value and median
+    uint32_t band_pct;       /* the carpet model (median gray value and median
                             texture of the cells) comes from the lowest band_pct %
                             of the rows; cells darker than 12 (a lens's black
                             corners) are left out, 1..100; default 40 */
-    uint32_t mean_tol;      /* a carpet cell's mean lies within this many gray
+    uint32_t mean_tol;       /* a carpet cell's mean lies within this many gray
                             levels of the model, 0..255; default 16 */
-    uint32_t local_tol;     /* ... or within this many of the running mean of the
+    uint32_t local_tol;      /* ... or within this many of the running mean of the
                             carpet cells below it in its column (the carpet's
                             brightness drifts with distance and light), 0..255;
                             default 16 */
-    uint32_t tex_lo_pct;    /* a cell's texture is the mean |difference| of
+    uint32_t tex_lo_pct;     /* a cell's texture is the mean |difference| of
                             horizontal neighbours over its mean gray value (Q8:
                             a carpet's grain keeps that ratio in sunlight and in
                             shadow). A carpet cell's texture is at least this % of
                             the model's (walls are smooth), 0..100; default 25 */
-    uint32_t tex_hi_pct;    /* ... and at most this % of it plus 4 (people, nets and
+    uint32_t tex_hi_pct;     /* ... and at most this % of it plus 4 (people, nets and
                             clutter have edges), 100..10000; default 150 */
-    uint32_t miss_cost;     /* the upward column scan scores a carpet cell +1, a
+    uint32_t miss_cost;      /* the upward column scan scores a carpet cell +1, a
                             cell brighter than the carpet below it 0 (a line
                             crossing it), a carpet-textured cell of another
-                            brightness -1 (a shadow's or a sunlit patch's edge;
-                            the running mean follows the step) and any other cell
-                            -miss_cost. The top of the best-scoring run is the
-                            column's top, 1..16; default 2 */
-    uint32_t gap_pct;       /* a column's scan ends for good after this % of the
+                            brightness (a shadow's or a sunlit patch's edge;
+                            the running mean follows the step) or of the
+                            carpet's brightness without its grain -1, and any
+                            other cell -miss_cost. The top of the best-scoring
+                            run is the column's top, 1..16; default 2 */
+    uint32_t gap_pct;        /* a column's scan ends for good after this % of the
                             grid rows in a row that are neither carpet nor
                             bright (a barrier: the boards, a wall band; what lies
                             above it is not field even where it looks like
                             carpet); 0 = never, 0..100; default 12 */
-    uint32_t support;       /* a column's top counts as high as the support-th
+    uint32_t support;        /* a column's top counts as high as the support-th
                             highest top within `support` columns either side, so
                             narrower patches that look like carpet (a net, a
                             banner) do not lift the boundary, 1..8; default 3 */
-    uint32_t restore_cells; /* then every column's own top counts again, but no
+    uint32_t restore_cells;  /* then every column's own top counts again, but no
                             higher than this many cells above that robust
                             boundary (a field corner's peak, which the support
                             rule lowers, comes back), 0..64 (0: off); default 1 */
-    uint32_t col_cells;     /* grid columns lie col_cells cells apart (each reads
+    uint32_t col_cells;      /* grid columns lie col_cells cells apart (each reads
                             the first `cell` pixels of its span: half the cost
                             at 2), 1..4; default 2 */
+    uint32_t edge_slope_pct; /* toward an image edge the boundary falls no
+                            steeper than this % (rows per column) over its last
+                            segment: there a robot or a person holds the outer
+                            columns down with nothing beyond to bridge it,
+                            0..10000 (0: off); default 50 */
 } symline_field_config;
 
 /* Fills *fc with the defaults documented above (no-op on NULL). */

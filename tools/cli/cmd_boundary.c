@@ -32,6 +32,7 @@ static const fb_opt FB_OPTS[] = {
     {"--miss-cost", FB_OFF(miss_cost), 1u, 16u, "penalty of a non-carpet cell in the column scan"},
     {"--gap-pct", FB_OFF(gap_pct), 0u, 100u, "a column ends after this % of rows without carpet"},
     {"--support", FB_OFF(support), 1u, 8u, "columns nearby that must reach as high"},
+    {"--edge-slope-pct", FB_OFF(edge_slope_pct), 0u, 10000u, "steepest fall of the end segments"},
     {"--col-cells", FB_OFF(col_cells), 1u, 4u, "grid columns lie this many cells apart"},
     {"--restore-cells", FB_OFF(restore_cells), 0u, 64u,
      "own tops count up to this many cells higher"},
