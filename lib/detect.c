@@ -25,7 +25,7 @@ void symline_config_default(symline_config *cfg)
     cfg->illumination = 0u;
     cfg->adaptive = 1u;
     cfg->bright_sigma10 = 0;
-    cfg->ridge_sigma10 = 12u;
+    cfg->ridge_sigma10 = 9u;
     cfg->side_sigma10 = 30;
     cfg->a_distance = 0u;
     cfg->contrast_pct = 0u;

@@ -107,17 +107,23 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
  * At most 4096 points are summed, so every product stays in 32 bits.
  */
 #define SL_SIDE_SAMPLES 4096u
-SL_NOINLINE bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
-                                            symline_axis axis, uint32_t level, uint32_t k,
-                                            const symline_point *q, uint32_t n)
+/* Length (px) at which a piece's mean ridge must reach twice the per-point
+ * threshold (docs/detector.md: measured on the annotated real frames and the
+ * synthetic sets). */
+#define SL_SHORT_PX 16u
+
+SL_NOINLINE bool sl_linefilter_piece_fails(const sl_linefilter *f, const symline_image *img,
+                                           symline_axis axis, uint32_t level, uint32_t k,
+                                           const symline_point *q, uint32_t n)
 {
     const bool horiz = axis == SYMLINE_AXIS_HORIZONTAL;
     const uint32_t half = (1u << level) >> 1, off = k << level;
     const uint32_t step = n / SL_SIDE_SAMPLES + 1u;
     const size_t across = horiz ? img->stride : 1u;
     const uint32_t lim = horiz ? img->height : img->width;
-    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side;
-    for (i = 0; i < n; i += step) {
+    const uint32_t len = n << level;
+    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side, cnt = 0u;
+    for (i = 0; i < n; i += step, cnt++) {
         /* Grid points map inside the frame: (v << level) + half < size. */
         const uint32_t x = ((uint32_t)q[i].x << level) + half;
         const uint32_t y = ((uint32_t)q[i].y << level) + half;
@@ -128,6 +134,13 @@ SL_NOINLINE bool sl_linefilter_sides_differ(const sl_linefilter *f, const symlin
         sum_hi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
     }
     side = sum_lo > sum_hi ? sum_lo : sum_hi;
+    /* A short piece must stand out more than a long one: the carpet's grain
+     * forms short ridges just over the per-point threshold, a faint painted
+     * line runs on. Mean ridge >= ridge_min * (len + SL_SHORT_PX) / len. */
+    if (sum_centre > side &&
+        (uint64_t)(sum_centre - side) * len < (uint64_t)f->ridge_min * cnt * (len + SL_SHORT_PX)) {
+        return true;
+    }
     return sum_centre <= side ||
            (sum_lo > sum_hi ? sum_lo - sum_hi : sum_hi - sum_lo) * (2u * f->asym_pct) >
                (sum_centre - side) * 100u;

@@ -93,12 +93,15 @@ static inline bool sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *m
 }
 
 /*
- * The contrast filter's "sides alike" test once more, over a whole traced
- * piece q[0..n-1] (grid coordinates at `level`; k: the pass's sample offset
- * across the line in grid px): true when its sides differ too much for a line
- * on the carpet. Only for the contrast filter with asym_pct != 0.
+ * The contrast filter once more, over a whole traced piece q[0..n-1] (grid
+ * coordinates at `level`; k: the pass's sample offset across the line in grid
+ * px), on the gray values summed along it: true when its sides differ too
+ * much for a line on the carpet ("sides alike" with 2 x asym_pct), or when
+ * its mean ridge stays under ridge_min * (len + 16) / len for its length len
+ * in px (the carpet's grain makes short ridges). Only for the contrast filter
+ * with asym_pct != 0.
  */
-bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img, symline_axis axis,
-                                uint32_t level, uint32_t k, const symline_point *q, uint32_t n);
+bool sl_linefilter_piece_fails(const sl_linefilter *f, const symline_image *img, symline_axis axis,
+                               uint32_t level, uint32_t k, const symline_point *q, uint32_t n);
 
 #endif /* SYMLINE_LIB_LINEFILTER_H */

@@ -15,6 +15,7 @@
 #include "segments.h"
 #include "subpixel.h"
 #include "tracer.h"
+#include "linecheck.h"
 
 /* A point lies on an earlier segment within 2 px, plus the block size of its scale. */
 #define SL_COVER_TOL_Q8 SL_PX_Q8(2u)
@@ -61,8 +62,11 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     if ((n << p->level) < d->cfg->min_length || n < SL_MIN_PIECE_POINTS) {
         return;
     }
+    if (d->field_rows != NULL && sl_linecheck_too_wide(d->field_rows, p->level, p->h, q, n)) {
+        return;
+    }
     if (p->filter.kind == SYMLINE_FILTER_CONTRAST && p->filter.asym_pct != 0u &&
-        sl_linefilter_sides_differ(&p->filter, d->img, p->axis, p->level, p->k, q, n)) {
+        sl_linefilter_piece_fails(&p->filter, d->img, p->axis, p->level, p->k, q, n)) {
         return;
     }
     if (d->nseg >= d->r->segment_cap) {

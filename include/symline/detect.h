@@ -122,7 +122,7 @@ typedef struct symline_config {
                               mean + bright_sigma10/10 * sigma, -100..100;
                               default 0 (the mean) */
     uint32_t ridge_sigma10; /* adaptive: contrast filter ridge height of at
-                              least ridge_sigma10/10 * sigma, 0..100; default 12 */
+                              least ridge_sigma10/10 * sigma, 0..100; default 9 */
     int32_t side_sigma10;  /* adaptive, contrast filter: both sides of the ridge
                               must stay at or below mean + side_sigma10/10 *
                               sigma (a line lies on the darker carpet, not on a

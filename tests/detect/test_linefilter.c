@@ -45,20 +45,20 @@ static void gray_test(void **state)
     (void)state;
     symline_config_default(&cfg);
     sl_linefilter_setup(&f, &cfg);
-    assert_true(sl_linefilter_gray(&f, 100, 60, 60));   /* a ridge 40 high */
-    assert_false(sl_linefilter_gray(&f, 62, 60, 60));   /* 2 < contrast_min 3 */
-    assert_true(sl_linefilter_gray(&f, 63, 60, 60));    /* exactly 3 */
-    assert_false(sl_linefilter_gray(&f, 60, 60, 60));   /* no ridge */
-    assert_false(sl_linefilter_gray(&f, 100, 60, 90));  /* sides differ: needs 45 > 10 */
-    assert_true(sl_linefilter_gray(&f, 140, 60, 90));   /* 50 >= 45 */
+    assert_true(sl_linefilter_gray(&f, 100, 60, 60));  /* a ridge 40 high */
+    assert_false(sl_linefilter_gray(&f, 62, 60, 60));  /* 2 < contrast_min 3 */
+    assert_true(sl_linefilter_gray(&f, 63, 60, 60));   /* exactly 3 */
+    assert_false(sl_linefilter_gray(&f, 60, 60, 60));  /* no ridge */
+    assert_false(sl_linefilter_gray(&f, 100, 60, 90)); /* sides differ: needs 45 > 10 */
+    assert_true(sl_linefilter_gray(&f, 140, 60, 90));  /* 50 >= 45 */
     f.side_max = 80u;
-    assert_false(sl_linefilter_gray(&f, 140, 60, 90));  /* a side above side_max */
+    assert_false(sl_linefilter_gray(&f, 140, 60, 90)); /* a side above side_max */
     f.side_max = 255u;
     f.ridge_pct = 50u;
-    assert_false(sl_linefilter_gray(&f, 100, 60, 60));  /* needs 50 % of 100 */
+    assert_false(sl_linefilter_gray(&f, 100, 60, 60)); /* needs 50 % of 100 */
     f.ridge_pct = 0u;
     f.min_gray = 120u;
-    assert_false(sl_linefilter_gray(&f, 100, 60, 60));  /* darker than min_gray */
+    assert_false(sl_linefilter_gray(&f, 100, 60, 60)); /* darker than min_gray */
     /* The paper filter asks only for the gray value. */
     cfg.filter = SYMLINE_FILTER_PAPER;
     cfg.illumination = 100u;
@@ -138,9 +138,9 @@ static void statistics_and_adaptive_thresholds(void **state)
     symline_config_default(&cfg);
     sl_linefilter_setup(&f, &cfg);
     sl_linefilter_adapt(&f, &cfg, &st);
-    assert_int_equal(f.min_gray, 100);  /* mean + 0 sigma */
-    assert_int_equal(f.ridge_min, 48);  /* 1.2 sigma */
-    assert_int_equal(f.side_max, 220);  /* mean + 3.0 sigma */
+    assert_int_equal(f.min_gray, 100); /* mean + 0 sigma */
+    assert_int_equal(f.ridge_min, 36); /* 0.9 sigma */
+    assert_int_equal(f.side_max, 220); /* mean + 3.0 sigma */
     /* Configured thresholds above the adaptive ones stay; side_sigma10 100 is off. */
     cfg.illumination = 150u;
     cfg.contrast_min = 120u;
@@ -161,8 +161,9 @@ static void statistics_and_adaptive_thresholds(void **state)
 }
 
 /* A horizontal band of gray `line` on row 20 of a 40x40 frame, `above` and
- * `below` it; the piece: its points x = 5..30. */
-static bool band_sides_differ(uint8_t line, uint8_t above, uint8_t below)
+ * `below` it; the piece: its points x = 5..30; the whole-piece test with
+ * this ridge_min. */
+static bool band_fails(uint8_t line, uint8_t above, uint8_t below, uint32_t ridge_min)
 {
     static uint8_t px[40 * 40];
     symline_point q[26];
@@ -183,16 +184,20 @@ static bool band_sides_differ(uint8_t line, uint8_t above, uint8_t below)
     img.data = px;
     symline_config_default(&cfg);
     sl_linefilter_setup(&f, &cfg);
-    return sl_linefilter_sides_differ(&f, &img, SYMLINE_AXIS_HORIZONTAL, 0, 4, q, 26);
+    f.ridge_min = ridge_min;
+    return sl_linefilter_piece_fails(&f, &img, SYMLINE_AXIS_HORIZONTAL, 0, 4, q, 26);
 }
 
 static void whole_piece_side_test(void **state)
 {
     (void)state;
-    assert_false(band_sides_differ(200, 60, 60));  /* a line on the carpet */
-    assert_false(band_sides_differ(200, 60, 75));  /* 15 apart: 4500 <= 12500 */
-    assert_true(band_sides_differ(200, 60, 140));  /* a wall's foot: 24000 > 6000 */
-    assert_true(band_sides_differ(100, 100, 100)); /* no ridge at all */
+    assert_false(band_fails(200, 60, 60, 3u));  /* a line on the carpet */
+    assert_false(band_fails(200, 60, 75, 3u));  /* 15 apart: 4500 <= 12500 */
+    assert_true(band_fails(200, 60, 140, 3u));  /* a wall's foot: 24000 > 6000 */
+    assert_true(band_fails(100, 100, 100, 3u)); /* no ridge at all */
+    /* A 26 px piece's mean ridge must reach ridge_min * (26 + 16) / 26. */
+    assert_false(band_fails(200, 60, 60, 86u)); /* 140 >= 138.9 */
+    assert_true(band_fails(200, 60, 60, 87u));  /* 140 < 140.5 */
 }
 
 int main(void)

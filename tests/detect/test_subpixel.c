@@ -86,7 +86,8 @@ static int32_t offset_of(const symline_image *img, const sl_pass *p, uint32_t at
 
 static void even_and_odd_widths(void **state)
 {
-    static const uint8_t two[] = {200, 200}, three[] = {200, 200, 200}, four[] = {200, 200, 200, 200};
+    static const uint8_t two[] = {200, 200}, three[] = {200, 200, 200},
+                         four[] = {200, 200, 200, 200};
     symline_image img;
     sl_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 0u), h = pass_of(SYMLINE_AXIS_HORIZONTAL, 0u);
     (void)state;
