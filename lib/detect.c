@@ -240,7 +240,6 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
         const uint32_t gap =
             cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? img->width / 8u : cfg->merge_gap;
         sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
-        sl_drop_duplicates(out, cfg->merge_dev_q8);
     }
     if (cfg->curve_bend_q8 != 0u) {
         sl_curve_join(out);

@@ -16,12 +16,4 @@
  */
 void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8);
 
-/*
- * Drops short pieces (48 points at most) that lie along a longer line: at
- * least 70 % of their points within tol_q8 (plus half a block of their scale)
- * of it. Another axis or scale saw the same painted line there. Their points
- * leave the point storage; the ranges of the others stay ordered.
- */
-void sl_drop_duplicates(symline_result *r, uint32_t tol_q8);
-
 #endif /* SYMLINE_LIB_MERGE_H */
