@@ -103,7 +103,15 @@ symline_status symline_line_points(const symline_image *img, const symline_confi
     stats.mean = 0u;
     stats.sigma_q4 = 0u;
     if (cfg->adaptive) {
-        sl_frame_stats_measure(img, &stats);
+        /* The whole frame's statistics (the detector's are the field's when
+         * it finds a boundary); the histograms at the workspace's start, free
+         * again for the collection. */
+        uint8_t *cur = (uint8_t *)ws;
+        uint32_t *hist = (uint32_t *)sl_carve(&cur, (uint8_t *)ws + ws_size, SL_STATS_HIST_BYTES);
+        if (hist == NULL) {
+            return SYMLINE_ERR_BUFFER; /* not reached: the workspace size was checked */
+        }
+        sl_frame_stats_measure(img, NULL, hist, &stats);
     }
     *count =
         collect_all(img, cfg, (uint8_t *)ws, (uint8_t *)ws + ws_size, &stats, pts, cap, truncated);

@@ -146,8 +146,8 @@ static int run_lines(int argc, char **argv, int overlay)
             rc = CLI_FAIL;
         } else if (segjson_write(stdout, in.width, in.height, &res) != 0) {
             rc = CLI_FAIL;
-        } else if (overlay && overlay_write(a.out, in.px, in.width, in.height, in.width, &res,
-                                            err, sizeof err) != 0) {
+        } else if (overlay && overlay_write(a.out, in.px, in.width, in.height, in.width, &res, err,
+                                            sizeof err) != 0) {
             cli_error("%s", err);
             rc = CLI_FAIL;
         }

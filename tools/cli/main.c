@@ -57,6 +57,8 @@ static void usage(FILE *f)
           "      print the detected line segments as JSON on stdout\n"
           "  overlay  [same options as lines] IN OUT.png\n"
           "      draw lines (solid) and curves (dotted) over the frame\n"
+          "  boundary [--cell N] IN [OUT.png]\n"
+          "      print the field boundary as JSON (and draw it)\n"
 #endif
           "\n"
           "Axis: 'horizontal' = symmetry about a horizontal axis, computed along columns\n"
@@ -102,6 +104,9 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "overlay") == 0) {
         return cmd_overlay(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "boundary") == 0) {
+        return cmd_boundary(argc - 1, argv + 1);
     }
 #endif
     cli_error("unknown command '%s' (try 'symline --help')", argv[1]);
