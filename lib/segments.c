@@ -98,7 +98,8 @@ SL_NOINLINE uint32_t sl_chord_dev(const symline_point *p, uint32_t n, uint32_t l
     if (n == 0u) {
         return 0u;
     }
-    win = win < 1u ? 1u : (win > n ? n : win);
+    /* With no direction the distance to the end itself, point by point. */
+    win = len == 0u || win < 1u ? 1u : (win > n ? n : win);
     /* The cross product is linear in the point: a window's mean point lies
      * sum / win from the chord. The largest one first, one square root and
      * one division at the end. Differences of Q8 coordinates of one frame fit
@@ -114,9 +115,11 @@ SL_NOINLINE uint32_t sl_chord_dev(const symline_point *p, uint32_t n, uint32_t l
         }
     }
     if (len == 0u) {
-        return (uint32_t)sl_isqrt64(best / win);
+        return (uint32_t)sl_isqrt64(best);
     }
-    return sl_div_q8(best / win, len);
+    /* floor(floor(best / win) / len) = floor(best / (win len)): no 64-bit
+     * division (its library helper's frame would deepen the stack). */
+    return sl_div_q8(best, len * win);
 }
 
 /* A curve bends away from its chord by more than the threshold and by more
