@@ -9,7 +9,7 @@
 const char *symline_stage_name(symline_stage stage)
 {
     static const char *const names[SYMLINE_STAGE_COUNT] = {
-        "none",   "setup", "stats",    "grid",     "operator", "extrema",
-        "filter", "trace", "segments", "subpixel", "merge",    "curvejoin"};
+        "none",   "setup", "field",    "stats",    "grid",  "operator", "extrema",
+        "filter", "trace", "segments", "subpixel", "merge", "curvejoin"};
     return (unsigned)stage < (unsigned)SYMLINE_STAGE_COUNT ? names[stage] : "?";
 }
