@@ -38,13 +38,16 @@ skip() {
 }
 
 # ---- packages ----
+# dpkg-query -W, not dpkg -s: once arm64 is added, a package installed for both
+# architectures has an ambiguous name that dpkg -s rejects.
+installed() { dpkg-query -W -f='${Status}\n' "$1" 2>/dev/null | grep -q "ok installed"; }
 missing=
 for p in gcc-aarch64-linux-gnu qemu-user-static cmake make pkg-config; do
-    dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+    installed "$p" || missing="$missing $p"
 done
 if [ "$VEC" -eq 0 ]; then
     for p in libcmocka-dev:arm64 libpng-dev:arm64; do
-        dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+        installed "$p" || missing="$missing $p"
     done
 fi
 if [ -n "$missing" ]; then

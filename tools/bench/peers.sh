@@ -49,7 +49,8 @@ case $OUT in /*) ;; *) OUT=$(pwd)/$OUT ;; esac
 need_pkgs() {
     missing=
     for p in "$@"; do
-        dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+        # (dpkg -s rejects a name installed for two architectures, e.g. with arm64 added)
+        dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"
     done
     [ -z "$missing" ] && return 0
     echo "peers.sh: installing$missing" >&2
