@@ -169,6 +169,7 @@ SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *
                                    d->r->point_cap - d->npts, n, row_start, &d->truncated);
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         /* Above the field: nothing to trace. */
+        SL_STAGE(FIELD);
         sl_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
                       d->field_rows);
         *n = sl_field_drop(d->field_rows, d->r->points + d->npts, row_start, p->h);

@@ -30,8 +30,8 @@ extern "C" {
 typedef enum symline_stage {
     SYMLINE_STAGE_NONE = 0,  /* outside the detection (or between stages) */
     SYMLINE_STAGE_SETUP,     /* checks, configuration, workspace layout */
-    SYMLINE_STAGE_FIELD,     /* the field boundary (symline/field.h) */
-    SYMLINE_STAGE_STATS,     /* frame mean and deviation (adaptive thresholds) */
+    SYMLINE_STAGE_FIELD,     /* field boundary; line points above it dropped */
+    SYMLINE_STAGE_STATS,     /* the field's gray statistics (adaptive thresholds) */
     SYMLINE_STAGE_GRID,      /* box downsampling of rows for the coarser scales */
     SYMLINE_STAGE_OPERATOR,  /* symmetry energies (SPEC section 2) */
     SYMLINE_STAGE_EXTREMA,   /* extrema of symmetry (SPEC section 3) */
