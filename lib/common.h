@@ -2,8 +2,8 @@
  * The few macros and inline helpers every module of the core shares:
  * workspace carving and argument checks. Not part of the public API; each
  * stage's own interface is in its private header (symmetry.h, extrema.h,
- * linefilter.h, linepoints.h, tracer.h, segments.h, merge.h, curvejoin.h,
- * pass.h, fixed.h).
+ * linefilter.h, linepoints.h, tracer.h, subpixel.h, segments.h, merge.h,
+ * curvejoin.h, pass.h, fixed.h).
  */
 #ifndef SYMLINE_COMMON_H
 #define SYMLINE_COMMON_H
@@ -20,6 +20,14 @@
 #define SL_NOINLINE __attribute__((noinline))
 #else
 #define SL_NOINLINE
+#endif
+
+/* Copies a small routine into each caller even at -Os, where a constant
+ * argument then folds away (extrema.c). */
+#if defined(__GNUC__)
+#define SL_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define SL_ALWAYS_INLINE inline
 #endif
 
 /* Alignment every workspace carve-out is rounded to. */

@@ -13,6 +13,7 @@
 
 #include "fixed.h"
 #include "segments.h"
+#include "subpixel.h"
 #include "tracer.h"
 
 /* A point lies on an earlier segment within 2 px, plus the block size of its scale. */
@@ -52,7 +53,6 @@ static bool covered(const sl_run *d, const symline_point *q, uint32_t level)
 static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
 {
     symline_point *q = d->r->points + at;
-    const uint32_t half = (1u << p->level) >> 1;
     symline_segment *s;
     uint32_t i;
     if ((n << p->level) < d->cfg->min_length || n < 2u) {
@@ -67,6 +67,7 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
         return;
     }
     s = &d->r->segments[d->nseg++];
+    sl_subpixel(d->img, p, q, n);
     sl_fit(q, n, p->level, d->cfg->curve_dev_q8, s);
     /* A flat arc stays under the deviation threshold but bends: a curve too. */
     if (s->kind == SYMLINE_KIND_LINE && d->cfg->curve_bend_q8 != 0u &&
@@ -77,8 +78,7 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     s->first = at;
     s->count = n;
     for (i = 0; i < n; i++) {
-        q[i].x = (uint16_t)(((uint32_t)q[i].x << p->level) + half);
-        q[i].y = (uint16_t)(((uint32_t)q[i].y << p->level) + half);
+        sl_pt_to_full(&q[i], p->level);
     }
 }
 
@@ -135,6 +135,8 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
         for (i = 0; i < s->count; i++) {
             r->points[w + i].x = r->points[s->first + i].x;
             r->points[w + i].y = r->points[s->first + i].y;
+            r->points[w + i].fx = r->points[s->first + i].fx;
+            r->points[w + i].fy = r->points[s->first + i].fy;
         }
         s->first = w;
         w += s->count;

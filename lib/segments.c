@@ -85,8 +85,8 @@ uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t 
     uint32_t i;
     /* The largest cross product first, one square root and one division at the end. */
     for (i = 0; i < n; i++) {
-        const int64_t wx = (int64_t)sl_q8(p[i].x, level) - x0;
-        const int64_t wy = (int64_t)sl_q8(p[i].y, level) - y0;
+        const int64_t wx = (int64_t)sl_pt_q8x(&p[i], level) - x0;
+        const int64_t wy = (int64_t)sl_pt_q8y(&p[i], level) - y0;
         const int64_t c = len == 0u ? wx * wx + wy * wy : wx * dy - wy * dx;
         const uint64_t a = (uint64_t)(c < 0 ? -c : c);
         best = a > best ? a : best;
@@ -130,21 +130,21 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
                                 symline_segment *s)
 {
     /* Coordinates in Q4 full resolution, relative to the first point. */
-    const int32_t ox = sl_q8(p[0].x, level), oy = sl_q8(p[0].y, level);
+    const int32_t ox = sl_pt_q8x(&p[0], level), oy = sl_pt_q8y(&p[0], level);
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
     int32_t sx = 0, sy = 0, mx, my, ux, uy;
     int64_t a = 0, b = 0, c = 0, r, lam, vx, vy, len;
     uint32_t i, cnt = 0u;
     for (i = 0; i < n; i += step) {
-        sx += (sl_q8(p[i].x, level) - ox) / 16;
-        sy += (sl_q8(p[i].y, level) - oy) / 16;
+        sx += (sl_pt_q8x(&p[i], level) - ox) / 16;
+        sy += (sl_pt_q8y(&p[i], level) - oy) / 16;
         cnt++;
     }
     mx = sx / (int32_t)cnt;
     my = sy / (int32_t)cnt;
     for (i = 0; i < n; i += step) {
-        const int64_t dx = (sl_q8(p[i].x, level) - ox) / 16 - mx;
-        const int64_t dy = (sl_q8(p[i].y, level) - oy) / 16 - my;
+        const int64_t dx = (sl_pt_q8x(&p[i], level) - ox) / 16 - mx;
+        const int64_t dy = (sl_pt_q8y(&p[i], level) - oy) / 16 - my;
         a += dx * dx;
         b += dx * dy;
         c += dy * dy;
@@ -169,8 +169,8 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     uy = (int32_t)(vy * 32768) / (int32_t)len;
     for (i = 0; i < 2u; i++) {
         const symline_point *q = &p[i == 0u ? 0u : n - 1u];
-        const int64_t qx = (sl_q8(q->x, level) - ox) / 16 - mx;
-        const int64_t qy = (sl_q8(q->y, level) - oy) / 16 - my;
+        const int64_t qx = (sl_pt_q8x(q, level) - ox) / 16 - mx;
+        const int64_t qy = (sl_pt_q8y(q, level) - oy) / 16 - my;
         const int64_t t = qx * ux + qy * uy; /* Q4 * Q15 */
         /* Back to Q8 absolute: mean + t*u, Q4*Q15*Q15 -> Q8 is a shift by 26. */
         const int32_t ex = ox + mx * 16 + (int32_t)((t * ux) >> 26);
@@ -232,10 +232,10 @@ uint32_t sl_bend_q8(const symline_point *p, uint32_t n)
 /* The chord of p[0..n-1]'s first and last point as s's ends. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
-    s->x0 = sl_q8(p[0].x, level);
-    s->y0 = sl_q8(p[0].y, level);
-    s->x1 = sl_q8(p[n - 1u].x, level);
-    s->y1 = sl_q8(p[n - 1u].y, level);
+    s->x0 = sl_pt_q8x(&p[0], level);
+    s->y0 = sl_pt_q8y(&p[0], level);
+    s->x1 = sl_pt_q8x(&p[n - 1u], level);
+    s->y1 = sl_pt_q8y(&p[n - 1u], level);
 }
 
 void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
@@ -306,6 +306,7 @@ bool sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
         return near_chord(s->x0, s->y0, s->x1, s->y1, x, y, tol_q8);
     }
+    /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
         if (near_chord((int32_t)p[i].x << SL_Q8_SHIFT, (int32_t)p[i].y << SL_Q8_SHIFT,

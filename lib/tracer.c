@@ -140,10 +140,15 @@ void sl_reverse_points(symline_point *p, uint32_t n)
     /* Field by field: a struct swap may become a libc memcpy call. */
     for (i = 0; i < n / 2u; i++) {
         const uint16_t x = p[i].x, y = p[i].y;
+        const int8_t fx = p[i].fx, fy = p[i].fy;
         p[i].x = p[n - 1u - i].x;
         p[i].y = p[n - 1u - i].y;
+        p[i].fx = p[n - 1u - i].fx;
+        p[i].fy = p[n - 1u - i].fy;
         p[n - 1u - i].x = x;
         p[n - 1u - i].y = y;
+        p[n - 1u - i].fx = fx;
+        p[n - 1u - i].fy = fy;
     }
 }
 

@@ -109,11 +109,11 @@ typedef struct symline_config {
     symline_filter filter; /* default SYMLINE_FILTER_CONTRAST */
     uint32_t illumination; /* minimum gray value of a line point, 0..255
                               (0 disables); default 0, the paper used 100 */
-    uint32_t adaptive;     /* 1: the two thresholds below follow the frame's
+    bool adaptive;         /* true: the two thresholds below follow the frame's
                               mean gray value and its standard deviation sigma,
                               so a brighter, darker or lower-contrast exposure
-                              of the same scene gives the same lines; 0: off.
-                              Default 1 */
+                              of the same scene gives the same lines; false:
+                              off. Default true */
     int32_t bright_sigma10; /* adaptive: a line point's gray value must reach
                               mean + bright_sigma10/10 * sigma, -100..100;
                               default 0 (the mean) */
@@ -166,10 +166,20 @@ typedef struct symline_config {
 /* Fills *cfg with the defaults documented above (no-op on NULL). */
 void symline_config_default(symline_config *cfg);
 
-/* One traced point, in full-resolution pixels. */
+/*
+ * One traced point, in full-resolution pixels: the pixel (x, y) nearest to the
+ * point and the point's sub-pixel offset from that pixel's centre in 1/128 px,
+ * -64..63 (fx, fy): the point lies at (x + fx/128, y + fy/128). The offset is
+ * taken across the line (the ridge's middle, from the symmetry energies around
+ * the S point), so fy is 0 for points found along rows (vertical axis) and fx
+ * for points found along columns, except at coarse scales, whose grid points
+ * map to block centres between full-resolution pixels.
+ */
 typedef struct symline_point {
     uint16_t x;
     uint16_t y;
+    int8_t fx;
+    int8_t fy;
 } symline_point;
 
 /* One detected segment. */

@@ -35,6 +35,7 @@ static void line_continuing_a_curve_is_a_curve(void **state)
     symline_result r;
     uint32_t i, n = 0u;
     (void)state;
+    memset(pts, 0, sizeof(pts)); /* no sub-pixel offsets */
     /* Curve: y = 200 - x^2/80 for x = 0..40 (leaves at 45 degrees up-right). */
     for (i = 0; i <= 40u; i++, n++) {
         pts[n].x = (uint16_t)(10u + i);

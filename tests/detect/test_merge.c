@@ -19,6 +19,7 @@ static void merge_collinear(void **state)
     symline_result r;
     uint32_t i;
     (void)state;
+    memset(pts, 0, sizeof(pts)); /* no sub-pixel offsets */
     /* Two pieces of y = 5 (x 0..9 and 20..29) with a curve between them in storage. */
     for (i = 0; i < 10u; i++) {
         pts[i].x = (uint16_t)i;
@@ -78,6 +79,7 @@ static void merge_keeps_bent_joins_apart(void **state)
     symline_result r;
     uint32_t i;
     (void)state;
+    memset(pts, 0, sizeof(pts)); /* no sub-pixel offsets */
     /* Two pieces 4 px apart, the second 3 px lower: ends not on each other's line. */
     for (i = 0; i < 10u; i++) {
         pts[i].x = (uint16_t)i;
@@ -103,7 +105,8 @@ static void merge_keeps_bent_joins_apart(void **state)
     r.truncated = false;
     sl_merge(&r, 12, 640, 512); /* 3 px off > 2.5 px */
     assert_int_equal(r.segment_count, 2);
-    sl_merge(&r, 12, 1024, 5120); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
+    sl_merge(&r, 12, 1024,
+             5120); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
     assert_int_equal(r.segment_count, 1);
     assert_true(segs[0].merged);
 }

@@ -18,6 +18,7 @@
 static uint32_t l_chain(symline_point *p)
 {
     uint32_t n = 0u, i;
+    memset(p, 0, 15u * sizeof *p); /* no sub-pixel offsets */
     for (i = 0; i <= 6u; i++, n++) {
         p[n].x = 0;
         p[n].y = (uint16_t)i;
@@ -56,6 +57,7 @@ static void fit_line_and_curve(void **state)
     symline_segment s;
     uint32_t i;
     (void)state;
+    memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     for (i = 0; i < 40u; i++) {
         p[i].x = (uint16_t)(10u + i);
         p[i].y = (uint16_t)(20u + i / 4u);
@@ -70,10 +72,10 @@ static void fit_line_and_curve(void **state)
     assert_true(s.max_dev < 128u);
     /* A half circle of radius 12 around (30, 30). */
     {
-        static const int8_t c[][2] = {{12, 0}, {12, 2}, {11, 4}, {11, 5}, {10, 7}, {8, 9},
-                                      {7, 10}, {5, 11}, {4, 11}, {2, 12}, {0, 12}, {-2, 12},
-                                      {-4, 11}, {-5, 11}, {-7, 10}, {-8, 9}, {-10, 7},
-                                      {-11, 5}, {-11, 4}, {-12, 2}, {-12, 0}};
+        static const int8_t c[][2] = {{12, 0},  {12, 2},  {11, 4},  {11, 5}, {10, 7},  {8, 9},
+                                      {7, 10},  {5, 11},  {4, 11},  {2, 12}, {0, 12},  {-2, 12},
+                                      {-4, 11}, {-5, 11}, {-7, 10}, {-8, 9}, {-10, 7}, {-11, 5},
+                                      {-11, 4}, {-12, 2}, {-12, 0}};
         for (i = 0; i < 21u; i++) {
             p[i].x = (uint16_t)(30 + c[i][0]);
             p[i].y = (uint16_t)(30 + c[i][1]);
@@ -98,6 +100,7 @@ static void bend_tells_flat_arc_from_line(void **state)
     symline_segment s;
     uint32_t i;
     (void)state;
+    memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     /* A staircase line (slope 1/4): pixel steps average out. */
     for (i = 0; i < 60u; i++) {
         p[i].x = (uint16_t)(10u + i);
@@ -112,13 +115,14 @@ static void bend_tells_flat_arc_from_line(void **state)
     }
     sl_fit(p, 60, 0, 512, &s);
     assert_int_equal(s.kind, SYMLINE_KIND_LINE); /* under the max_dev threshold ... */
-    assert_true(sl_bend_q8(p, 60) >= 80u);        /* ... but it bends */
+    assert_true(sl_bend_q8(p, 60) >= 80u);       /* ... but it bends */
 }
 
 static void distances(void **state)
 {
     symline_point p[4];
     (void)state;
+    memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     /* (3, 4) px from the line through the origin along x: 4 px (Q8). */
     assert_int_equal(sl_line_dist_q8(0, 0, 256, 0, 3 * 256, 4 * 256), 4u * 256u);
     /* A zero direction: the distance to the point itself (5 px). */
@@ -134,7 +138,7 @@ static void distances(void **state)
     assert_int_equal(sl_max_dev(p, 3, 1, 128, 128, 20 * 256 + 128, 128), 4u * 256u);
     /* Curve test: above the threshold and above 1/32 of the chord. */
     assert_true(sl_is_curve(0, 0, 64 * 256, 0, 3u * 256u, 512u));
-    assert_false(sl_is_curve(0, 0, 64 * 256, 0, 512u, 512u));   /* not above the threshold */
+    assert_false(sl_is_curve(0, 0, 64 * 256, 0, 512u, 512u));       /* not above the threshold */
     assert_false(sl_is_curve(0, 0, 200 * 256, 0, 6u * 256u, 512u)); /* under 1/32 of 200 px */
 }
 
