@@ -109,8 +109,12 @@ typedef struct symline_config {
     symline_filter filter; /* default SYMLINE_FILTER_CONTRAST */
     uint32_t illumination; /* minimum gray value of a line point, 0..255
                               (0 disables); default 0, the paper used 100 */
-    bool adaptive;         /* true: the two thresholds below follow the frame's
-                              mean gray value and its standard deviation sigma,
+    bool adaptive;         /* true: the thresholds below follow the gray values of
+                              the field (below the field boundary; the whole
+                              frame when there is none or detections above it
+                              are kept): their median ("mean" below) and their
+                              spread sigma (1.4826 x the median absolute
+                              deviation), on every 2nd pixel of every 2nd row,
                               so a brighter, darker or lower-contrast exposure
                               of the same scene gives the same lines; false:
                               off. Default true */
@@ -118,11 +122,11 @@ typedef struct symline_config {
                               mean + bright_sigma10/10 * sigma, -100..100;
                               default 0 (the mean) */
     uint32_t ridge_sigma10; /* adaptive: contrast filter ridge height of at
-                              least ridge_sigma10/10 * sigma, 0..100; default 10 */
+                              least ridge_sigma10/10 * sigma, 0..100; default 9 */
     int32_t side_sigma10;  /* adaptive, contrast filter: both sides of the ridge
                               must stay at or below mean + side_sigma10/10 *
                               sigma (a line lies on the darker carpet, not on a
-                              bright wall), -100..100; 100 = off; default 15 */
+                              bright wall), -100..100; 100 = off; default 30 */
     uint32_t a_distance;   /* paper filter: largest distance (px, at the pass's
                               scale) of the A point across the line,
                               1..SYMLINE_DETECT_MAX_A_DISTANCE (32);
@@ -235,6 +239,26 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
  */
 symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
                               size_t ws_size, symline_result *out);
+
+/*
+ * The line filter's output alone: the line points of every pass (axes and
+ * scales as configured, adaptive thresholds included), in full-resolution
+ * pixels with their sub-pixel offsets across the line (fx, fy, as in the
+ * segments' points), pass after pass,
+ * each pass in raster order, written to pts[0 .. *count-1]. Points without a
+ * line point among their 8 neighbours in their pass (type A, SPEC §4) are
+ * left out, as the tracer ignores them. A pixel found by two passes is
+ * listed twice. This is what symline_detect() traces and what
+ * the Muff-space finder (symline/muff.h) votes with.
+ * ws: ws_size >= symline_detect_workspace_size() bytes; pts: cap entries
+ * (not NULL; give room for every line point: a few thousand in a 320x240
+ * field view). When cap runs out,
+ * the points that fit are kept and *truncated is set to true (else false).
+ * Returns SYMLINE_OK, ERR_NULL, ERR_SIZE, ERR_STRIDE, ERR_CONFIG or ERR_BUFFER.
+ */
+symline_status symline_line_points(const symline_image *img, const symline_config *cfg, void *ws,
+                                   size_t ws_size, symline_point *pts, uint32_t cap,
+                                   uint32_t *count, bool *truncated);
 
 #ifdef __cplusplus
 }

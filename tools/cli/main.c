@@ -48,6 +48,10 @@ static void usage(FILE *f)
           "      write the extrema map: 0 nothing, 128 A point (asymmetry), 255 S point\n"
           "  convert  IN OUT\n"
           "      convert between PGM and PNG (8-bit gray; colour input becomes luma)\n"
+          "  features --radius M IN\n"
+          "      print the symmetry feature points (S points of both axes) as JSON\n"
+          "  histogram --radius M IN [--plot OUT.png]\n"
+          "      print the vertical symmetry histogram (S points per column) as JSON\n"
 #ifdef SYMLINE_CLI_LINES
           "  lines    [--axis horizontal|vertical|both] [--radius M] [options] IN\n"
           "      print the detected line segments as JSON on stdout\n"
@@ -87,6 +91,12 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "convert") == 0) {
         return cmd_convert(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "features") == 0) {
+        return cmd_features(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "histogram") == 0) {
+        return cmd_histogram(argc - 1, argv + 1);
     }
 #ifdef SYMLINE_CLI_LINES
     if (strcmp(argv[1], "lines") == 0) {
