@@ -9,15 +9,22 @@
  */
 #include "pass.h"
 
+#include "fieldboundary.h"
+
 #include "fixed.h"
 #include "segments.h"
+#include "stagemark.h"
 #include "subpixel.h"
 #include "tracer.h"
+#include "linecheck.h"
 
 /* The bend test (sl_bend_check) runs on pieces at least this long (px) at
  * the finest scales only: coarser grids step by 4 px and more. */
 #define SL_BEND_MIN_PX 16u
 #define SL_BEND_MAX_LEVEL 1u
+/* Fewest points of a reported piece at any scale: three coarse blocks in a row
+ * are a blob's rim as often as a line. */
+#define SL_MIN_PIECE_POINTS 4u
 
 void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
                    uint32_t width, uint32_t height)
@@ -53,11 +60,14 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     symline_point *q = d->r->points + at;
     symline_segment *s;
     uint32_t i;
-    if ((n << p->level) < d->cfg->min_length || n < 2u) {
+    if ((n << p->level) < d->cfg->min_length || n < SL_MIN_PIECE_POINTS) {
+        return;
+    }
+    if (d->field_rows != NULL && sl_linecheck_too_wide(d->field_rows, p->level, p->h, q, n)) {
         return;
     }
     if (p->filter.kind == SYMLINE_FILTER_CONTRAST && p->filter.asym_pct != 0u &&
-        sl_linefilter_sides_differ(&p->filter, d->img, p->axis, p->level, p->k, q, n)) {
+        sl_linefilter_piece_fails(&p->filter, d->img, p->axis, p->level, p->k, q, n)) {
         return;
     }
     if (d->nseg >= d->r->segment_cap) {
@@ -65,7 +75,9 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
         return;
     }
     s = &d->r->segments[d->nseg++];
+    SL_STAGE(SUBPIXEL);
     sl_subpixel(d->img, p, q, n);
+    SL_STAGE(SEGMENTS);
     sl_fit(q, n, p->level, d->cfg->curve_dev_q8, s);
     /* A flat arc stays under the deviation threshold but bends: a curve too. */
     if (s->kind == SYMLINE_KIND_LINE && d->cfg->curve_bend_q8 != 0u &&
@@ -117,11 +129,15 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     bool cut = false;
     /* Chains go to the storage's free tail after the raster list. */
     sl_tracer_init(t, point_at(r, base), n, row_start, p->h);
+    SL_STAGE(TRACE);
     while (tail < r->point_cap &&
            sl_tracer_next(t, point_at(r, tail), r->point_cap - tail, &cnt, &cut)) {
+        SL_STAGE(SEGMENTS);
         chain(d, p, ix, tail, cnt);
         tail += cnt;
+        SL_STAGE(TRACE);
     }
+    SL_STAGE(SEGMENTS);
     if (cut || (tail >= r->point_cap && n > 0u)) {
         d->truncated = true;
     }
@@ -149,8 +165,16 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
                                           const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
-    return sl_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
-                      d->r->point_cap - d->npts, n, row_start, &d->truncated);
+    symline_status st = sl_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
+                                   d->r->point_cap - d->npts, n, row_start, &d->truncated);
+    if (st == SYMLINE_OK && d->field_rows != NULL) {
+        /* Above the field: nothing to trace. */
+        SL_STAGE(FIELD);
+        sl_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
+                      d->field_rows);
+        *n = sl_field_drop(d->field_rows, point_at(d->r, d->npts), row_start, p->h);
+    }
+    return st;
 }
 
 /* The earlier passes' segments on a grid, so that testing a chain point

@@ -38,8 +38,8 @@ int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray
                     size_t errlen);
 
 /* Reads a PGM or PNG (by its signature) from memory: same rules as imgio_read_gray(). */
-int imgio_parse_image(const uint8_t *buf, size_t len, const char *name, imgio_gray *img,
-                      char *err, size_t errlen);
+int imgio_parse_image(const uint8_t *buf, size_t len, const char *name, imgio_gray *img, char *err,
+                      size_t errlen);
 
 /*
  * Bounded resources on bad files: an image of more than imgio_max_pixels()

@@ -66,7 +66,8 @@ static size_t chunk(uint8_t *out, size_t at, const char *type, const uint8_t *da
 static size_t png_with_header(uint8_t *out, uint32_t w, uint32_t h, uint8_t depth, uint8_t ctype)
 {
     static const uint8_t sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    static const uint8_t idat[11] = {0x78, 0x9c, 0x63, 0x60, 0x80, 0x00, 0x00, 0x00, 0x08, 0x00, 0x01};
+    static const uint8_t idat[11] = {0x78, 0x9c, 0x63, 0x60, 0x80, 0x00,
+                                     0x00, 0x00, 0x08, 0x00, 0x01};
     uint8_t ihdr[13] = {0};
     size_t at = 8;
     memcpy(out, sig, 8);
@@ -147,13 +148,16 @@ static void test_pixel_limit_override(void **state)
     (void)state;
     imgio_set_max_pixels(15u);
     assert_int_equal(imgio_max_pixels(), 15u);
-    assert_int_equal(imgio_parse_pgm((const uint8_t *)pgm, sizeof pgm - 1, "x.pgm", &img, err, sizeof err), -1);
+    assert_int_equal(
+        imgio_parse_pgm((const uint8_t *)pgm, sizeof pgm - 1, "x.pgm", &img, err, sizeof err), -1);
     assert_non_null(strstr(err, "exceeds the limit of 15 pixels"));
     imgio_set_max_pixels(16u);
-    assert_int_equal(imgio_parse_pgm((const uint8_t *)pgm, sizeof pgm - 1, "x.pgm", &img, err, sizeof err), 0);
+    assert_int_equal(
+        imgio_parse_pgm((const uint8_t *)pgm, sizeof pgm - 1, "x.pgm", &img, err, sizeof err), 0);
     imgio_free(&img);
     imgio_set_max_pixels(0u);
-    assert_true(imgio_max_pixels() == IMGIO_DEFAULT_MAX_PIXELS || getenv("SYMLINE_MAX_PIXELS") != NULL);
+    assert_true(imgio_max_pixels() == IMGIO_DEFAULT_MAX_PIXELS ||
+                getenv("SYMLINE_MAX_PIXELS") != NULL);
     /* The limit keeps every buffer of an image (8 bytes a pixel at most) within size_t. */
     imgio_set_max_pixels(UINT64_MAX);
     assert_true(imgio_max_pixels() <= SIZE_MAX / 8u);
@@ -179,7 +183,8 @@ static void test_devices_and_folders(void **state)
  * 32-bit size_t for every accepted frame size (the product wrapped before). */
 static void test_point_storage_fits_32_bits(void **state)
 {
-    const uint32_t sizes[][2] = {{1, 1}, {640, 480}, {32768, 32768}, {65535, 65535}, {46341, 46341}};
+    const uint32_t sizes[][2] = {
+        {1, 1}, {640, 480}, {32768, 32768}, {65535, 65535}, {46341, 46341}};
     size_t i;
     (void)state;
     for (i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {

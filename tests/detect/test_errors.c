@@ -28,7 +28,8 @@ static void make_frame(void)
     uint32_t x, y;
     for (y = 0; y < H; y++) {
         for (x = 0; x < W; x++) {
-            frame[y * W + x] = (uint8_t)((y >= 30u && y < 33u) || (x >= 60u && x < 63u) ? 220u : 40u);
+            frame[y * W + x] =
+                (uint8_t)((y >= 30u && y < 33u) || (x >= 60u && x < 63u) ? 220u : 40u);
         }
     }
 }
@@ -98,12 +99,12 @@ static symline_status detect_with(const symline_config *cfg)
         symline_config_default(&c);                                                                \
         c.name = bad;                                                                              \
         if (detect_with(&c) != SYMLINE_ERR_CONFIG) {                                               \
-            fail_msg("%s = %s accepted", #name, #bad);                                            \
+            fail_msg("%s = %s accepted", #name, #bad);                                             \
         }                                                                                          \
         symline_config_default(&c);                                                                \
         c.name = good;                                                                             \
         if (detect_with(&c) != SYMLINE_OK) {                                                       \
-            fail_msg("%s = %s refused", #name, #good);                                            \
+            fail_msg("%s = %s refused", #name, #good);                                             \
         }                                                                                          \
     } while (0)
 
@@ -117,7 +118,6 @@ static void every_config_field_at_and_past_its_limits(void **state)
     FIELD(levels, SYMLINE_DETECT_MAX_LEVELS, SYMLINE_DETECT_MAX_LEVELS + 1u);
     FIELD(filter, SYMLINE_FILTER_PAPER, (symline_filter)2);
     FIELD(illumination, 255u, 256u);
-    FIELD(adaptive, 1u, 2u);
     FIELD(bright_sigma10, -100, -101);
     FIELD(bright_sigma10, 100, 101);
     FIELD(ridge_sigma10, 100u, 101u);
@@ -135,6 +135,8 @@ static void every_config_field_at_and_past_its_limits(void **state)
     FIELD(merge_gap, 65535u, 65536u);
     FIELD(merge_gap, SYMLINE_MERGE_GAP_AUTO, 1u << 24);
     FIELD(merge_gap, 0u, SYMLINE_MERGE_GAP_AUTO - 1u);
+    FIELD(field_boundary, SYMLINE_FIELD_KEEP, (symline_field_mode)3);
+    FIELD(field_margin, 65535u, 65536u);
 }
 
 static void detect_argument_errors(void **state)
@@ -238,15 +240,18 @@ static void operator_argument_errors(void **state)
     memcpy(ref, out, sizeof out);
 #define BOTH(expect, img_, axis_, m_, out_, stride_, len_, ws_, wsn_)                              \
     do {                                                                                           \
-        assert_int_equal(symline_symmetry(img_, axis_, m_, out_, stride_, len_, ws_, wsn_), expect); \
-        assert_int_equal(symline_extrema(img_, axis_, m_, out_, stride_, len_, ws_, wsn_), expect); \
+        assert_int_equal(symline_symmetry(img_, axis_, m_, out_, stride_, len_, ws_, wsn_),        \
+                         expect);                                                                  \
+        assert_int_equal(symline_extrema(img_, axis_, m_, out_, stride_, len_, ws_, wsn_),         \
+                         expect);                                                                  \
         assert_memory_equal(out, ref, sizeof out);                                                 \
     } while (0)
     BOTH(SYMLINE_ERR_NULL, NULL, SYMLINE_AXIS_HORIZONTAL, 3u, out, W, n, ws, ws_n);
     BOTH(SYMLINE_ERR_NULL, &img, SYMLINE_AXIS_HORIZONTAL, 3u, NULL, W, n, ws, ws_n);
     BOTH(SYMLINE_ERR_NULL, &img, SYMLINE_AXIS_HORIZONTAL, 3u, out, W, n, NULL, ws_n);
     BOTH(SYMLINE_ERR_RADIUS, &img, SYMLINE_AXIS_HORIZONTAL, 0u, out, W, n, ws, ws_n);
-    BOTH(SYMLINE_ERR_RADIUS, &img, SYMLINE_AXIS_HORIZONTAL, SYMLINE_MAX_RADIUS + 1u, out, W, n, ws, ws_n);
+    BOTH(SYMLINE_ERR_RADIUS, &img, SYMLINE_AXIS_HORIZONTAL, SYMLINE_MAX_RADIUS + 1u, out, W, n, ws,
+         ws_n);
     BOTH(SYMLINE_ERR_AXIS, &img, (symline_axis)2, 3u, out, W, n, ws, ws_n);
     BOTH(SYMLINE_ERR_STRIDE, &img, SYMLINE_AXIS_HORIZONTAL, 3u, out, W - 1u, n, ws, ws_n);
     BOTH(SYMLINE_ERR_BUFFER, &img, SYMLINE_AXIS_HORIZONTAL, 3u, out, W, n - 1u, ws, ws_n);
@@ -262,8 +267,10 @@ static void operator_argument_errors(void **state)
     img.width = W;
     /* Energies: an E plane one element short. */
     memset(E, 0x77, sizeof E);
-    assert_int_equal(symline_energy_frame(&img, SYMLINE_AXIS_VERTICAL, 3u, E, W, n - 1u), SYMLINE_ERR_BUFFER);
-    assert_int_equal(symline_energy_frame(&img, SYMLINE_AXIS_VERTICAL, 3u, E, W - 1u, n), SYMLINE_ERR_STRIDE);
+    assert_int_equal(symline_energy_frame(&img, SYMLINE_AXIS_VERTICAL, 3u, E, W, n - 1u),
+                     SYMLINE_ERR_BUFFER);
+    assert_int_equal(symline_energy_frame(&img, SYMLINE_AXIS_VERTICAL, 3u, E, W - 1u, n),
+                     SYMLINE_ERR_STRIDE);
     assert_int_equal(E[0], 0x77777777u);
     assert_int_equal(symline_energy_row(NULL, W, 3u, E), SYMLINE_ERR_NULL);
     assert_int_equal(symline_energy_row(frame, 0u, 3u, E), SYMLINE_ERR_SIZE);
@@ -271,8 +278,10 @@ static void operator_argument_errors(void **state)
     assert_int_equal(symline_energy_across_image(&img, H, 3u, E), SYMLINE_ERR_RANGE);
     assert_int_equal(E[0], 0x77777777u);
     /* The good calls work with exactly-sized buffers. */
-    assert_int_equal(symline_symmetry(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, W, n, ws, ws_n), SYMLINE_OK);
-    assert_int_equal(symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, W, n, ws, ws_n), SYMLINE_OK);
+    assert_int_equal(symline_symmetry(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, W, n, ws, ws_n),
+                     SYMLINE_OK);
+    assert_int_equal(symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, W, n, ws, ws_n),
+                     SYMLINE_OK);
     free(ws);
 #undef BOTH
 }

@@ -12,30 +12,6 @@
 
 #include "merge.h"
 
-/* Every test runs three times, with the same results: with a workspace for
- * the merge's grid of line ends, without one (every pair is tried), and
- * with no free point storage either (each join rotates the points at once
- * instead of one layout at the end). */
-typedef struct merge_ws {
-    void *mem;
-    size_t bytes;
-    bool tight;
-} merge_ws;
-
-static uint64_t ws_mem[1024];
-static merge_ws with_grid = {ws_mem, sizeof ws_mem, false};
-static merge_ws without_grid = {NULL, 0, false};
-static merge_ws without_room = {NULL, 0, true};
-
-static void merge(void **state, symline_result *r, uint32_t gap, uint32_t dev, uint32_t curve)
-{
-    const merge_ws *w = (const merge_ws *)*state;
-    if (w->tight) {
-        r->point_cap = r->point_count;
-    }
-    sl_merge(r, gap, dev, curve, 64, 48, w->mem, w->bytes);
-}
-
 static void merge_collinear(void **state)
 {
     symline_point pts[64];
@@ -77,10 +53,10 @@ static void merge_collinear(void **state)
     r.point_cap = 64;
     r.point_count = 23;
     r.truncated = false;
-    merge(state, &r, 8, 640, 512); /* gap 11 px > 8: no merge */
+    sl_merge(&r, 8, 640, 512); /* gap 11 px > 8: no merge */
     assert_int_equal(r.segment_count, 3);
     assert_false(segs[0].merged);
-    merge(state, &r, 12, 640, 512);
+    sl_merge(&r, 12, 640, 512);
     assert_int_equal(r.segment_count, 2);
     assert_int_equal(segs[0].x0, 0);
     assert_int_equal(segs[0].x1, 29 * 256);
@@ -127,9 +103,10 @@ static void merge_keeps_bent_joins_apart(void **state)
     r.point_cap = 64;
     r.point_count = 20;
     r.truncated = false;
-    merge(state, &r, 12, 640, 512); /* 3 px off > 2.5 px */
+    sl_merge(&r, 12, 640, 512); /* 3 px off > 2.5 px */
     assert_int_equal(r.segment_count, 2);
-    merge(state, &r, 12, 1024, 5120); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
+    sl_merge(&r, 12, 1024,
+             5120); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
     assert_int_equal(r.segment_count, 1);
     assert_true(segs[0].merged);
 }
@@ -137,12 +114,8 @@ static void merge_keeps_bent_joins_apart(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test_prestate(merge_collinear, &with_grid),
-        cmocka_unit_test_prestate(merge_collinear, &without_grid),
-        cmocka_unit_test_prestate(merge_collinear, &without_room),
-        cmocka_unit_test_prestate(merge_keeps_bent_joins_apart, &with_grid),
-        cmocka_unit_test_prestate(merge_keeps_bent_joins_apart, &without_grid),
-        cmocka_unit_test_prestate(merge_keeps_bent_joins_apart, &without_room),
+        cmocka_unit_test(merge_collinear),
+        cmocka_unit_test(merge_keeps_bent_joins_apart),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -11,12 +11,15 @@
 #include "overlay.h"
 #include "segjson.h"
 #include "cli.h"
+#include "muffopts.h"
 #include "symline/detect.h"
 
 typedef struct lines_args {
     symline_config cfg;
+    muffopts method;
     const char *in;
     const char *out;
+    uint32_t repeat; /* detections run on the frame (the output is printed once) */
 } lines_args;
 
 static void lines_usage(FILE *f, const char *cmd)
@@ -24,7 +27,11 @@ static void lines_usage(FILE *f, const char *cmd)
     const int ov = strcmp(cmd, "overlay") == 0;
     fprintf(f, "usage: symline %s [options] IN%s\n", cmd, ov ? " OUT.png" : "");
     detopts_help(f);
+    muffopts_help(f);
     fprintf(f,
+            "  --repeat N          run the detection N times (1..1000000; default 1) and\n"
+            "                      print it once: (cost(N=11) - cost(N=1)) / 10 is one\n"
+            "                      detection (tools/bench/icount.sh)\n"
             "  IN                  binary PGM or PNG (colour is converted to luma)\n"
             "%s"
             "Prints JSON (SPEC section 7) on stdout%s.\n"
@@ -43,6 +50,8 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     detopts d;
     char err[128];
     detopts_init(&d);
+    a->repeat = 1u;
+    muffopts_init(&a->method);
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
         int rc;
@@ -50,7 +59,17 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
             lines_usage(stdout, argv[0]);
             return 1;
         }
-        rc = detopts_parse(&d, argc, argv, &i, err, sizeof err);
+        if (strcmp(o, "--repeat") == 0) {
+            if (i + 1 >= argc || detopts_u32(argv[i + 1], 1u, 1000000u, &a->repeat) != 0) {
+                return cli_error("%s: --repeat needs a number 1..1000000", argv[0]);
+            }
+            i++;
+            continue;
+        }
+        rc = muffopts_parse(&a->method, argc, argv, &i, err, sizeof err);
+        if (rc == 0) {
+            rc = detopts_parse(&d, argc, argv, &i, err, sizeof err);
+        }
         if (rc < 0) {
             return cli_error("%s: %s", argv[0], err);
         }
@@ -76,6 +95,26 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     return 0;
 }
 
+/* The tracer (symline_detect) or the Muff-space finder with its accumulator. */
+static symline_status run_method(const lines_args *a, const symline_image *view, void *ws,
+                                 size_t ws_size, symline_result *res)
+{
+    size_t acc_size;
+    uint16_t *acc;
+    symline_status st;
+    if (!a->method.muff) {
+        return symline_detect(view, &a->cfg, ws, ws_size, res);
+    }
+    acc_size = symline_muff_accumulator_size(view->width, view->height, &a->method.mc);
+    acc = (uint16_t *)malloc(acc_size > 0u ? acc_size : 1u);
+    if (acc == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    st = symline_detect_muff(view, &a->cfg, &a->method.mc, acc, acc_size, ws, ws_size, res);
+    free(acc);
+    return st;
+}
+
 static int run_lines(int argc, char **argv, int overlay)
 {
     lines_args a;
@@ -85,7 +124,8 @@ static int run_lines(int argc, char **argv, int overlay)
     char err[512];
     void *ws;
     size_t ws_size;
-    symline_status st;
+    symline_status st = SYMLINE_OK;
+    uint32_t r;
     int rc = parse_lines_args(argc, argv, &a, overlay ? 2 : 1);
     if (rc != 0) {
         return rc == 1 ? CLI_OK : rc;
@@ -97,7 +137,10 @@ static int run_lines(int argc, char **argv, int overlay)
     view.height = in.height;
     view.stride = in.width;
     view.data = in.px;
-    ws_size = symline_detect_workspace_size(in.width, in.height, &a.cfg);
+    a.method.mc.min_length = a.cfg.min_length;
+    ws_size = a.method.muff ? symline_detect_muff_workspace_size(in.width, in.height, &a.cfg,
+                                                                 &a.method.mc)
+                            : symline_detect_workspace_size(in.width, in.height, &a.cfg);
     if (ws_size == 0u) {
         imgio_free(&in);
         return cli_error("%s: image size or configuration not supported", argv[0]);
@@ -111,7 +154,9 @@ static int run_lines(int argc, char **argv, int overlay)
     if (ws == NULL || res.segments == NULL || res.points == NULL) {
         rc = cli_error("out of memory");
     } else {
-        st = symline_detect(&view, &a.cfg, ws, ws_size, &res);
+        for (r = 0u; r < a.repeat && st == SYMLINE_OK; r++) {
+            st = run_method(&a, &view, ws, ws_size, &res);
+        }
         if (st != SYMLINE_OK) {
             cli_error("%s: %s", argv[0], symline_status_str(st));
             rc = CLI_FAIL;
@@ -121,8 +166,8 @@ static int run_lines(int argc, char **argv, int overlay)
             cli_error("%s: cannot write the result to standard output: %s", argv[0],
                       strerror(errno));
             rc = CLI_FAIL;
-        } else if (overlay && overlay_write(a.out, in.px, in.width, in.height, in.width, &res,
-                                            err, sizeof err) != 0) {
+        } else if (overlay && overlay_write(a.out, in.px, in.width, in.height, in.width, &res, err,
+                                            sizeof err) != 0) {
             cli_error("%s", err);
             rc = CLI_FAIL;
         }
