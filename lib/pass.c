@@ -203,7 +203,6 @@ symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *en
     uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
     uint32_t n = 0u;
     sl_tracer *t;
-    const sl_segindex *ix;
     symline_status st;
     if (row_start == NULL) {
         return SYMLINE_ERR_BUFFER;
@@ -215,10 +214,11 @@ symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *en
     /* The collection's rings are free again: the tracer's state and the grid
      * of earlier segments take their place. */
     t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
-    ix = t != NULL ? index_earlier(d, p, rest, end, n) : NULL;
-    if (ix == NULL) {
+    if (t == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    trace(d, p, row_start, n, t, ix);
+    /* A grid that does not fit (not reached: the workspace size was
+     * checked) is NULL: every earlier segment is then tested. */
+    trace(d, p, row_start, n, t, index_earlier(d, p, rest, end, n));
     return SYMLINE_OK;
 }
