@@ -46,24 +46,27 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     int64_t lo = 0, hi = 0;
     uint64_t g = ~(uint64_t)0;
     uint32_t i;
-    /* Each end on the other piece's line; the gap: the closest pair of ends. */
+    /* The gap first: the closest pair of ends (no square root, and most
+     * pairs of a cluttered frame fail it); then each end on the other
+     * piece's line. Both must hold, so the order changes only the cost. */
     for (i = 0; i < 4u; i++) {
-        const symline_segment *o = i < 2u ? b : a;
         int32_t x, y, ox, oy;
         uint64_t t;
-        end_of(a, b, i, &x, &y);
-        if (sl_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
-            return false;
-        }
-        end_of(a, b, (i ^ 2u) & 2u, &ox, &oy);
-        t = dist2(x, y, ox, oy);
-        g = t < g ? t : g;
-        end_of(a, b, ((i ^ 2u) & 2u) | 1u, &ox, &oy);
+        end_of(a, b, i >> 1, &x, &y);
+        end_of(a, b, 2u | (i & 1u), &ox, &oy);
         t = dist2(x, y, ox, oy);
         g = t < g ? t : g;
     }
     if (g > gap2) {
         return false;
+    }
+    for (i = 0; i < 4u; i++) {
+        const symline_segment *o = i < 2u ? b : a;
+        int32_t x, y;
+        end_of(a, b, i, &x, &y);
+        if (sl_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
+            return false;
+        }
     }
     /* New ends: the extreme end points along the longer piece. */
     for (i = 0; i < 4u; i++) {
