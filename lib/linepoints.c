@@ -125,7 +125,7 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 /*
  * Extrema of one row with the plateau limit: map gets 0, A or S per pixel.
  * First a branch-free pass over strict extrema (the common case, vectorised),
- * then plateaus (runs of equal E), if the row has any, by the SPEC §3 run rule.
+ * then plateaus (runs of equal E), if the row has any, by the run rule of docs/algorithm.md.
  */
 static void row_extrema(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
 {

@@ -1,7 +1,7 @@
 #!/bin/sh
 # The main job on a bundled real frame: builds symline (installing what it needs
 # when missing), detects the field lines, and writes
-#   out/lines.json     the segments (SPEC §7 JSON, as printed by `symline lines`)
+#   out/lines.json     the segments (JSON of docs/format.md, as printed by `symline lines`)
 #   out/overlay.png    lines drawn solid, curves dotted, over the frame
 #   out/symmetry.png   the 8-bit symmetry image (horizontal axis, radius 3)
 #   out/extrema.png    its extrema map (255 S points, 128 A points)

@@ -1,5 +1,5 @@
 /*
- * symline — the line detector: from a gray frame to field-line segments (SPEC §4).
+ * symline — the line detector: from a gray frame to field-line segments (docs/detector.md).
  *
  * One call, caller-owned memory, no allocation, no floating point:
  *

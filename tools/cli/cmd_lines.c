@@ -26,7 +26,7 @@ static void lines_usage(FILE *f, const char *cmd)
     fprintf(f,
             "  IN                  binary PGM or PNG (colour is converted to luma)\n"
             "%s"
-            "Prints JSON (SPEC section 7) on stdout%s.\n"
+            "Prints JSON on stdout%s (keys: docs/format.md).\n"
             "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n",
             ov ? "  OUT.png             the frame in colour with lines (solid red) and curves\n"
                  "                      (dotted cyan); PPM unless the name ends in .png\n"

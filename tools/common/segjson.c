@@ -1,5 +1,5 @@
 /*
- * SPEC §7 JSON writer for detected segments.
+ * The JSON writer for detected segments (docs/format.md).
  */
 #include "segjson.h"
 

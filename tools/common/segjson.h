@@ -1,5 +1,5 @@
 /*
- * The JSON form of a detection (SPEC §7), shared by the host CLI and the
+ * The JSON form of a detection (docs/format.md), shared by the host CLI and the
  * capture application. Host-only code.
  */
 #ifndef SYMLINE_TOOLS_SEGJSON_H

@@ -6,7 +6,7 @@
 #   - the real frames DATA_DIR/field: F1 against a line mask where one exists, and
 #     stability F1 against the same frame with brightness x0.5, +40 and -40.
 # Every set is run with each filter side by side (default: the paper's A1-S filter
-# and the shipped default). Scoring: SPEC section 7, see docs/evaluation.md.
+# and the shipped default). Scoring: see docs/evaluation.md.
 #
 # usage: tools/eval/evaluate.sh DATA_DIR [options]
 #   --build DIR      build directory (default: REPO/build; configured and built when needed)
@@ -194,7 +194,7 @@ kv() { printf '%s\n' "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"; }
 echo "# symline line detection: evaluation"
 echo
 echo "Data: $DATA; rendered sets: seed $SEED, $COUNT images per set and size; build: $BIN"
-echo "Columns per filter: mean per-image F1, precision P, recall R (SPEC 7: samples every"
+echo "Columns per filter: mean per-image F1, precision P, recall R (samples every"
 echo "0.5 px, tolerance max(2, 3*width/640) px); classification of the detected pieces"
 echo "matched to ground truth: line = straight ground truth reported as kind line, curve ="
 echo "circle ground truth reported as kind curve, each as share of pieces / share weighted"

@@ -1,5 +1,6 @@
 /*
- * symline-ref — a deliberately plain reference of SPEC §2–3, written straight
+ * symline-ref — a deliberately plain reference of the operator and its extrema
+ * (docs/algorithm.md), written straight
  * from the formulas for clarity, never for speed. The golden files under
  * tests/golden/ are produced by it, and the tests compare the optimised core
  * against it bit for bit.
