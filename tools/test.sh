@@ -9,9 +9,14 @@
 # when an earlier one failed; the exit status is non-zero if any failed.
 #   tools/test.sh          everything
 #   tools/test.sh --host   step 1 only (fast)
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -u
 cd "$(dirname "$0")/.."
 mode=${1:-all}
+case $mode in
+all | --host) ;;
+*) echo "tools/test.sh: unknown argument '$mode' (tools/test.sh [--host])" >&2; exit 2 ;;
+esac
 jobs=$(nproc 2>/dev/null || echo 2)
 failed=""
 

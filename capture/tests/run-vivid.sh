@@ -8,6 +8,7 @@
 #   --cache DIR  downloads, extracted kernel and guest build (default:
 #                $XDG_CACHE_HOME/symline-capture or ~/.cache/symline-capture)
 #   --log FILE   keep the serial log there (default: CACHE/vivid-serial.log)
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 
 here=$(cd "$(dirname "$0")" && pwd)

@@ -3,6 +3,7 @@
 # compiler produced (undefined symbols of the built library, and a build of
 # lib/ with the FPU registers forbidden, which fails on any float arithmetic).
 # Usage: check_core_rules.sh SOURCE_DIR LIBSYMLINE_A CC
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -u
 src=$1 lib=$2 cc=$3
 fail=0 pass=0

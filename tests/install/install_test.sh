@@ -6,6 +6,7 @@
 # Usage: install_test.sh BUILD_DIR SOURCE_DIR CC [CFLAGS]
 # CFLAGS are the flags the library was built with (e.g. sanitizers), which the
 # consumers need too.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 build=$1 src=$2 cc=$3 cflags=${4:-}
 tmp=$(mktemp -d)

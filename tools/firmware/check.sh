@@ -19,6 +19,7 @@
 #
 #   tools/firmware/check.sh            build dirs ./build-fw-*
 #   SYMLINE_FW_BUILD=/tmp/fw tools/firmware/check.sh   build dirs /tmp/fw-*
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -u
 cd "$(dirname "$0")/../.." || exit 2
 root=$(pwd)

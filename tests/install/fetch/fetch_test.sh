@@ -4,6 +4,7 @@
 # from this checkout (no network), then runs it. Its configure step fails
 # when the embedded symline defines more than the library target.
 # Usage: fetch_test.sh SOURCE_DIR [CFLAGS]
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 src=$1 cflags=${2:-}
 tmp=$(mktemp -d)
