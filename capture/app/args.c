@@ -4,6 +4,7 @@
 #include "args.h"
 
 #include "detopts.h"
+#include "v4l2_list.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,22 +25,29 @@ static void usage(FILE *f)
     fputs("usage: symline-capture SOURCE [options]\n"
           "\n"
           "Source (one):\n"
-          "  --device /dev/videoN   V4L2 capture device\n"
+          "  --device /dev/videoN   V4L2 capture device (--device N means /dev/videoN)\n"
+          "  --list-devices         print the V4L2 devices and the formats symline reads, then exit\n"
+          "  --list-formats         with --device: print its formats, sizes and frame rates, then exit\n"
 #ifdef SYMLINE_HAVE_LIBCAMERA
           "  --camera ID|INDEX      libcamera camera, by id or by index (0 = first)\n"
           "  --list-cameras         print the cameras libcamera sees, then exit\n"
 #endif
-          "  --replay PATH          folder of .pgm/.png frames (name order), one image, a\n"
-          "                         .y4m stream, or a text file listing one image path per line\n"
+          "  --replay PATH          folder of .pgm/.png frames (name order; *.mask.* files are\n"
+          "                         skipped), one image, a .y4m stream, or a text file listing\n"
+          "                         one image path per line\n"
           "\n"
           "Capture:\n"
           "  --frames N             stop after N frames (0 = until stopped; default)\n"
           "  --width W --height H   requested frame size (the granted size is reported)\n"
           "  --format FOURCC        GREY NV12 NV21 YU12 YV12 NV16 NV61 422P YUYV YVYU UYVY VYUY,\n"
           "                         multi-planar NM12 NM21 YM12 YM21 NM16 NM61 YM16,\n"
-          "                         packed RGB RGB3 BGR3 XR24 AR24 XB24 AB24 (converted to luma)\n"
+          "                         packed RGB RGB3 BGR3 XR24 AR24 XB24 AB24 (converted to luma),\n"
+          "                         8-bit Bayer BA81 GBRG GRBG RGGB (converted to luma),\n"
+          "                         Motion-JPEG MJPG JPEG (decoded to luma)\n"
           "                         (default: the most direct one the device offers)\n"
-          "  --fps F[/D]            requested frame rate (replay: delivery pace)\n"
+          "  --fps F[/D]            requested frame rate of the camera\n"
+          "  --rate F[/D]|max       replay pace in frames per second; default: a .y4m's own\n"
+          "                         frame rate, image files as fast as they are read\n"
           "  --buffers N            mmap buffers / request queue depth, 2..32 (default 4)\n"
           "  --all-frames           process every frame in order; default is freshest-frame\n"
           "                         mode: when several frames are ready, the newest is\n"
@@ -104,8 +112,15 @@ int app_parse_args(int argc, char **argv, app_options *o)
             usage(stdout);
             return 1;
         } else if (strcmp(a, "--device") == 0 && next) {
-            o->device = next;
+            o->device = v4l2_device_path(next, o->device_buf, sizeof o->device_buf);
+            if (o->device == NULL) {
+                o->device = next;
+            }
             i++;
+        } else if (strcmp(a, "--list-devices") == 0) {
+            o->list_devices = 1;
+        } else if (strcmp(a, "--list-formats") == 0) {
+            o->list_formats = 1;
         } else if (strcmp(a, "--camera") == 0 && next) {
             o->camera = next;
             i++;
@@ -132,6 +147,13 @@ int app_parse_args(int argc, char **argv, app_options *o)
         } else if (strcmp(a, "--fps") == 0) {
             if (parse_fps(next, &o->fps_num, &o->fps_den) != 0) {
                 return usage_error("--fps needs a rate F or F/D%s", "");
+            }
+            i++;
+        } else if (strcmp(a, "--rate") == 0) {
+            if (next != NULL && strcmp(next, "max") == 0) {
+                o->rate_max = 1;
+            } else if (parse_fps(next, &o->rate_num, &o->rate_den) != 0) {
+                return usage_error("--rate needs a rate F or F/D, or 'max'%s", "");
             }
             i++;
         } else if (strcmp(a, "--buffers") == 0) {
@@ -182,6 +204,12 @@ int app_parse_args(int argc, char **argv, app_options *o)
     }
     detopts_finish(&det);
     o->cfg = det.cfg;
+    if (o->list_devices) {
+        return 0;
+    }
+    if (o->list_formats) {
+        return o->device != NULL ? 0 : usage_error("--list-formats needs --device%s", "");
+    }
     if (o->list_cameras) {
 #ifndef SYMLINE_HAVE_LIBCAMERA
         return usage_error("--list-cameras: this build has no libcamera support%s", "");
@@ -192,6 +220,9 @@ int app_parse_args(int argc, char **argv, app_options *o)
     nsrc = (o->device != NULL) + (o->camera != NULL) + (o->replay != NULL);
     if (nsrc != 1) {
         return usage_error("give exactly one of --device, --camera, --replay%s", "");
+    }
+    if ((o->rate_num != 0 || o->rate_max) && o->replay == NULL) {
+        return usage_error("--rate paces a replay; a camera's rate is --fps%s", "");
     }
 #ifndef SYMLINE_HAVE_LIBCAMERA
     if (o->camera != NULL) {

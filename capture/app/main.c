@@ -18,6 +18,7 @@
 #include "segjson.h"
 #include "source.h"
 #include "symline/detect.h"
+#include "v4l2_list.h"
 #include "v4l2_source.h"
 #ifdef SYMLINE_HAVE_LIBCAMERA
 #include "libcamera_source.h"
@@ -68,8 +69,10 @@ static capsrc *open_source(const app_options *o, char *err, size_t errlen)
         replay_options r;
         memset(&r, 0, sizeof r);
         r.path = o->replay;
-        r.fps_num = o->fps_num;
-        r.fps_den = o->fps_den;
+        /* --rate sets the pace; --fps is accepted as before when --rate is absent. */
+        r.fps_num = o->rate_num ? o->rate_num : o->fps_num;
+        r.fps_den = o->rate_num ? o->rate_den : o->fps_den;
+        r.unpaced = o->rate_max;
         r.loop = o->loop;
         return replay_source_open(&r, err, errlen);
     }
@@ -144,6 +147,24 @@ typedef struct line_writer {
     FILE *mem;
 } line_writer;
 
+/* A JSON string: quotes, backslashes and control characters escaped. */
+static void put_json_string(FILE *out, const char *s)
+{
+    fputc('"', out);
+    for (; *s != '\0'; s++) {
+        const unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') {
+            fputc('\\', out);
+            fputc(c, out);
+        } else if (c < 0x20u) {
+            fprintf(out, "\\u%04x", c);
+        } else {
+            fputc(c, out);
+        }
+    }
+    fputc('"', out);
+}
+
 static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d, double latency_ms,
                       double queue_ms, double detect_ms)
 {
@@ -173,10 +194,16 @@ static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d,
         n--;
     }
     lw->len = n;
-    printf("{\"frame\": %llu, \"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, \"latency_ms\": %.3f, "
+    printf("{\"frame\": %llu, ", (unsigned long long)f->number);
+    if (f->file != NULL) {
+        fputs("\"file\": ", stdout);
+        put_json_string(stdout, f->file);
+        fputs(", ", stdout);
+    }
+    printf("\"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, \"latency_ms\": %.3f, "
            "\"stages_ms\": {\"queue\": %.3f, \"convert\": %.3f, \"detect\": %.3f}, ",
-           (unsigned long long)f->number, f->sequence, (long long)f->timestamp_ns, f->skipped, latency_ms,
-           queue_ms, (double)f->convert_ns / 1e6, detect_ms);
+           f->sequence, (long long)f->timestamp_ns, f->skipped, latency_ms, queue_ms,
+           (double)f->convert_ns / 1e6, detect_ms);
     fwrite(lw->buf + 1, 1, lw->len - 1, stdout);
     fputc('\n', stdout);
     return fflush(stdout) == 0 ? 0 : -1;
@@ -267,6 +294,20 @@ int main(int argc, char **argv)
     rc = app_parse_args(argc, argv, &o);
     if (rc != 0) {
         return rc == 1 ? APP_EXIT_OK : rc;
+    }
+    if (o.list_devices) {
+        rc = v4l2_list_devices(stdout, "/dev", err, sizeof err);
+        if (rc < 0) {
+            fprintf(stderr, "symline-capture: %s\n", err);
+        }
+        return rc < 0 ? APP_EXIT_FAIL : APP_EXIT_OK;
+    }
+    if (o.list_formats) {
+        if (v4l2_list_formats(stdout, o.device, err, sizeof err) != 0) {
+            fprintf(stderr, "symline-capture: %s\n", err);
+            return APP_EXIT_FAIL;
+        }
+        return APP_EXIT_OK;
     }
 #ifdef SYMLINE_HAVE_LIBCAMERA
     if (o.list_cameras) {
@@ -361,10 +402,15 @@ int main(int argc, char **argv)
             break;
         }
         capsrc_release(src);
+        errno = 0;
         if (emit_frame(&lw, &frame, &det, lat_ms,
                        (double)(t_got - frame.timestamp_ns - frame.convert_ns) / 1e6, det_ms) != 0) {
-            if (!stop_requested) {
-                fprintf(stderr, "symline-capture: error: writing the frame record failed\n");
+            if (errno == EPIPE) {
+                /* The reader went away (`| head`): a normal end, not an error. */
+                stop_reason = "output closed";
+            } else if (!stop_requested) {
+                fprintf(stderr, "symline-capture: error: writing the frame record failed: %s\n",
+                        strerror(errno));
                 stop_reason = "output error";
                 status = APP_EXIT_FAIL;
             }
