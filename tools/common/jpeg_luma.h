@@ -2,11 +2,12 @@
 /*
  * The luma of a JPEG image in memory (a Motion-JPEG camera frame or a .jpg
  * file), decoded with libjpeg-turbo straight to 8-bit gray: for YCbCr JPEGs
- * the decoder then skips the chroma's inverse DCT and upsampling. Host code;
- * without libturbojpeg at build time every call fails with a message saying so.
+ * the decoder then skips the chroma's inverse DCT and upsampling. Host-only
+ * code, used by imgio and the V4L2 source; without libturbojpeg at build time
+ * every call fails with a message saying so.
  */
-#ifndef SYMLINE_CAPTURE_JPEG_LUMA_H
-#define SYMLINE_CAPTURE_JPEG_LUMA_H
+#ifndef SYMLINE_HOST_JPEG_LUMA_H
+#define SYMLINE_HOST_JPEG_LUMA_H
 
 #include <stddef.h>
 #include <stdint.h>
