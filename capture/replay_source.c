@@ -40,8 +40,8 @@ static int has_suffix(const char *name, const char *suffix)
 
 static int has_image_suffix(const char *name)
 {
-    size_t n = strlen(name);
-    return (n > 4 && (strcasecmp(name + n - 4, ".pgm") == 0 || strcasecmp(name + n - 4, ".png") == 0));
+    return has_suffix(name, ".pgm") || has_suffix(name, ".png") || has_suffix(name, ".jpg") ||
+           has_suffix(name, ".jpeg");
 }
 
 /* NAME.mask.pgm / .png: an evaluation's line mask next to its frame, not a frame. */
@@ -320,7 +320,7 @@ capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen)
         return NULL;
     }
     if (r->y4m == NULL && r->count == 0) {
-        snprintf(err, errlen, "%s: no .pgm or .png frames found", opt->path);
+        snprintf(err, errlen, "%s: no .pgm, .png or .jpg frames found", opt->path);
         replay_free(r);
         return NULL;
     }

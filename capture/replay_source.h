@@ -8,7 +8,7 @@
 #include "source.h"
 
 typedef struct replay_options {
-    const char *path; /* a directory (its *.pgm / *.png files in name order, without
+    const char *path; /* a directory (its *.pgm / *.png / *.jpg files in name order, without
                          the evaluation's line masks *.mask.pgm / *.mask.png), one image
                          file, a YUV4MPEG2 stream (*.y4m, luma of each frame), or a text
                          file listing one image path per line (relative paths are taken

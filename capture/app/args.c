@@ -32,7 +32,7 @@ static void usage(FILE *f)
           "  --camera ID|INDEX      libcamera camera, by id or by index (0 = first)\n"
           "  --list-cameras         print the cameras libcamera sees, then exit\n"
 #endif
-          "  --replay PATH          folder of .pgm/.png frames (name order; *.mask.* files are\n"
+          "  --replay PATH          folder of .pgm/.png/.jpg frames (name order; *.mask.* are\n"
           "                         skipped), one image, a .y4m stream, or a text file listing\n"
           "                         one image path per line\n"
           "\n"

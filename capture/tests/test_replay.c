@@ -204,7 +204,7 @@ static void test_errors(void **state)
     assert_int_equal(mkdir(path, 0700), 0);
     err[0] = '\0';
     assert_null(replay_source_open(&o, err, sizeof err));
-    assert_non_null(strstr(err, "no .pgm or .png frames"));
+    assert_non_null(strstr(err, "no .pgm, .png or .jpg frames"));
 
     write_text("empty.txt", "# nothing\n");
     path_in(path, sizeof path, "empty.txt");
