@@ -147,24 +147,6 @@ typedef struct line_writer {
     FILE *mem;
 } line_writer;
 
-/* A JSON string: quotes, backslashes and control characters escaped. */
-static void put_json_string(FILE *out, const char *s)
-{
-    fputc('"', out);
-    for (; *s != '\0'; s++) {
-        const unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\') {
-            fputc('\\', out);
-            fputc(c, out);
-        } else if (c < 0x20u) {
-            fprintf(out, "\\u%04x", c);
-        } else {
-            fputc(c, out);
-        }
-    }
-    fputc('"', out);
-}
-
 static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d, double latency_ms,
                       double queue_ms, double detect_ms)
 {
@@ -197,7 +179,7 @@ static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d,
     printf("{\"frame\": %llu, ", (unsigned long long)f->number);
     if (f->file != NULL) {
         fputs("\"file\": ", stdout);
-        put_json_string(stdout, f->file);
+        segjson_put_string(stdout, f->file);
         fputs(", ", stdout);
     }
     printf("\"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, \"latency_ms\": %.3f, "

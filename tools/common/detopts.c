@@ -68,10 +68,9 @@ void detopts_init(detopts *d)
     d->seen = 0;
 }
 
-int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t errlen)
+/* One detector option by name ("--radius") and value; 1 done, 0 not one, -1 bad value. */
+static int apply_named(detopts *d, const char *name, const char *value, char *err, size_t errlen)
 {
-    const char *name = argv[*i];
-    const char *value = (*i + 1 < argc) ? argv[*i + 1] : NULL;
     int k;
     if (strcmp(name, "--axis") == 0) {
         if (value != NULL && strcmp(value, "horizontal") == 0) {
@@ -111,8 +110,45 @@ int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t e
     } else {
         return 0;
     }
-    (*i)++;
     return 1;
+}
+
+int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t errlen)
+{
+    const int rc = apply_named(d, argv[*i], (*i + 1 < argc) ? argv[*i + 1] : NULL, err, errlen);
+    if (rc == 1) {
+        (*i)++;
+    }
+    return rc;
+}
+
+/* The option names getopt_long sees, without "--": the two word options, then the numeric table. */
+static const char *long_name(size_t k)
+{
+    static const char *const words[] = {"--axis", "--filter"};
+    return (k < 2u ? words[k] : num_opts[k - 2u].name) + 2;
+}
+
+size_t detopts_longopts(struct option *out, size_t cap)
+{
+    size_t k, n = 0;
+    for (k = 0; k < 2u + NUM_OPTS && n < cap; k++, n++) {
+        out[n].name = long_name(k);
+        out[n].has_arg = required_argument;
+        out[n].flag = NULL;
+        out[n].val = DETOPTS_VAL + (int)k;
+    }
+    return n;
+}
+
+int detopts_apply(detopts *d, int code, const char *arg, char *err, size_t errlen)
+{
+    char name[32];
+    if (code < DETOPTS_VAL || code >= DETOPTS_VAL + 2 + (int)NUM_OPTS) {
+        return 0;
+    }
+    snprintf(name, sizeof name, "--%s", long_name((size_t)(code - DETOPTS_VAL)));
+    return apply_named(d, name, arg, err, errlen) == 1 ? 1 : -1;
 }
 
 void detopts_finish(detopts *d)

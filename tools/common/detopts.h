@@ -6,6 +6,7 @@
 #ifndef SYMLINE_TOOLS_DETOPTS_H
 #define SYMLINE_TOOLS_DETOPTS_H
 
+#include <getopt.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -32,6 +33,20 @@ void detopts_init(detopts *d);
  * in err).
  */
 int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t errlen);
+
+/*
+ * The same options for getopt_long: appends one `struct option` per detector
+ * option to out (at most cap; each takes a value, val = DETOPTS_VAL + k) and
+ * returns how many it wrote.
+ */
+#define DETOPTS_VAL 0x4000
+size_t detopts_longopts(struct option *out, size_t cap);
+
+/*
+ * Applies what getopt_long returned (code, optarg). Returns 1 when code was a
+ * detector option, 0 when it was not, -1 on a bad value (a message in err).
+ */
+int detopts_apply(detopts *d, int code, const char *arg, char *err, size_t errlen);
 
 /* After parsing: --filter paper implies --illumination 100 --adaptive 0 unless given. */
 void detopts_finish(detopts *d);

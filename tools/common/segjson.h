@@ -22,4 +22,10 @@
  */
 int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r);
 
+/* The same object with "file": NAME as its first key (when file is not NULL). */
+int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t height, const symline_result *r);
+
+/* s as a JSON string: quoted, with quotes, backslashes and control characters escaped. */
+void segjson_put_string(FILE *f, const char *s);
+
 #endif
