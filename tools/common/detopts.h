@@ -27,15 +27,7 @@ int detopts_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out);
 void detopts_init(detopts *d);
 
 /*
- * Tries argv[*i] (and its value argv[*i+1]) as a detector option.
- * Returns 1 when it was one (then *i is advanced to its value), 0 when
- * argv[*i] is not a detector option, -1 on a missing or bad value (a message
- * in err).
- */
-int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t errlen);
-
-/*
- * The same options for getopt_long: appends one `struct option` per detector
+ * The detector options for getopt_long: appends one `struct option` per detector
  * option to out (at most cap; each takes a value, val = DETOPTS_VAL + k) and
  * returns how many it wrote.
  */
