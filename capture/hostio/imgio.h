@@ -1,11 +1,11 @@
 /*
- * Image files for the host tools: binary PGM and PPM always, PNG when built
- * with libpng, JPEG input when built with libturbojpeg. The path "-" reads
- * stdin or writes stdout. Host-only code (allocates, does I/O); the core
- * library never includes it.
+ * Image files for the host programs (tools/, capture/): binary PGM and PPM
+ * always, PNG when built with libpng, JPEG input when built with libturbojpeg.
+ * The path "-" reads stdin or writes stdout. Host-only code (allocates, does
+ * I/O); the core library never includes it.
  */
-#ifndef SYMLINE_TOOLS_IMGIO_H
-#define SYMLINE_TOOLS_IMGIO_H
+#ifndef SYMLINE_HOSTIO_IMGIO_H
+#define SYMLINE_HOSTIO_IMGIO_H
 
 #include <stddef.h>
 #include <stdint.h>
