@@ -39,27 +39,83 @@ void symline_config_default(symline_config *cfg)
 #define SL_MAX_DETECT_RADIUS 32u
 #define SL_MAX_LEVELS 5u
 
-static symline_status check_config(const symline_config *c)
+/* The first field out of its range (its name, as in symline_config), or NULL. */
+static const char *bad_field(const symline_config *c)
 {
     if (c->axes != SYMLINE_AXES_HORIZONTAL && c->axes != SYMLINE_AXES_VERTICAL &&
         c->axes != SYMLINE_AXES_BOTH) {
-        return SYMLINE_ERR_CONFIG;
+        return "axes";
     }
-    if (c->radius < 1u || c->radius > SL_MAX_DETECT_RADIUS || c->levels > SL_MAX_LEVELS) {
-        return SYMLINE_ERR_CONFIG;
+    if (c->radius < 1u || c->radius > SL_MAX_DETECT_RADIUS) {
+        return "radius";
+    }
+    if (c->levels > SL_MAX_LEVELS) {
+        return "levels";
     }
     if (c->filter != SYMLINE_FILTER_CONTRAST && c->filter != SYMLINE_FILTER_PAPER) {
-        return SYMLINE_ERR_CONFIG;
+        return "filter";
     }
-    if (c->illumination > 255u || c->adaptive > 1u || c->bright_sigma10 < -100 ||
-        c->bright_sigma10 > 100 || c->ridge_sigma10 > 100u || c->side_sigma10 < -100 ||
-        c->side_sigma10 > 100 || c->a_distance > 32u || c->contrast_pct > 100u ||
-        c->contrast_min > 255u || c->contrast_asym_pct > 1000u || c->min_length > SYMLINE_MAX_DIM ||
-        c->curve_dev_q8 > (SYMLINE_MAX_DIM << 8) || c->curve_bend_q8 > (SYMLINE_MAX_DIM << 8) ||
-        c->merge_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
-        return SYMLINE_ERR_CONFIG;
+    if (c->illumination > 255u) {
+        return "illumination";
     }
-    return SYMLINE_OK;
+    if (c->adaptive > 1u) {
+        return "adaptive";
+    }
+    if (c->bright_sigma10 < -100 || c->bright_sigma10 > 100) {
+        return "bright_sigma10";
+    }
+    if (c->ridge_sigma10 > 100u) {
+        return "ridge_sigma10";
+    }
+    if (c->side_sigma10 < -100 || c->side_sigma10 > 100) {
+        return "side_sigma10";
+    }
+    if (c->a_distance > 32u) {
+        return "a_distance";
+    }
+    if (c->contrast_pct > 100u) {
+        return "contrast_pct";
+    }
+    if (c->contrast_min > 255u) {
+        return "contrast_min";
+    }
+    if (c->contrast_asym_pct > 1000u) {
+        return "contrast_asym_pct";
+    }
+    if (c->min_length > SYMLINE_MAX_DIM) {
+        return "min_length";
+    }
+    if (c->curve_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
+        return "curve_dev_q8";
+    }
+    if (c->curve_bend_q8 > (SYMLINE_MAX_DIM << 8)) {
+        return "curve_bend_q8";
+    }
+    if (c->merge_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
+        return "merge_dev_q8";
+    }
+    return NULL;
+}
+
+static symline_status check_config(const symline_config *c)
+{
+    return bad_field(c) == NULL ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
+}
+
+symline_status symline_config_check(const symline_config *cfg, const char **field)
+{
+    const char *bad;
+    if (field != NULL) {
+        *field = NULL;
+    }
+    if (cfg == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    bad = bad_field(cfg);
+    if (field != NULL) {
+        *field = bad;
+    }
+    return bad == NULL ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
 }
 
 /* Number of scales: as configured, or enough that the coarsest one reaches
@@ -166,6 +222,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.nseg = 0u;
     d.prev_seg = 0u;
     d.npts = 0u;
+    d.need = 0u;
     d.truncated = 0u;
     d.stats.mean = 0u;
     d.stats.sigma_q4 = 0u;
@@ -181,5 +238,6 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     }
     sl_curve_join(out, cfg->curve_bend_q8 != 0u);
     out->truncated = d.truncated;
+    out->points_needed = d.need;
     return SYMLINE_OK;
 }

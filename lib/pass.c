@@ -20,6 +20,11 @@
 #define SL_BEND_MIN_PX 16u
 #define SL_BEND_MAX_LEVEL 1u
 
+/* The fixed part of SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) holds, besides
+ * alignment and the collection's bookkeeping (linepoints.c), a pass's state
+ * and the tracer's: they must stay within these budgets on every target. */
+typedef char sl_pass_state_fits_ws_budget[(sizeof(sl_pass) <= 96u && sizeof(sl_tracer) <= 64u) ? 1 : -1];
+
 void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
                    uint32_t width, uint32_t height)
 {
@@ -109,7 +114,7 @@ static void chain(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
  * state, in the pass workspace. Apart from sl_pass_run() so that its frame
  * and the line point collection's are never on the stack together. */
 SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint32_t n,
-                              sl_tracer *t)
+                              uint32_t dropped, sl_tracer *t)
 {
     symline_result *r = d->r;
     const uint32_t base = d->npts;
@@ -125,6 +130,19 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     }
     if (cut || (tail >= r->point_cap && n > 0u)) {
         d->truncated = 1u;
+    }
+    /* Storage this pass needed: the raster list and the chains after the kept
+     * points, plus one free entry that shows the tracer nothing is left. When
+     * it ran out, at most every line point is in a chain: base + 2 * all. */
+    {
+        const uint64_t all = (uint64_t)n + dropped;
+        uint64_t need = n == 0u ? base : (uint64_t)tail + 1u;
+        if (dropped != 0u || cut || (tail >= r->point_cap && n > 0u)) {
+            need = (uint64_t)base + 2u * all + 1u;
+        }
+        if (need > d->need) {
+            d->need = need > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)need;
+        }
     }
     /* Keep only the points the new segments use, right after the earlier ones. */
     w = base;
@@ -146,11 +164,14 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
  * d->npts); returns its length. Apart from sl_pass_run() so that the
  * collection's call and the tracing's are never on the stack together. */
 SL_NOINLINE static uint32_t collect(sl_run *d, const sl_pass *p, uint8_t *ws,
-                                    const uint8_t *end, uint32_t *row_start)
+                                    const uint8_t *end, uint32_t *row_start, uint32_t *dropped)
 {
     uint32_t n = 0u;
     (void)sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
-                     d->r->point_cap - d->npts, &n, row_start, &d->truncated);
+                     d->r->point_cap - d->npts, &n, row_start, dropped);
+    if (*dropped != 0u) {
+        d->truncated = 1u;
+    }
     return n;
 }
 
@@ -160,11 +181,12 @@ symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *en
     uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
     /* The collection's rings are free again once it returns: the tracer's
      * state takes their place. */
-    const uint32_t n = collect(d, p, rest, end, row_start);
+    uint32_t dropped = 0u;
+    const uint32_t n = collect(d, p, rest, end, row_start, &dropped);
     sl_tracer *t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
     if (row_start == NULL || t == NULL) {
         return SYMLINE_ERR_BUFFER; /* not reached: the workspace size was checked */
     }
-    trace(d, p, row_start, n, t);
+    trace(d, p, row_start, n, dropped, t);
     return SYMLINE_OK;
 }

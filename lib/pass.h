@@ -21,6 +21,7 @@ typedef struct sl_run {
     uint32_t nseg;            /* segments so far */
     uint32_t prev_seg;        /* segments of earlier passes: [0, prev_seg) */
     uint32_t npts;            /* points kept so far: [0, npts) */
+    uint32_t need;            /* point storage the passes so far needed (symline_result.points_needed) */
     sl_frame_stats stats;     /* for the adaptive thresholds (cfg->adaptive) */
     uint8_t truncated;
 } sl_run;

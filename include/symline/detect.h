@@ -9,7 +9,7 @@
  *     ... ws = a static or stack buffer of `need` bytes ...
  *     symline_segment segs[64];
  *     symline_point pts[8192];
- *     symline_result res = { segs, 64, 0, pts, 8192, 0, 0 };
+ *     symline_result res = { segs, 64, 0, pts, 8192, 0, 0, 0 };
  *     symline_status st = symline_detect(&img, &cfg, ws, need, &res);
  *
  * Pipeline, run once per axis and scale ("pass"), fine scale first:
@@ -127,6 +127,15 @@ typedef struct symline_config {
 /* Fills *cfg with the defaults documented above (no-op on NULL). */
 void symline_config_default(symline_config *cfg);
 
+/*
+ * The range check symline_detect() makes, with the culprit named: returns
+ * SYMLINE_OK, SYMLINE_ERR_NULL (cfg NULL) or SYMLINE_ERR_CONFIG, and when
+ * field is not NULL sets *field to the name of the first field out of its
+ * range, spelled as in symline_config ("radius", "side_sigma10", ...; a
+ * static string), or to NULL when there is none.
+ */
+symline_status symline_config_check(const symline_config *cfg, const char **field);
+
 /* One traced point, in full-resolution pixels. */
 typedef struct symline_point {
     uint16_t x;
@@ -147,7 +156,7 @@ typedef struct symline_segment {
 
 /*
  * Output storage, owned by the caller. Set the four array fields before the
- * call; symline_detect() writes the counts and the flag.
+ * call; symline_detect() writes the counts, the flag and points_needed.
  *
  * The point storage also serves as scratch for the raster list of line
  * points of the pass being traced: give it room for about twice the line
@@ -163,6 +172,12 @@ typedef struct symline_result {
     uint32_t point_cap;
     uint32_t point_count; /* points referenced by the segments, [0, point_count) */
     uint8_t truncated;    /* 1 when segments or points did not fit */
+    uint32_t points_needed; /* the point_cap this frame needed: when truncated is 0,
+                              exactly the smallest capacity that gives this same
+                              result (size a static array from the largest value
+                              over representative frames); when points ran out,
+                              at least enough for the pass that ran out (more
+                              than point_cap; repeat with it until truncated is 0) */
 } symline_result;
 
 /*
@@ -174,11 +189,44 @@ typedef struct symline_result {
 size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const symline_config *cfg);
 
 /*
+ * The same as a constant expression, for static buffers:
+ *
+ *     static uint8_t ws[SYMLINE_DETECT_WORKSPACE_SIZE(320, 240, 3, 0, 0)];
+ *
+ * At least symline_detect_workspace_size() for a width x height frame and any
+ * configuration with this radius, A distance and levels (the axes and the
+ * other fields do not raise it), on every target; a few hundred bytes more
+ * than it (the fixed part covers the private state of a pass), a little more
+ * when only the vertical axis runs. a_distance is the A point distance the
+ * filter uses: 0 with the contrast filter (the default); with the paper
+ * filter its config.a_distance, or the radius when that is 0. levels as in
+ * the config (0 = auto). Arguments are evaluated more than once.
+ */
+#define SYMLINE_DETECT_WORKSPACE_SIZE(width, height, radius, a_distance, levels)                    \
+    ((size_t)SYMLINE_DETECT_WS_FIXED + (size_t)4u * ((size_t)(height) + 1u) +                      \
+     (size_t)8u * (2u * (size_t)(radius) + 1u) +                                                    \
+     SYMLINE_DETECT_WS_MAX_((size_t)(width) * (18u + 2u * (size_t)(a_distance) + (size_t)(radius)), \
+                            SYMLINE_DETECT_WS_COARSE_(width, height, radius, a_distance, levels)))
+/* The coarser scales (2x downsampled and beyond), when the configuration and
+ * the frame have them (detect.c: the number of scales). */
+#define SYMLINE_DETECT_WS_COARSE_(width, height, radius, a_distance, levels)                      \
+    (((levels) == 0u ? 2u * (size_t)(radius) + 1u < (size_t)(width) / 16u : (levels) >= 2u) &&   \
+             (size_t)(width) / 2u >= 2u * (size_t)(radius) + 3u &&                                \
+             (size_t)(height) / 2u >= 2u * (size_t)(radius) + 3u                                  \
+         ? ((size_t)(width) / 2u) * (21u + 3u * (size_t)(a_distance) + 4u * (size_t)(radius)) +   \
+               2u * (size_t)(width)                                                               \
+         : (size_t)0u)
+/* Bytes of a pass's fixed state within that bound (checked when the library is compiled). */
+#define SYMLINE_DETECT_WS_FIXED 512u
+#define SYMLINE_DETECT_WS_MAX_(a, b) ((a) > (b) ? (a) : (b))
+
+/*
  * Detects line segments. ws: ws_size bytes (any alignment) of scratch the
  * call may overwrite. out: caller storage as above; out->segments and
  * out->points may be NULL only with a capacity of 0.
  * Returns SYMLINE_OK (check out->truncated), ERR_NULL, ERR_SIZE, ERR_STRIDE,
- * ERR_CONFIG (a field out of range, radius included), or ERR_BUFFER
+ * ERR_CONFIG (a field out of range, radius included; symline_config_check()
+ * names it), or ERR_BUFFER
  * (ws_size too small). On an error nothing in *out is changed.
  */
 symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
