@@ -39,83 +39,79 @@ void symline_config_default(symline_config *cfg)
 #define SL_MAX_DETECT_RADIUS 32u
 #define SL_MAX_LEVELS 5u
 
-/* The first field out of its range (its name, as in symline_config), or NULL. */
-static const char *bad_field(const symline_config *c)
+/* The first field out of its range, or SYMLINE_FIELD_NONE. */
+static symline_config_field bad_field(const symline_config *c)
 {
     if (c->axes != SYMLINE_AXES_HORIZONTAL && c->axes != SYMLINE_AXES_VERTICAL &&
         c->axes != SYMLINE_AXES_BOTH) {
-        return "axes";
+        return SYMLINE_FIELD_AXES;
     }
     if (c->radius < 1u || c->radius > SL_MAX_DETECT_RADIUS) {
-        return "radius";
+        return SYMLINE_FIELD_RADIUS;
     }
     if (c->levels > SL_MAX_LEVELS) {
-        return "levels";
+        return SYMLINE_FIELD_LEVELS;
     }
     if (c->filter != SYMLINE_FILTER_CONTRAST && c->filter != SYMLINE_FILTER_PAPER) {
-        return "filter";
+        return SYMLINE_FIELD_FILTER;
     }
     if (c->illumination > 255u) {
-        return "illumination";
+        return SYMLINE_FIELD_ILLUMINATION;
     }
     if (c->adaptive > 1u) {
-        return "adaptive";
+        return SYMLINE_FIELD_ADAPTIVE;
     }
     if (c->bright_sigma10 < -100 || c->bright_sigma10 > 100) {
-        return "bright_sigma10";
+        return SYMLINE_FIELD_BRIGHT_SIGMA10;
     }
     if (c->ridge_sigma10 > 100u) {
-        return "ridge_sigma10";
+        return SYMLINE_FIELD_RIDGE_SIGMA10;
     }
     if (c->side_sigma10 < -100 || c->side_sigma10 > 100) {
-        return "side_sigma10";
+        return SYMLINE_FIELD_SIDE_SIGMA10;
     }
     if (c->a_distance > 32u) {
-        return "a_distance";
+        return SYMLINE_FIELD_A_DISTANCE;
     }
     if (c->contrast_pct > 100u) {
-        return "contrast_pct";
+        return SYMLINE_FIELD_CONTRAST_PCT;
     }
     if (c->contrast_min > 255u) {
-        return "contrast_min";
+        return SYMLINE_FIELD_CONTRAST_MIN;
     }
     if (c->contrast_asym_pct > 1000u) {
-        return "contrast_asym_pct";
+        return SYMLINE_FIELD_CONTRAST_ASYM_PCT;
     }
     if (c->min_length > SYMLINE_MAX_DIM) {
-        return "min_length";
+        return SYMLINE_FIELD_MIN_LENGTH;
     }
     if (c->curve_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
-        return "curve_dev_q8";
+        return SYMLINE_FIELD_CURVE_DEV_Q8;
     }
     if (c->curve_bend_q8 > (SYMLINE_MAX_DIM << 8)) {
-        return "curve_bend_q8";
+        return SYMLINE_FIELD_CURVE_BEND_Q8;
     }
     if (c->merge_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
-        return "merge_dev_q8";
+        return SYMLINE_FIELD_MERGE_DEV_Q8;
     }
-    return NULL;
+    return SYMLINE_FIELD_NONE;
 }
 
 static symline_status check_config(const symline_config *c)
 {
-    return bad_field(c) == NULL ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
+    return bad_field(c) == SYMLINE_FIELD_NONE ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
 }
 
-symline_status symline_config_check(const symline_config *cfg, const char **field)
+symline_status symline_config_check(const symline_config *cfg, symline_config_field *field)
 {
-    const char *bad;
+    const symline_config_field bad = cfg != NULL ? bad_field(cfg) : SYMLINE_FIELD_NONE;
     if (field != NULL) {
-        *field = NULL;
+        *field = bad;
     }
     if (cfg == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    bad = bad_field(cfg);
-    if (field != NULL) {
-        *field = bad;
-    }
-    return bad == NULL ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
+    return bad == SYMLINE_FIELD_NONE ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
 }
 
 /* Number of scales: as configured, or enough that the coarsest one reaches

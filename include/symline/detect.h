@@ -127,14 +127,36 @@ typedef struct symline_config {
 /* Fills *cfg with the defaults documented above (no-op on NULL). */
 void symline_config_default(symline_config *cfg);
 
+/* A field of symline_config, for symline_config_check(); in declaration order. */
+typedef enum symline_config_field {
+    SYMLINE_FIELD_NONE = 0, /* every field within its range */
+    SYMLINE_FIELD_AXES,
+    SYMLINE_FIELD_RADIUS,
+    SYMLINE_FIELD_LEVELS,
+    SYMLINE_FIELD_FILTER,
+    SYMLINE_FIELD_ILLUMINATION,
+    SYMLINE_FIELD_ADAPTIVE,
+    SYMLINE_FIELD_BRIGHT_SIGMA10,
+    SYMLINE_FIELD_RIDGE_SIGMA10,
+    SYMLINE_FIELD_SIDE_SIGMA10,
+    SYMLINE_FIELD_A_DISTANCE,
+    SYMLINE_FIELD_CONTRAST_PCT,
+    SYMLINE_FIELD_CONTRAST_MIN,
+    SYMLINE_FIELD_CONTRAST_ASYM_PCT,
+    SYMLINE_FIELD_MIN_LENGTH,
+    SYMLINE_FIELD_CURVE_DEV_Q8,
+    SYMLINE_FIELD_CURVE_BEND_Q8,
+    SYMLINE_FIELD_MERGE_DEV_Q8
+} symline_config_field;
+
 /*
  * The range check symline_detect() makes, with the culprit named: returns
  * SYMLINE_OK, SYMLINE_ERR_NULL (cfg NULL) or SYMLINE_ERR_CONFIG, and when
- * field is not NULL sets *field to the name of the first field out of its
- * range, spelled as in symline_config ("radius", "side_sigma10", ...; a
- * static string), or to NULL when there is none.
+ * field is not NULL sets *field to the first field out of its range
+ * (SYMLINE_FIELD_RADIUS for config.radius, ...), SYMLINE_FIELD_NONE when
+ * there is none. merge_gap takes any value, so it is never named.
  */
-symline_status symline_config_check(const symline_config *cfg, const char **field);
+symline_status symline_config_check(const symline_config *cfg, symline_config_field *field);
 
 /* One traced point, in full-resolution pixels. */
 typedef struct symline_point {

@@ -192,15 +192,14 @@ static void test_points_needed_is_exact(void **state)
     }
 }
 
-static void expect_field(void (*spoil)(symline_config *), const char *name)
+static void expect_field(void (*spoil)(symline_config *), symline_config_field want)
 {
     symline_config c;
-    const char *field = "unset";
+    symline_config_field field = SYMLINE_FIELD_NONE;
     symline_config_default(&c);
     spoil(&c);
     assert_int_equal(symline_config_check(&c, &field), SYMLINE_ERR_CONFIG);
-    assert_non_null(field);
-    assert_string_equal(field, name);
+    assert_int_equal(field, want);
     assert_int_equal(symline_config_check(&c, NULL), SYMLINE_ERR_CONFIG);
 }
 
@@ -227,7 +226,7 @@ static void bad_two(symline_config *c) { c->levels = 9u; c->min_length = SYMLINE
 static void test_config_check_names_the_field(void **state)
 {
     symline_config c;
-    const char *field = "unset";
+    symline_config_field field = SYMLINE_FIELD_RADIUS;
     static uint8_t ws[64];
     static symline_point pts[4];
     static const uint8_t px[4] = {0, 0, 0, 0};
@@ -236,29 +235,29 @@ static void test_config_check_names_the_field(void **state)
     (void)state;
     symline_config_default(&c);
     assert_int_equal(symline_config_check(&c, &field), SYMLINE_OK);
-    assert_null(field);
-    field = "unset";
+    assert_int_equal(field, SYMLINE_FIELD_NONE);
+    field = SYMLINE_FIELD_RADIUS;
     assert_int_equal(symline_config_check(NULL, &field), SYMLINE_ERR_NULL);
-    assert_null(field);
-    expect_field(bad_axes, "axes");
-    expect_field(bad_radius0, "radius");
-    expect_field(bad_radius, "radius");
-    expect_field(bad_levels, "levels");
-    expect_field(bad_filter, "filter");
-    expect_field(bad_illum, "illumination");
-    expect_field(bad_adaptive, "adaptive");
-    expect_field(bad_bright, "bright_sigma10");
-    expect_field(bad_ridge, "ridge_sigma10");
-    expect_field(bad_side, "side_sigma10");
-    expect_field(bad_adist, "a_distance");
-    expect_field(bad_cpct, "contrast_pct");
-    expect_field(bad_cmin, "contrast_min");
-    expect_field(bad_asym, "contrast_asym_pct");
-    expect_field(bad_minlen, "min_length");
-    expect_field(bad_curve, "curve_dev_q8");
-    expect_field(bad_bend, "curve_bend_q8");
-    expect_field(bad_mdev, "merge_dev_q8");
-    expect_field(bad_two, "levels"); /* the first one, in declaration order */
+    assert_int_equal(field, SYMLINE_FIELD_NONE);
+    expect_field(bad_axes, SYMLINE_FIELD_AXES);
+    expect_field(bad_radius0, SYMLINE_FIELD_RADIUS);
+    expect_field(bad_radius, SYMLINE_FIELD_RADIUS);
+    expect_field(bad_levels, SYMLINE_FIELD_LEVELS);
+    expect_field(bad_filter, SYMLINE_FIELD_FILTER);
+    expect_field(bad_illum, SYMLINE_FIELD_ILLUMINATION);
+    expect_field(bad_adaptive, SYMLINE_FIELD_ADAPTIVE);
+    expect_field(bad_bright, SYMLINE_FIELD_BRIGHT_SIGMA10);
+    expect_field(bad_ridge, SYMLINE_FIELD_RIDGE_SIGMA10);
+    expect_field(bad_side, SYMLINE_FIELD_SIDE_SIGMA10);
+    expect_field(bad_adist, SYMLINE_FIELD_A_DISTANCE);
+    expect_field(bad_cpct, SYMLINE_FIELD_CONTRAST_PCT);
+    expect_field(bad_cmin, SYMLINE_FIELD_CONTRAST_MIN);
+    expect_field(bad_asym, SYMLINE_FIELD_CONTRAST_ASYM_PCT);
+    expect_field(bad_minlen, SYMLINE_FIELD_MIN_LENGTH);
+    expect_field(bad_curve, SYMLINE_FIELD_CURVE_DEV_Q8);
+    expect_field(bad_bend, SYMLINE_FIELD_CURVE_BEND_Q8);
+    expect_field(bad_mdev, SYMLINE_FIELD_MERGE_DEV_Q8);
+    expect_field(bad_two, SYMLINE_FIELD_LEVELS); /* the first one, in declaration order */
     /* symline_detect() refuses exactly what the check names */
     symline_config_default(&c);
     c.side_sigma10 = 150;
