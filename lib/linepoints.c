@@ -85,9 +85,11 @@ typedef struct hring {
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 6 bytes per extremum and 8 per
  * row pointer, and the ring state within its fixed part (see pass.c). */
-typedef char sl_ring_state_fits_ws_budget[(sizeof(hring) + sizeof(symline_colrun) <= 80u &&
-                                           sizeof(symline_extremum) <= 6u &&
-                                           sizeof(const uint8_t *) <= 8u) ? 1 : -1];
+typedef char
+    sl_ring_state_fits_ws_budget[(sizeof(hring) + sizeof(symline_colrun) <= 80u &&
+                                  sizeof(symline_extremum) <= 6u && sizeof(const uint8_t *) <= 8u)
+                                     ? 1
+                                     : -1];
 
 size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
 {
@@ -98,7 +100,7 @@ size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
         n += sl_align_up((size_t)img_width * sizeof(uint16_t)); /* box accumulator */
     }
     if (p->axis == SYMLINE_AXIS_VERTICAL) {
-        n += sl_align_up(w);     /* extrema of the row */
+        n += sl_align_up(w); /* extrema of the row */
         if (p->level > 0u) {
             n += sl_align_up(w); /* the grid row */
         }
@@ -129,9 +131,10 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 
 /* ---- vertical axis: along rows ---- */
 
-SL_NOINLINE static symline_status collect_vertical(const symline_image *img, const sl_pass *p, uint8_t *cur,
-                                       uint8_t *end, symline_point *pts, uint32_t cap,
-                                       uint32_t *n, uint32_t *row_start, uint32_t *dropped)
+SL_NOINLINE static symline_status collect_vertical(const symline_image *img, const sl_pass *p,
+                                                   uint8_t *cur, uint8_t *end, symline_point *pts,
+                                                   uint32_t cap, uint32_t *n, uint32_t *row_start,
+                                                   uint32_t *dropped)
 {
     uint32_t *E = (uint32_t *)sl_carve(&cur, end, (size_t)p->w * sizeof(uint32_t));
     uint8_t *map = (uint8_t *)sl_carve(&cur, end, p->w);
@@ -180,7 +183,6 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img, con
 
 /* ---- horizontal axis: down the columns, over rings ---- */
 
-
 static const uint8_t *h_row(const hring *r, uint32_t y)
 {
     if (r->p->level == 0u) {
@@ -220,9 +222,9 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
 }
 
 SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, const sl_pass *p,
-                                         uint8_t *cur, uint8_t *end, symline_point *pts,
-                                         uint32_t cap, uint32_t *n, uint32_t *row_start,
-                                         uint32_t *dropped)
+                                                     uint8_t *cur, uint8_t *end, symline_point *pts,
+                                                     uint32_t cap, uint32_t *n, uint32_t *row_start,
+                                                     uint32_t *dropped)
 {
     hring *rp = (hring *)sl_carve(&cur, end, sizeof(hring));
     symline_colrun *cr = (symline_colrun *)sl_carve(&cur, end, sizeof(symline_colrun));
@@ -262,7 +264,8 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
         if (p->level > 0u) {
             const uint32_t need = (t + m < h) ? t + m : h - 1u;
             while (produced <= need) {
-                sl_grid_row(img, p, produced, acc, rp->gray + (size_t)(produced % rp->gray_rows) * w);
+                sl_grid_row(img, p, produced, acc,
+                            rp->gray + (size_t)(produced % rp->gray_rows) * w);
                 produced++;
             }
         }

@@ -14,11 +14,11 @@
  * Filled by sl_pass_setup() (pass.c). */
 typedef struct sl_pass {
     symline_axis axis;
-    uint32_t level;  /* grid = frame box-downsampled by 2^level */
-    uint32_t w, h;   /* grid size: width >> level, height >> level */
-    uint32_t m;      /* radius */
-    uint32_t k;      /* contrast sample offset across the line: m + 1 */
-    uint32_t lag;    /* longest accepted plateau: end - marked index <= lag (= m) */
+    uint32_t level; /* grid = frame box-downsampled by 2^level */
+    uint32_t w, h;  /* grid size: width >> level, height >> level */
+    uint32_t m;     /* radius */
+    uint32_t k;     /* contrast sample offset across the line: m + 1 */
+    uint32_t lag;   /* longest accepted plateau: end - marked index <= lag (= m) */
     sl_linefilter filter;
 } sl_pass;
 

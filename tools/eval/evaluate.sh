@@ -223,7 +223,7 @@ real_frames_table() {
     [ -n "$ANNOTATED" ] || return 0
     echo "## Real frames against hand ground truth ($FIELD)"
     echo
-    echo "The frames with NAME.lines.txt (hand annotations, SOURCES.md there). P, R, F1: SPEC 7"
+    echo "The frames with NAME.lines.txt (hand annotations, SOURCES.md there). P, R, F1: the"
     echo "scoring against NAME.lines.txt, .arcs.txt, .dontcare.txt. segs = reported segments."
     echo "frag = fragmentation: reported segments along each straight ground-truth piece of at"
     echo "least 40 px (a segment lies along one when at least 70 % and at least 8 of its samples"
