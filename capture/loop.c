@@ -12,6 +12,7 @@
 #include "imgio.h"
 #include "overlay.h"
 #include "segjson.h"
+#include "symline/version.h"
 
 /* Detector memory, sized for the current frame size (sources may change it: replay). */
 typedef struct detector {
@@ -118,6 +119,8 @@ static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d,
         segjson_put_string(stdout, f->file);
         fputs(", ", stdout);
     }
+    /* The version in every record: a log says which detector made it. */
+    printf("\"version\": \"%s\", ", SYMLINE_VERSION_STRING);
     printf("\"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, \"latency_ms\": %.3f, "
            "\"stages_ms\": {\"queue\": %.3f, \"convert\": %.3f, \"detect\": %.3f}, ",
            f->sequence, (long long)f->timestamp_ns, f->skipped, latency_ms, queue_ms,

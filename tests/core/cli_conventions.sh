@@ -102,6 +102,10 @@ if [ $? -eq 2 ] && grep -q -- "--side-sigma needs an integer -100..100" "$tmp/er
 "$cli" lines --curve-dev 2.5x "$frame" >/dev/null 2>"$tmp/err"
 if [ $? -eq 2 ] && grep -q -- "--curve-dev needs pixels" "$tmp/err"; then ok; else bad "--curve-dev 2.5x accepted"; fi
 
+# --version names the version of the headers (symline/version.h).
+v=$(sed -n 's/^#define SYMLINE_VERSION_STRING "\(.*\)"$/\1/p' "$(dirname "$0")/../../include/symline/version.h")
+if [ -n "$v" ] && [ "$("$cli" --version)" = "symline $v" ]; then ok; else bad "--version"; fi
+
 # Unknown options and missing values are usage errors naming the option.
 "$cli" lines --bogus=1 "$frame" >/dev/null 2>"$tmp/err"
 if [ $? -eq 2 ] && grep -q "unknown option '--bogus=1'" "$tmp/err"; then ok; else bad "unknown option"; fi

@@ -4,6 +4,7 @@
 #include "args.h"
 
 #include "detopts.h"
+#include "symline/version.h"
 #include "v4l2_list.h"
 
 #include <stdio.h>
@@ -67,7 +68,7 @@ static void usage(FILE *f)
           "  --snapshot-every K DIR write every K-th frame with its detections drawn over it\n"
           "                         (lines solid, curves dotted) as DIR/snapNNNNNN.png\n"
           "\n"
-          "Options take --opt VALUE or --opt=VALUE.\n"
+          "Options take --opt VALUE or --opt=VALUE. --version prints the version.\n"
           "Exit status: 0 stopped normally (frame count, end of replay, SIGINT/SIGTERM,\n"
           "stdout closed); 1 capture error (device lost, timeout, driver error); 2 usage error.\n",
           f);
@@ -100,6 +101,7 @@ enum {
 
 static const struct option own_options[] = {
     {"help", no_argument, NULL, 'h'},
+    {"version", no_argument, NULL, 'V'},
     {"device", required_argument, NULL, OPT_DEVICE},
     {"list-devices", no_argument, NULL, OPT_LIST_DEVICES},
     {"list-formats", no_argument, NULL, OPT_LIST_FORMATS},
@@ -239,6 +241,9 @@ int app_parse_args(int argc, char **argv, app_options *o)
     while ((c = getopt_long(argc, argv, ":h", longopts, NULL)) != -1) {
         if (c == 'h') {
             usage(stdout);
+            return 1;
+        } else if (c == 'V') {
+            printf("symline-capture %s\n", SYMLINE_VERSION_STRING);
             return 1;
         } else if (c == '?') {
             char shortopt[3] = {'-', (char)optopt, '\0'};

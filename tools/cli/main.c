@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "symline/version.h"
 
 int cli_error(const char *fmt, ...)
 {
@@ -64,7 +65,8 @@ static void usage(FILE *f)
           "Y = (299R + 587G + 114B + 500) / 1000). IN '-' reads stdin. OUT: by its\n"
           "name, .pgm, .png, .ppm or .pnm ('-': PGM/PPM on stdout); OUT may also be\n"
           "given as -o OUT. Options take --opt VALUE or --opt=VALUE; -- ends them.\n"
-          "Run 'symline COMMAND --help' for a command's options.\n"
+          "Run 'symline COMMAND --help' for a command's options, 'symline --version'\n"
+          "for the version.\n"
           "\n"
           "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n",
           f);
@@ -81,6 +83,10 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
         strcmp(argv[1], "help") == 0) {
         usage(stdout);
+        return CLI_OK;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("symline %s\n", SYMLINE_VERSION_STRING);
         return CLI_OK;
     }
     if (strcmp(argv[1], "symmetry") == 0) {
