@@ -34,8 +34,8 @@ optional="libturbojpeg0-dev"
 
 if [ "$check" -eq 0 ] && command -v dpkg >/dev/null 2>&1; then
     need="" want=""
-    for p in $pkgs; do dpkg -s "$p" >/dev/null 2>&1 || need="$need $p"; done
-    for p in $optional; do dpkg -s "$p" >/dev/null 2>&1 || want="$want $p"; done
+    for p in $pkgs; do dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || need="$need $p"; done
+    for p in $optional; do dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || want="$want $p"; done
     [ -z "$need$want" ] && exit 0
     if [ "$(id -u)" -ne 0 ]; then
         [ -z "$want" ] || echo "tools/deps.sh: optional packages missing:$want (sudo apt-get install$want)" >&2

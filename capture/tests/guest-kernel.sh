@@ -11,7 +11,7 @@ cache=$(cd "$cache" && pwd)
 
 need_pkg() {
     for p in "$@"; do
-        if ! dpkg -s "$p" >/dev/null 2>&1; then
+        if ! dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$'; then
             apt-get install -y "$@" >&2 || { apt-get update >&2 && apt-get install -y "$@" >&2; }
             return
         fi

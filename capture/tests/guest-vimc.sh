@@ -18,7 +18,7 @@ fi
 need_pkg() {
     missing=
     for p in "$@"; do
-        dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+        dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || missing="$missing $p"
     done
     [ -z "$missing" ] && return 0
     # shellcheck disable=SC2086

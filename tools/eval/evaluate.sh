@@ -72,7 +72,7 @@ case $OUT in /*) ;; *) OUT=$(pwd)/$OUT ;; esac
 need_pkgs() {
     missing=
     for p in "$@"; do
-        dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+        dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || missing="$missing $p"
     done
     [ -z "$missing" ] && return 0
     echo "evaluate.sh: installing$missing" >&2

@@ -48,7 +48,7 @@ step "packages"
 need=""
 for p in cmake make gcc libc6-dev binutils gcc-arm-none-eabi libnewlib-arm-none-eabi \
          qemu-system-arm gcc-riscv64-unknown-elf cppcheck clang-tidy; do
-    dpkg -s "$p" >/dev/null 2>&1 || need="$need $p"
+    dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || need="$need $p"
 done
 if [ -n "$need" ]; then
     echo "  installing:$need"
