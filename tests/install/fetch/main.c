@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
-/* Embeds symline through FetchContent: detects one bright horizontal line with static buffers. */
+/* Embeds symline through FetchContent: detects one bright horizontal line with static
+ * buffers sized at compile time. */
 #include <stdio.h>
 #include <string.h>
 
@@ -9,7 +10,7 @@
 #define H 48u
 
 static uint8_t frame[H][W];
-static uint8_t ws[64u * 1024u];
+static uint8_t ws[SYMLINE_DETECT_WORKSPACE_SIZE(W, H, 3u, 0u, 0u)]; /* radius 3, contrast filter */
 static symline_segment segs[16];
 static symline_point pts[1024];
 
