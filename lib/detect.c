@@ -223,6 +223,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.prev_seg = 0u;
     d.npts = 0u;
     d.need = 0u;
+    d.dropped = 0u;
     d.truncated = false;
     d.stats.mean = 0u;
     d.stats.sigma_q4 = 0u;

@@ -114,7 +114,7 @@ static void chain(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
  * state, in the pass workspace. Apart from sl_pass_run() so that its frame
  * and the line point collection's are never on the stack together. */
 SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint32_t n,
-                              uint32_t dropped, sl_tracer *t)
+                              sl_tracer *t)
 {
     symline_result *r = d->r;
     const uint32_t base = d->npts;
@@ -135,9 +135,9 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
      * points, plus one free entry that shows the tracer nothing is left. When
      * it ran out, at most every line point is in a chain: base + 2 * all. */
     {
-        const uint64_t all = (uint64_t)n + dropped;
+        const uint64_t all = (uint64_t)n + d->dropped;
         uint64_t need = n == 0u ? base : (uint64_t)tail + 1u;
-        if (dropped != 0u || cut || (tail >= r->point_cap && n > 0u)) {
+        if (d->dropped != 0u || cut || (tail >= r->point_cap && n > 0u)) {
             need = (uint64_t)base + 2u * all + 1u;
         }
         if (need > d->need) {
@@ -163,16 +163,15 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 }
 
 /* The pass's raster list into the free part of the point storage (after
- * d->npts), *n points; *dropped counts those that did not fit. Apart from
+ * d->npts), *n points; d->dropped counts those that did not fit. Apart from
  * sl_pass_run() so that the collection's call and the tracing's are never on
  * the stack together. */
 SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
-                                          const uint8_t *end, uint32_t *row_start, uint32_t *n,
-                                          uint32_t *dropped)
+                                          const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
     const symline_status st = sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
-                                         d->r->point_cap - d->npts, n, row_start, dropped);
-    if (*dropped != 0u) {
+                                         d->r->point_cap - d->npts, n, row_start, &d->dropped);
+    if (d->dropped != 0u) {
         d->truncated = true;
     }
     return st;
@@ -182,13 +181,14 @@ symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *en
 {
     uint8_t *rest = ws;
     uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
-    uint32_t n = 0u, dropped = 0u;
+    uint32_t n = 0u;
     sl_tracer *t;
     symline_status st;
     if (row_start == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    st = collect(d, p, rest, end, row_start, &n, &dropped);
+    d->dropped = 0u;
+    st = collect(d, p, rest, end, row_start, &n);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -197,6 +197,6 @@ symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *en
     if (t == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    trace(d, p, row_start, n, dropped, t);
+    trace(d, p, row_start, n, t);
     return SYMLINE_OK;
 }
