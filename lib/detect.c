@@ -222,8 +222,8 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.nseg = 0u;
     d.prev_seg = 0u;
     d.npts = 0u;
-    d.need = 0u;
     d.dropped = 0u;
+    out->points_needed = 0u; /* raised by every pass (pass.c) */
     d.truncated = false;
     d.stats.mean = 0u;
     d.stats.sigma_q4 = 0u;
@@ -242,6 +242,5 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
         sl_curve_join(out);
     }
     out->truncated = d.truncated;
-    out->points_needed = d.need;
     return SYMLINE_OK;
 }

@@ -140,8 +140,9 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
         if (d->dropped != 0u || cut || (tail >= r->point_cap && n > 0u)) {
             need = (uint64_t)base + 2u * all + 1u;
         }
-        if (need > d->need) {
-            d->need = need > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)need;
+        /* Kept in the result as the passes go (the frame's stack stays as it was). */
+        if (need > r->points_needed) {
+            r->points_needed = need > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)need;
         }
     }
     /* Keep only the points the new segments use, right after the earlier ones. */

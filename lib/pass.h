@@ -21,7 +21,6 @@ typedef struct sl_run {
     uint32_t nseg;        /* segments so far */
     uint32_t prev_seg;    /* segments of earlier passes: [0, prev_seg) */
     uint32_t npts;        /* points kept so far: [0, npts) */
-    uint32_t need;        /* point storage the passes needed (symline_result.points_needed) */
     uint32_t dropped;     /* line points of the current pass that did not fit */
     sl_frame_stats stats; /* for the adaptive thresholds (cfg->adaptive) */
     bool truncated;
