@@ -1,8 +1,8 @@
 /*
  * Sub-pixel position across the line, on hand-made frames whose ridge middle is
  * known: lines an even and an odd number of pixels wide, a blurred line between
- * pixels, both axes, a coarse scale, the grid border; and the detector's ends
- * on them.
+ * pixels, both axes, a coarse scale, the grid border; and the detector's lines
+ * on them and on anti-aliased bands at sub-pixel centres.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -86,7 +86,8 @@ static int32_t offset_of(const symline_image *img, const sl_pass *p, uint32_t at
 
 static void even_and_odd_widths(void **state)
 {
-    static const uint8_t two[] = {200, 200}, three[] = {200, 200, 200}, four[] = {200, 200, 200, 200};
+    static const uint8_t two[] = {200, 200}, three[] = {200, 200, 200},
+                         four[] = {200, 200, 200, 200};
     symline_image img;
     sl_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 0u), h = pass_of(SYMLINE_AXIS_HORIZONTAL, 0u);
     (void)state;
@@ -217,6 +218,91 @@ static void detector_ends_on_the_middle(void **state)
     free(ws);
 }
 
+/* Anti-aliased horizontal bands at known sub-pixel centres (brightness 80 + 120 x
+ * the share of each pixel the band covers): the detector's lines lie within
+ * 0.15 px of each centre, where whole pixels were up to 0.5 px off. Widths 2-5 px
+ * at full resolution (one scale), 8-12 px at scale 1 (two scales). */
+#define BW 200
+#define BH 170
+static uint8_t g_bands[BW * BH];
+
+static void bands_frame(const double *centre, const double *width, uint32_t n)
+{
+    uint32_t x, y, b;
+    for (y = 0; y < BH; y++) {
+        double v = 80.0;
+        for (b = 0; b < n; b++) {
+            const double top = centre[b] - width[b] / 2.0, bot = centre[b] + width[b] / 2.0;
+            const double lo = top > (double)y - 0.5 ? top : (double)y - 0.5;
+            const double hi = bot < (double)y + 0.5 ? bot : (double)y + 0.5;
+            if (hi > lo) {
+                v += 120.0 * (hi - lo);
+            }
+        }
+        for (x = 0; x < BW; x++) {
+            g_bands[y * BW + x] = (uint8_t)(x >= 10u && x < BW - 10u ? (uint32_t)(v + 0.5) : 80u);
+        }
+    }
+}
+
+static void check_bands(const double *centre, uint32_t n, uint32_t levels, uint32_t level)
+{
+    symline_image img;
+    symline_config cfg;
+    symline_segment segs[16];
+    static symline_point pts[20000];
+    symline_result r;
+    size_t need;
+    void *ws;
+    uint32_t i, b;
+    img.data = g_bands;
+    img.width = BW;
+    img.height = BH;
+    img.stride = BW;
+    symline_config_default(&cfg);
+    cfg.axes = SYMLINE_AXES_HORIZONTAL;
+    cfg.levels = levels;
+    need = symline_detect_workspace_size(BW, BH, &cfg);
+    ws = malloc(need);
+    assert_non_null(ws);
+    memset(&r, 0, sizeof(r));
+    r.segments = segs;
+    r.segment_cap = 16u;
+    r.points = pts;
+    r.point_cap = 20000u;
+    assert_int_equal(symline_detect(&img, &cfg, ws, need, &r), SYMLINE_OK);
+    assert_int_equal(r.segment_count, n);
+    for (b = 0; b < n; b++) {
+        const int32_t want = (int32_t)(centre[b] * 256.0 + 0.5);
+        int found = 0;
+        for (i = 0; i < r.segment_count; i++) {
+            const int32_t d0 = segs[i].y0 - want, d1 = segs[i].y1 - want;
+            if (d0 > -128 && d0 < 128) {
+                printf("band at %.2f: line at %.2f .. %.2f, scale %u\n", centre[b],
+                       segs[i].y0 / 256.0, segs[i].y1 / 256.0, segs[i].level);
+                assert_int_equal(segs[i].level, level);
+                assert_true(d0 >= -38 && d0 <= 38 && d1 >= -38 && d1 <= 38);
+                found = 1;
+            }
+        }
+        assert_true(found);
+    }
+    free(ws);
+}
+
+static void bands_at_subpixel_centres(void **state)
+{
+    static const double fine_c[] = {30.3, 60.65, 90.5, 120.15, 150.8};
+    static const double fine_w[] = {3.0, 4.0, 2.0, 5.0, 3.5};
+    static const double coarse_c[] = {30.3, 70.65, 110.15};
+    static const double coarse_w[] = {9.0, 10.0, 8.0};
+    (void)state;
+    bands_frame(fine_c, fine_w, 5u);
+    check_bands(fine_c, 5u, 1u, 0u);
+    bands_frame(coarse_c, coarse_w, 3u);
+    check_bands(coarse_c, 3u, 2u, 1u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -225,6 +311,7 @@ int main(void)
         cmocka_unit_test(coarse_scale),
         cmocka_unit_test(border_and_flat),
         cmocka_unit_test(detector_ends_on_the_middle),
+        cmocka_unit_test(bands_at_subpixel_centres),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
