@@ -13,6 +13,8 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
 
@@ -23,6 +25,7 @@
 #endif
 
 #include "jpeg_luma.h"
+#include "v4l2_list.h"
 #include "v4l2_source.h"
 
 #define FAKE_PATH "/dev/fake-video"
@@ -583,6 +586,40 @@ static void test_mjpeg_decoded_damaged_skipped(void **state)
     close_and_check(src);
 }
 
+/* --list-formats: every format the device offers, with how symline gets its luma. */
+static void test_list_formats_and_device_numbers(void **state)
+{
+    char *text = NULL, err[256], buf[64];
+    size_t len = 0;
+    FILE *out;
+    (void)state;
+    fake_reset(V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING);
+    fk.offered[2] = V4L2_PIX_FMT_H264;
+    out = open_memstream(&text, &len);
+    assert_non_null(out);
+    assert_int_equal(v4l2_list_formats(out, FAKE_PATH, err, sizeof err), 0);
+    fclose(out);
+    assert_non_null(strstr(text, FAKE_PATH ": Fake camera (fake, "));
+    assert_non_null(strstr(text, "\n  YUYV  "));
+    assert_non_null(strstr(text, "luma copied out\n"));
+    assert_non_null(strstr(text, "\n  GREY  "));
+    assert_non_null(strstr(text, "luma read in place\n"));
+    assert_non_null(strstr(text, "\n  H264  "));
+    assert_non_null(strstr(text, "not read by symline\n"));
+    free(text);
+    assert_int_equal(fk.open_fds, 0);
+    fake_reset(V4L2_CAP_VIDEO_OUTPUT | V4L2_CAP_STREAMING);
+    assert_int_equal(v4l2_list_formats(stdout, FAKE_PATH, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a video capture device"));
+    assert_int_equal(fk.open_fds, 0);
+
+    assert_string_equal(v4l2_device_path("0", buf, sizeof buf), "/dev/video0");
+    assert_string_equal(v4l2_device_path("12", buf, sizeof buf), "/dev/video12");
+    assert_string_equal(v4l2_device_path("/dev/video3", buf, sizeof buf), "/dev/video3");
+    assert_string_equal(v4l2_device_path("cam0", buf, sizeof buf), "cam0");
+    assert_null(v4l2_device_path("/a/very/long/path/that/does/not/fit", buf, 8));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -596,6 +633,7 @@ int main(void)
         cmocka_unit_test(test_interrupted_wait),
         cmocka_unit_test(test_open_failures_release_everything),
         cmocka_unit_test(test_mjpeg_decoded_damaged_skipped),
+        cmocka_unit_test(test_list_formats_and_device_numbers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
