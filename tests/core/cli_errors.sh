@@ -1,6 +1,8 @@
 #!/bin/sh
 # The CLI's exit codes and messages: 0 ok, 2 usage or input error, and
 # messages that name the file and the problem.
+# Usage: cli_errors.sh SYMLINE DATA_DIR
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -u
 cli=$1 data=$2
 tmp=$(mktemp -d)
