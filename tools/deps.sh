@@ -10,7 +10,8 @@ usage: tools/deps.sh [build|test] [--check]
   build    what building symline needs: cmake (>= 3.16), make or ninja, a C99
            compiler with the C library headers, pkg-config, libpng (PNG files)
            and libturbojpeg (JPEG files, MJPEG cameras; optional)
-  test     build, plus cmocka (the test suite) and binutils (nm, size)
+  test     build, plus cmocka (the test suite), binutils (nm, size) and
+           clang-format (the format test; optional without dpkg)
   --check  only check, install nothing (also the behaviour without dpkg)
 Exit status: 0 everything required is there (or was installed), 1 something
 required is missing, 2 usage error.
@@ -30,7 +31,7 @@ done
 # Debian packages of each step; the optional ones are installed, never required.
 pkgs="cmake make gcc libc6-dev pkg-config libpng-dev"
 optional="libturbojpeg0-dev"
-[ "$step" = test ] && pkgs="$pkgs libcmocka-dev binutils"
+[ "$step" = test ] && pkgs="$pkgs libcmocka-dev binutils clang-format"
 
 if [ "$check" -eq 0 ] && command -v dpkg >/dev/null 2>&1; then
     need="" want=""
@@ -114,6 +115,8 @@ fi
 if [ "$step" = test ]; then
     have nm || miss "nm (binutils)"
     have size || miss "size (binutils)"
+    have clang-format || warn="$warn
+  - clang-format: optional, without it the format test of lib/ is skipped"
 fi
 
 [ -z "$warn" ] || echo "tools/deps.sh: note:$warn" >&2

@@ -9,9 +9,10 @@
 
 /* How an option's value is written; the config field keeps the library's unit. */
 typedef enum opt_unit {
-    UNIT_INT = 0,   /* an integer in [lo, hi], stored as it is (unsigned fields) */
+    UNIT_INT = 0,    /* an integer in [lo, hi], stored as it is (unsigned fields) */
     UNIT_SIGNED = 1, /* an integer in [lo, hi], possibly negative (signed fields) */
-    UNIT_PX = 2     /* pixels as a decimal ("2", "2.5"), stored in Q8; [lo, hi] in Q8 */
+    UNIT_PX = 2,     /* pixels as a decimal ("2", "2.5"), stored in Q8; [lo, hi] in Q8 */
+    UNIT_BOOL = 3    /* 0 or 1, a bool field */
 } opt_unit;
 
 /* A numeric option: name, unit, range and the config field it sets (symline/detect.h). */
@@ -25,14 +26,15 @@ typedef struct num_opt {
 #define PX_MAX ((int64_t)SYMLINE_MAX_DIM << 8)
 
 static const num_opt num_opts[] = {
-    {"--radius", UNIT_INT, 1, 32, offsetof(symline_config, radius)},
-    {"--levels", UNIT_INT, 0, 5, offsetof(symline_config, levels)},
+    {"--radius", UNIT_INT, 1, SYMLINE_DETECT_MAX_RADIUS, offsetof(symline_config, radius)},
+    {"--levels", UNIT_INT, 0, SYMLINE_DETECT_MAX_LEVELS, offsetof(symline_config, levels)},
     {"--illumination", UNIT_INT, 0, 255, offsetof(symline_config, illumination)},
-    {"--adaptive", UNIT_INT, 0, 1, offsetof(symline_config, adaptive)},
+    {"--adaptive", UNIT_BOOL, 0, 1, offsetof(symline_config, adaptive)},
     {"--bright-sigma", UNIT_SIGNED, -100, 100, offsetof(symline_config, bright_sigma10)},
     {"--side-sigma", UNIT_SIGNED, -100, 100, offsetof(symline_config, side_sigma10)},
     {"--ridge-sigma", UNIT_INT, 0, 100, offsetof(symline_config, ridge_sigma10)},
-    {"--a-distance", UNIT_INT, 0, 32, offsetof(symline_config, a_distance)},
+    {"--a-distance", UNIT_INT, 0, SYMLINE_DETECT_MAX_A_DISTANCE,
+     offsetof(symline_config, a_distance)},
     {"--contrast", UNIT_INT, 0, 100, offsetof(symline_config, contrast_pct)},
     {"--contrast-min", UNIT_INT, 0, 255, offsetof(symline_config, contrast_min)},
     {"--contrast-asym", UNIT_INT, 0, 1000, offsetof(symline_config, contrast_asym_pct)},
@@ -41,6 +43,7 @@ static const num_opt num_opts[] = {
     {"--curve-bend", UNIT_PX, 0, PX_MAX, offsetof(symline_config, curve_bend_q8)},
     {"--merge-gap", UNIT_INT, 0, SYMLINE_MAX_DIM, offsetof(symline_config, merge_gap)},
     {"--merge-dev", UNIT_PX, 0, PX_MAX, offsetof(symline_config, merge_dev_q8)},
+    {"--field-margin", UNIT_INT, 0, SYMLINE_MAX_DIM, offsetof(symline_config, field_margin)},
 };
 #define NUM_OPTS (sizeof num_opts / sizeof num_opts[0])
 
@@ -168,6 +171,17 @@ static int apply_named(detopts *d, const char *name, const char *value, char *er
             snprintf(err, errlen, "--filter needs contrast or paper");
             return -1;
         }
+    } else if (strcmp(name, "--field") == 0) {
+        if (value != NULL && strcmp(value, "drop") == 0) {
+            d->cfg.field_boundary = SYMLINE_FIELD_DROP;
+        } else if (value != NULL && strcmp(value, "keep") == 0) {
+            d->cfg.field_boundary = SYMLINE_FIELD_KEEP;
+        } else if (value != NULL && strcmp(value, "off") == 0) {
+            d->cfg.field_boundary = SYMLINE_FIELD_OFF;
+        } else {
+            snprintf(err, errlen, "--field needs drop, keep or off");
+            return -1;
+        }
     } else if ((k = opt_index(name)) >= 0) {
         const num_opt *o = &num_opts[k];
         char *field = (char *)&d->cfg + o->offset;
@@ -177,14 +191,18 @@ static int apply_named(detopts *d, const char *name, const char *value, char *er
         } else if (o->unit == UNIT_PX ? parse_px_q8(value, o->lo, o->hi, &v) != 0
                                       : parse_int(value, o->lo, o->hi, &v) != 0) {
             if (o->unit == UNIT_PX) {
-                snprintf(err, errlen, "%s needs pixels, a decimal 0..%u (e.g. 2.5)", name, (unsigned)(o->hi >> 8));
+                snprintf(err, errlen, "%s needs pixels, a decimal 0..%u (e.g. 2.5)", name,
+                         (unsigned)(o->hi >> 8));
             } else {
-                snprintf(err, errlen, "%s needs an integer %lld..%lld%s", name, (long long)o->lo, (long long)o->hi,
-                         strcmp(name, "--merge-gap") == 0 ? ", or auto" : "");
+                snprintf(err, errlen, "%s needs an integer %lld..%lld%s", name, (long long)o->lo,
+                         (long long)o->hi, strcmp(name, "--merge-gap") == 0 ? ", or auto" : "");
             }
             return -1;
         }
-        if (o->unit == UNIT_SIGNED) {
+        if (o->unit == UNIT_BOOL) {
+            const bool b = v != 0;
+            memcpy(field, &b, sizeof b);
+        } else if (o->unit == UNIT_SIGNED) {
             const int32_t sv = (int32_t)v;
             memcpy(field, &sv, sizeof sv);
         } else {
@@ -201,14 +219,14 @@ static int apply_named(detopts *d, const char *name, const char *value, char *er
 /* The option names getopt_long sees, without "--": the two word options, then the numeric table. */
 static const char *long_name(size_t k)
 {
-    static const char *const words[] = {"--axis", "--filter"};
-    return (k < 2u ? words[k] : num_opts[k - 2u].name) + 2;
+    static const char *const words[] = {"--axis", "--filter", "--field"};
+    return (k < 3u ? words[k] : num_opts[k - 3u].name) + 2;
 }
 
 size_t detopts_longopts(struct option *out, size_t cap)
 {
     size_t k, n = 0;
-    for (k = 0; k < 2u + NUM_OPTS && n < cap; k++, n++) {
+    for (k = 0; k < 3u + NUM_OPTS && n < cap; k++, n++) {
         out[n].name = long_name(k);
         out[n].has_arg = required_argument;
         out[n].flag = NULL;
@@ -220,7 +238,7 @@ size_t detopts_longopts(struct option *out, size_t cap)
 int detopts_apply(detopts *d, int code, const char *arg, char *err, size_t errlen)
 {
     char name[32];
-    if (code < DETOPTS_VAL || code >= DETOPTS_VAL + 2 + (int)NUM_OPTS) {
+    if (code < DETOPTS_VAL || code >= DETOPTS_VAL + 3 + (int)NUM_OPTS) {
         return 0;
     }
     snprintf(name, sizeof name, "--%s", long_name((size_t)(code - DETOPTS_VAL)));
@@ -269,8 +287,9 @@ void detopts_help(FILE *f)
             "                      averaged along each piece (rejects bands between two\n"
             "                      different surfaces), 0..1000, 0 = off (%u)\n"
             "  --min-length PX     shortest reported piece, px (%u)\n",
-            c.radius, c.levels, c.illumination, c.adaptive, (int)c.bright_sigma10, c.ridge_sigma10,
-            (int)c.side_sigma10, c.a_distance, c.contrast_pct, c.contrast_min, c.contrast_asym_pct, c.min_length);
+            c.radius, c.levels, c.illumination, c.adaptive ? 1u : 0u, (int)c.bright_sigma10,
+            c.ridge_sigma10, (int)c.side_sigma10, c.a_distance, c.contrast_pct, c.contrast_min,
+            c.contrast_asym_pct, c.min_length);
     fputs("  --curve-dev PX      curve threshold on max_dev, px, e.g. 2.5 (", f);
     put_px(f, c.curve_dev_q8);
     fputs(")\n"
@@ -285,4 +304,11 @@ void detopts_help(FILE *f)
           f);
     put_px(f, c.merge_dev_q8);
     fputs(")\n", f);
+    fprintf(f,
+            "  --field drop|keep|off   field boundary (symline boundary): reported as\n"
+            "                      field_boundary; drop: line points above it are not\n"
+            "                      traced (default); keep: nothing dropped; off: not\n"
+            "                      computed\n"
+            "  --field-margin PX   drop keeps points up to PX above the boundary (%u)\n",
+            c.field_margin);
 }

@@ -126,11 +126,17 @@ int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray
     }
     switch (buf[1]) {
     case '5': break;
-    case '2': return fail(err, errlen, "%s: ASCII PGM (P2) is not supported; use binary PGM (P5)", name);
+    case '2':
+        return fail(err, errlen, "%s: ASCII PGM (P2) is not supported; use binary PGM (P5)", name);
     case '6':
-    case '3': return fail(err, errlen, "%s: colour PPM (P%c) is not supported; use 8-bit gray PGM (P5) or PNG", name, buf[1]);
+    case '3':
+        return fail(err, errlen,
+                    "%s: colour PPM (P%c) is not supported; use 8-bit gray PGM (P5) or PNG", name,
+                    buf[1]);
     case '1':
-    case '4': return fail(err, errlen, "%s: bitmap PBM (P%c) is not supported; use 8-bit gray PGM (P5)", name, buf[1]);
+    case '4':
+        return fail(err, errlen, "%s: bitmap PBM (P%c) is not supported; use 8-bit gray PGM (P5)",
+                    name, buf[1]);
     default: return fail(err, errlen, "%s: not a PGM file (magic P%c)", name, buf[1]);
     }
     if (read_uint(buf, len, &pos, &w) != 0 || read_uint(buf, len, &pos, &h) != 0 ||
@@ -145,15 +151,15 @@ int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray
         return fail(err, errlen, "%s: image size %lux%lu outside 1..65535", name, w, h);
     }
     /* Exactly one white-space byte separates the header from the pixels. */
-    if (pos >= len || !(buf[pos] == ' ' || buf[pos] == '\t' || buf[pos] == '\n' ||
-                        buf[pos] == '\r')) {
+    if (pos >= len ||
+        !(buf[pos] == ' ' || buf[pos] == '\t' || buf[pos] == '\n' || buf[pos] == '\r')) {
         return fail(err, errlen, "%s: malformed PGM header", name);
     }
     pos++;
     need = (size_t)w * (size_t)h;
     if (len - pos < need) {
-        return fail(err, errlen, "%s: truncated PGM data (%zu of %zu pixel bytes)", name,
-                    len - pos, need);
+        return fail(err, errlen, "%s: truncated PGM data (%zu of %zu pixel bytes)", name, len - pos,
+                    need);
     }
     img->px = (uint8_t *)malloc(need);
     if (img->px == NULL) {
@@ -327,14 +333,17 @@ static int parse_png(const uint8_t *buf, size_t len, const char *name, imgio_gra
 #endif
 
 /* A JPEG's luma. */
-static int read_jpeg(const uint8_t *buf, size_t len, const char *name, imgio_gray *img, char *err, size_t errlen)
+static int read_jpeg(const uint8_t *buf, size_t len, const char *name, imgio_gray *img, char *err,
+                     size_t errlen)
 {
     char jerr[256];
     uint32_t w, h;
     jpeg_luma *d;
     if (!jpeg_luma_available()) {
-        return fail(err, errlen, "%s: JPEG input needs a build with libturbojpeg (libturbojpeg0-dev); use PGM or PNG",
-                    name);
+        return fail(
+            err, errlen,
+            "%s: JPEG input needs a build with libturbojpeg (libturbojpeg0-dev); use PGM or PNG",
+            name);
     }
     d = jpeg_luma_open(jerr, sizeof jerr);
     if (d == NULL) {
@@ -427,7 +436,13 @@ static int write_png(const char *path, const uint8_t *px, uint32_t width, uint32
 #endif
 
 /* Output formats, chosen by the name. */
-enum { OUT_UNKNOWN, OUT_PGM, OUT_PPM, OUT_PNM, OUT_PNG };
+enum {
+    OUT_UNKNOWN,
+    OUT_PGM,
+    OUT_PPM,
+    OUT_PNM,
+    OUT_PNG
+};
 
 static int has_ext(const char *path, const char *ext)
 {
@@ -467,10 +482,12 @@ int imgio_check_output_name(const char *path, int color, char *err, size_t errle
     if (fmt == OUT_UNKNOWN) {
         const char *dot = strrchr(path, '.');
         const char *slash = strrchr(path, '/');
-        return fail(err, errlen, "%s: unknown image format%s%s%s: write .pgm, .ppm, .pnm%s or - (stdout)", path,
+        return fail(err, errlen,
+                    "%s: unknown image format%s%s%s: write .pgm, .ppm, .pnm%s or - (stdout)", path,
                     dot != NULL && (slash == NULL || dot > slash) ? " '" : "",
                     dot != NULL && (slash == NULL || dot > slash) ? dot : "",
-                    dot != NULL && (slash == NULL || dot > slash) ? "'" : "", imgio_have_png() ? ", .png" : "");
+                    dot != NULL && (slash == NULL || dot > slash) ? "'" : "",
+                    imgio_have_png() ? ", .png" : "");
     }
     if (fmt == OUT_PGM && color) {
         return fail(err, errlen, "%s: a colour image cannot be written as PGM: use .ppm%s", path,

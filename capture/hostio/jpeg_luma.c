@@ -97,8 +97,8 @@ int jpeg_luma_decode(jpeg_luma *d, const uint8_t *data, size_t len, uint32_t wid
         return -1;
     }
     /* TJPF_GRAY: the luma component only; TJFLAG_STOPONWARNING: a damaged frame fails. */
-    if (tjDecompress2(d->tj, data, (unsigned long)len, dst, (int)width, (int)dst_stride, (int)height, TJPF_GRAY,
-                      TJFLAG_STOPONWARNING) != 0) {
+    if (tjDecompress2(d->tj, data, (unsigned long)len, dst, (int)width, (int)dst_stride,
+                      (int)height, TJPF_GRAY, TJFLAG_STOPONWARNING) != 0) {
         snprintf(err, errlen, "JPEG: %s", tjGetErrorStr2(d->tj));
         renew(d);
         return -1;
@@ -115,7 +115,9 @@ int jpeg_luma_available(void)
 
 jpeg_luma *jpeg_luma_open(char *err, size_t errlen)
 {
-    snprintf(err, errlen, "this build reads no JPEG (built without libturbojpeg: apt-get install libturbojpeg0-dev)");
+    snprintf(
+        err, errlen,
+        "this build reads no JPEG (built without libturbojpeg: apt-get install libturbojpeg0-dev)");
     return NULL;
 }
 

@@ -71,6 +71,7 @@ int overlay_write(const char *path, const uint8_t *gray, uint32_t width, uint32_
 {
     static const uint8_t RED[3] = {255, 40, 40};
     static const uint8_t CYAN[3] = {0, 230, 255};
+    static const uint8_t YELLOW[3] = {255, 220, 0};
     imgio_rgb o;
     uint32_t i, k, x, y;
     int rc;
@@ -93,14 +94,19 @@ int overlay_write(const char *path, const uint8_t *gray, uint32_t width, uint32_
         const symline_segment *s = &r->segments[i];
         uint32_t phase = 0u;
         if (s->kind == SYMLINE_KIND_LINE) {
-            draw_line(&o, q8_round(s->x0), q8_round(s->y0), q8_round(s->x1), q8_round(s->y1),
-                      RED, 0, &phase);
+            draw_line(&o, q8_round(s->x0), q8_round(s->y0), q8_round(s->x1), q8_round(s->y1), RED,
+                      0, &phase);
         } else {
             const symline_point *p = r->points + s->first;
             for (k = 1; k < s->count; k++) {
                 draw_line(&o, p[k - 1].x, p[k - 1].y, p[k].x, p[k].y, CYAN, 1, &phase);
             }
         }
+    }
+    for (k = 1; k < r->field.count && k < SYMLINE_FIELD_MAX_VERTICES; k++) {
+        uint32_t phase = 0u;
+        const symline_field_vertex *a = &r->field.v[k - 1u], *b = &r->field.v[k];
+        draw_line(&o, a->x, a->y, b->x, b->y, YELLOW, 0, &phase);
     }
     rc = imgio_write_rgb(path, &o, err, errlen);
     free(o.px);

@@ -64,7 +64,8 @@ int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result
     return segjson_write_named(f, NULL, width, height, r);
 }
 
-int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t height, const symline_result *r)
+int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t height,
+                        const symline_result *r)
 {
     uint32_t i, k;
     fputc('{', f);
@@ -105,6 +106,15 @@ int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t heig
         }
         fputc('}', f);
     }
-    fputs(r->segment_count ? "\n ]}\n" : "]}\n", f);
+    fputs(r->segment_count ? "\n ]" : "]", f);
+    if (r->field.count > 0u) {
+        fputs(",\n \"field_boundary\": [", f);
+        for (k = 0; k < r->field.count && k < SYMLINE_FIELD_MAX_VERTICES; k++) {
+            fprintf(f, "%s[%ld, %ld]", k == 0u ? "" : ", ", (long)r->field.v[k].x,
+                    (long)r->field.v[k].y);
+        }
+        fputc(']', f);
+    }
+    fputs("}\n", f);
     return ferror(f) ? -1 : 0;
 }

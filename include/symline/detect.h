@@ -9,10 +9,13 @@
  *     ... ws = a static or stack buffer of `need` bytes ...
  *     symline_segment segs[64];
  *     symline_point pts[8192];
- *     symline_result res = { segs, 64, 0, pts, 8192, 0, 0, 0 };
+ *     symline_result res = { segs, 64, 0, pts, 8192, 0, 0, {0}, 0 };
  *     symline_status st = symline_detect(&img, &cfg, ws, need, &res);
  *
- * Pipeline, run once per axis and scale ("pass"), fine scale first:
+ * First the field boundary (symline/field.h, config field_boundary): where
+ * the carpet ends, reported in result.field; by default line points above it
+ * are dropped before they are traced. Then the pipeline, run once per axis
+ * and scale ("pass"), fine scale first:
  *  1. operator + extrema over a ring of rows (the frame is processed in
  *     horizontal strips; working memory grows with width * radius, not with
  *     the frame height);
@@ -38,6 +41,7 @@
 
 #include <stdbool.h>
 
+#include "symline/field.h"
 #include "symline/types.h"
 
 #ifdef __cplusplus
@@ -52,6 +56,13 @@ extern "C" {
 #define SYMLINE_DETECT_MAX_A_DISTANCE 32u
 /* config.merge_gap: the gap follows the frame, width / 8 px. */
 #define SYMLINE_MERGE_GAP_AUTO 0xFFFFFFFFu
+
+/* What the detector does with the field boundary. */
+typedef enum symline_field_mode {
+    SYMLINE_FIELD_OFF = 0,  /* not computed (result.field.count = 0) */
+    SYMLINE_FIELD_DROP = 1, /* computed, reported; line points above it dropped */
+    SYMLINE_FIELD_KEEP = 2  /* computed, reported; every detection kept */
+} symline_field_mode;
 
 /* Which axes a detection runs. */
 typedef enum symline_axes {
@@ -98,20 +109,24 @@ typedef struct symline_config {
     symline_filter filter; /* default SYMLINE_FILTER_CONTRAST */
     uint32_t illumination; /* minimum gray value of a line point, 0..255
                               (0 disables); default 0, the paper used 100 */
-    uint32_t adaptive;     /* 1: the two thresholds below follow the frame's
-                              mean gray value and its standard deviation sigma,
+    bool adaptive;         /* true: the thresholds below follow the gray values of
+                              the field (below the field boundary; the whole
+                              frame when there is none or detections above it
+                              are kept): their median ("mean" below) and their
+                              spread sigma (1.4826 x the median absolute
+                              deviation), on every 2nd pixel of every 2nd row,
                               so a brighter, darker or lower-contrast exposure
-                              of the same scene gives the same lines; 0: off.
-                              Default 1 */
+                              of the same scene gives the same lines; false:
+                              off. Default true */
     int32_t bright_sigma10; /* adaptive: a line point's gray value must reach
                               mean + bright_sigma10/10 * sigma, -100..100;
                               default 0 (the mean) */
     uint32_t ridge_sigma10; /* adaptive: contrast filter ridge height of at
-                              least ridge_sigma10/10 * sigma, 0..100; default 10 */
+                              least ridge_sigma10/10 * sigma, 0..100; default 9 */
     int32_t side_sigma10;  /* adaptive, contrast filter: both sides of the ridge
                               must stay at or below mean + side_sigma10/10 *
                               sigma (a line lies on the darker carpet, not on a
-                              bright wall), -100..100; 100 = off; default 15 */
+                              bright wall), -100..100; 100 = off; default 30 */
     uint32_t a_distance;   /* paper filter: largest distance (px, at the pass's
                               scale) of the A point across the line,
                               1..SYMLINE_DETECT_MAX_A_DISTANCE (32);
@@ -139,6 +154,16 @@ typedef struct symline_config {
                               SYMLINE_MERGE_GAP_AUTO = width / 8 */
     uint32_t merge_dev_q8; /* ... and whose ends lie within this distance of the
                               other's line, Q8 px; default 640 (2.5 px) */
+    symline_field_mode field_boundary; /* the field boundary (symline/field.h),
+                              found before the passes and reported in
+                              result.field: SYMLINE_FIELD_DROP (default) also
+                              drops line points above it before they are
+                              traced, SYMLINE_FIELD_KEEP keeps them,
+                              SYMLINE_FIELD_OFF does not look for it */
+    uint32_t field_margin; /* DROP keeps line points up to this many px above
+                              the boundary, 0..SYMLINE_MAX_DIM; default 4 */
+    symline_field_config field; /* the boundary's settings; default
+                              symline_field_config_default() */
 } symline_config;
 /* clang-format on */
 
@@ -147,32 +172,34 @@ void symline_config_default(symline_config *cfg);
 
 /* A field of symline_config, for symline_config_check(); in declaration order. */
 typedef enum symline_config_field {
-    SYMLINE_FIELD_NONE = 0, /* every field within its range */
-    SYMLINE_FIELD_AXES,
-    SYMLINE_FIELD_RADIUS,
-    SYMLINE_FIELD_LEVELS,
-    SYMLINE_FIELD_FILTER,
-    SYMLINE_FIELD_ILLUMINATION,
-    SYMLINE_FIELD_ADAPTIVE,
-    SYMLINE_FIELD_BRIGHT_SIGMA10,
-    SYMLINE_FIELD_RIDGE_SIGMA10,
-    SYMLINE_FIELD_SIDE_SIGMA10,
-    SYMLINE_FIELD_A_DISTANCE,
-    SYMLINE_FIELD_CONTRAST_PCT,
-    SYMLINE_FIELD_CONTRAST_MIN,
-    SYMLINE_FIELD_CONTRAST_ASYM_PCT,
-    SYMLINE_FIELD_MIN_LENGTH,
-    SYMLINE_FIELD_CURVE_DEV_Q8,
-    SYMLINE_FIELD_CURVE_BEND_Q8,
-    SYMLINE_FIELD_MERGE_DEV_Q8
+    SYMLINE_CFG_NONE = 0, /* every field within its range */
+    SYMLINE_CFG_AXES,
+    SYMLINE_CFG_RADIUS,
+    SYMLINE_CFG_LEVELS,
+    SYMLINE_CFG_FILTER,
+    SYMLINE_CFG_ILLUMINATION,
+    SYMLINE_CFG_BRIGHT_SIGMA10,
+    SYMLINE_CFG_RIDGE_SIGMA10,
+    SYMLINE_CFG_SIDE_SIGMA10,
+    SYMLINE_CFG_A_DISTANCE,
+    SYMLINE_CFG_CONTRAST_PCT,
+    SYMLINE_CFG_CONTRAST_MIN,
+    SYMLINE_CFG_CONTRAST_ASYM_PCT,
+    SYMLINE_CFG_MIN_LENGTH,
+    SYMLINE_CFG_CURVE_DEV_Q8,
+    SYMLINE_CFG_CURVE_BEND_Q8,
+    SYMLINE_CFG_MERGE_DEV_Q8,
+    SYMLINE_CFG_FIELD_BOUNDARY,
+    SYMLINE_CFG_FIELD_MARGIN,
+    SYMLINE_CFG_FIELD /* a setting of config.field (symline/field.h) */
 } symline_config_field;
 
 /*
  * The range check symline_detect() makes, with the culprit named: returns
  * SYMLINE_OK, SYMLINE_ERR_NULL (cfg NULL) or SYMLINE_ERR_CONFIG, and when
  * field is not NULL sets *field to the first field out of its range
- * (SYMLINE_FIELD_RADIUS for config.radius, ...), SYMLINE_FIELD_NONE when
- * there is none. merge_gap takes any value, so it is never named.
+ * (SYMLINE_CFG_RADIUS for config.radius, ...), SYMLINE_CFG_NONE when there
+ * is none. adaptive and merge_gap take any value, so they are never named.
  */
 symline_status symline_config_check(const symline_config *cfg, symline_config_field *field);
 
@@ -221,15 +248,17 @@ typedef struct symline_result {
     uint32_t segment_count;
     symline_point *points;
     uint32_t point_cap;
-    uint32_t point_count;   /* points referenced by the segments, [0, point_count) */
-    bool truncated;         /* true when segments or points did not fit */
-    uint32_t points_needed; /* the point_cap this frame needed: when truncated
-                               is false, exactly the smallest capacity that gives
-                               this same result (size a static array from the
-                               largest value over representative frames); when
-                               points ran out, at least enough for the pass that
-                               ran out (more than point_cap; repeat with it until
-                               truncated is false) */
+    uint32_t point_count;         /* points referenced by the segments, [0, point_count) */
+    bool truncated;               /* true when segments or points did not fit */
+    symline_field_boundary field; /* the field boundary (symline/field.h);
+                                     count 0 when not computed */
+    uint32_t points_needed;       /* the point_cap this frame needed: when truncated
+                                     is false, exactly the smallest capacity that
+                                     gives this same result (size a static array
+                                     from the largest value over representative
+                                     frames); when points ran out, at least enough
+                                     for the pass that ran out (more than point_cap;
+                                     repeat with it until truncated is false) */
 } symline_result;
 
 /*
@@ -246,20 +275,35 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
  *     static uint8_t ws[SYMLINE_DETECT_WORKSPACE_SIZE(320, 240, 3, 0, 0)];
  *
  * At least symline_detect_workspace_size() for a width x height frame and any
- * configuration with this radius, A distance and levels (the axes and the
- * other fields do not raise it), on every target; a few hundred bytes more
- * than it (the fixed part covers the private state of a pass), a little more
- * when only the vertical axis runs. a_distance is the A point distance the
- * filter uses: 0 with the contrast filter (the default); with the paper
- * filter its config.a_distance, or the radius when that is 0. levels as in
- * the config (0 = auto). Arguments are evaluated more than once.
+ * configuration with this radius, A distance and levels (the axes, the field
+ * boundary's mode and the other fields do not raise it; config.field.cell 0,
+ * the default, or at least the automatic cell: 8 px, 16 px from 1024 px wide
+ * on), on every target; a few hundred bytes more than
+ * the query, a little more when only the vertical axis runs. a_distance is
+ * the A point distance the filter uses: 0 with the contrast filter (the
+ * default); with the paper filter its config.a_distance, or the radius when
+ * that is 0. levels as in the config (0 = auto). Arguments are evaluated more
+ * than once.
  */
 #define SYMLINE_DETECT_WORKSPACE_SIZE(width, height, radius, a_distance, levels)                   \
+    SYMLINE_DETECT_WS_MAX_(SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels) +  \
+                               2u * (size_t)(width) + 16u,                                         \
+                           SYMLINE_DETECT_WS_MAX_(2u * (size_t)(width) + 1056u,                    \
+                                                  SYMLINE_DETECT_WS_FIELD_(width, height)))
+/* The passes over axes and scales (lib/pass.h), the largest of them. */
+#define SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels)                       \
     ((size_t)SYMLINE_DETECT_WS_FIXED + (size_t)4u * ((size_t)(height) + 1u) +                      \
      (size_t)8u * (2u * (size_t)(radius) + 1u) +                                                   \
      SYMLINE_DETECT_WS_MAX_((size_t)(width) *                                                      \
                                 (18u + 2u * (size_t)(a_distance) + (size_t)(radius)),              \
                             SYMLINE_DETECT_WS_COARSE_(width, height, radius, a_distance, levels)))
+/* The field boundary's search (symline/field.h) with cells of the automatic
+ * size or larger: 8 px, 16 px from 1024 px wide on. */
+#define SYMLINE_DETECT_WS_FIELD_(width, height)                                                    \
+    ((size_t)640u + 3u * ((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u) * 8u +            \
+     2u * ((size_t)(height) / SYMLINE_DETECT_WS_CELL_(width) + 1u) *                               \
+         ((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u))
+#define SYMLINE_DETECT_WS_CELL_(width) ((size_t)(width) >= 1024u ? 16u : 8u)
 /* The coarser scales (2x downsampled and beyond), when the configuration and
  * the frame have them (detect.c: the number of scales). */
 #define SYMLINE_DETECT_WS_COARSE_(width, height, radius, a_distance, levels)                       \
@@ -284,6 +328,26 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
  */
 symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
                               size_t ws_size, symline_result *out);
+
+/*
+ * The line filter's output alone: the line points of every pass (axes and
+ * scales as configured, adaptive thresholds included), in full-resolution
+ * pixels with their sub-pixel offsets across the line (fx, fy, as in the
+ * segments' points), pass after pass,
+ * each pass in raster order, written to pts[0 .. *count-1]. Points without a
+ * line point among their 8 neighbours in their pass (type A, SPEC §4) are
+ * left out, as the tracer ignores them. A pixel found by two passes is
+ * listed twice. This is what symline_detect() traces and what
+ * the Muff-space finder (symline/muff.h) votes with.
+ * ws: ws_size >= symline_detect_workspace_size() bytes; pts: cap entries
+ * (not NULL; give room for every line point: a few thousand in a 320x240
+ * field view). When cap runs out,
+ * the points that fit are kept and *truncated is set to true (else false).
+ * Returns SYMLINE_OK, ERR_NULL, ERR_SIZE, ERR_STRIDE, ERR_CONFIG or ERR_BUFFER.
+ */
+symline_status symline_line_points(const symline_image *img, const symline_config *cfg, void *ws,
+                                   size_t ws_size, symline_point *pts, uint32_t cap,
+                                   uint32_t *count, bool *truncated);
 
 #ifdef __cplusplus
 }

@@ -34,21 +34,21 @@ static inline uintptr_t stack_pointer(void)
     return sp;
 }
 
-#define MEASURE(name, call)                                                              \
-    do {                                                                                 \
-        volatile uint32_t *lo = (volatile uint32_t *)(stack_pointer() - REGION);         \
-        volatile uint32_t *p;                                                            \
-        uintptr_t sp = stack_pointer();                                                  \
-        symline_status st;                                                               \
-        for (p = lo; (uintptr_t)p < sp - 16u; p++) {                                     \
-            *p = PATTERN;                                                                \
-        }                                                                                \
-        st = (call);                                                                     \
-        for (p = lo; (uintptr_t)p < sp && *p == PATTERN; p++) {                          \
-        }                                                                                \
-        printf("stack %-14s %4lu B used%s\n", name, (unsigned long)(sp - (uintptr_t)p),  \
-               st == SYMLINE_OK ? "" : " (call FAILED)");                                \
-        bad |= st != SYMLINE_OK;                                                         \
+#define MEASURE(name, call)                                                                        \
+    do {                                                                                           \
+        volatile uint32_t *lo = (volatile uint32_t *)(stack_pointer() - REGION);                   \
+        volatile uint32_t *p;                                                                      \
+        uintptr_t sp = stack_pointer();                                                            \
+        symline_status st;                                                                         \
+        for (p = lo; (uintptr_t)p < sp - 16u; p++) {                                               \
+            *p = PATTERN;                                                                          \
+        }                                                                                          \
+        st = (call);                                                                               \
+        for (p = lo; (uintptr_t)p < sp && *p == PATTERN; p++) {                                    \
+        }                                                                                          \
+        printf("stack %-14s %4lu B used%s\n", name, (unsigned long)(sp - (uintptr_t)p),            \
+               st == SYMLINE_OK ? "" : " (call FAILED)");                                          \
+        bad |= st != SYMLINE_OK;                                                                   \
     } while (0)
 
 int main(void)
@@ -57,17 +57,17 @@ int main(void)
     const symline_image img = {f->width, f->height, f->width, f->px};
     const uint32_t n = f->width * f->height;
     symline_config def, paper;
-    symline_result r1 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, 0u};
-    symline_result r2 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, 0u};
+    symline_result r1 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
+    symline_result r2 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
     int bad = 0;
     symline_config_default(&def);
     paper = def;
     paper.filter = SYMLINE_FILTER_PAPER;
     paper.illumination = 100u;
-    MEASURE("symline_symmetry", symline_symmetry(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, f->width,
-                                                 n, ws, sizeof ws));
-    MEASURE("symline_extrema", symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, f->width,
-                                               n, ws, sizeof ws));
+    MEASURE("symline_symmetry",
+            symline_symmetry(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, f->width, n, ws, sizeof ws));
+    MEASURE("symline_extrema",
+            symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, f->width, n, ws, sizeof ws));
     MEASURE("symline_detect", symline_detect(&img, &def, ws, sizeof ws, &r1));
     MEASURE("symline_detect", symline_detect(&img, &paper, ws, sizeof ws, &r2));
     return bad;

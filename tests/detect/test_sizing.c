@@ -40,20 +40,22 @@ static void check_bound(uint32_t w, uint32_t h, const symline_config *c)
     }
     /* Never below; and where the horizontal axis runs (the bound's case), a few hundred
      * bytes over at most, plus an eighth where the scales differ from its worst case. */
-    if (bound < exact || (c->axes != SYMLINE_AXES_VERTICAL &&
-                          bound - exact > SYMLINE_DETECT_WS_FIXED + 8u * (2u * c->radius + 1u) + exact / 8u)) {
-        fprintf(stderr, "%ux%u radius %u a %u axes %d levels %u filter %d: exact %zu, bound %zu\n", w, h,
-                c->radius, filter_a(c), (int)c->axes, c->levels, (int)c->filter, exact, bound);
+    if (bound < exact ||
+        (c->axes != SYMLINE_AXES_VERTICAL &&
+         bound - exact > SYMLINE_DETECT_WS_FIXED + 8u * (2u * c->radius + 1u) + exact / 8u)) {
+        fprintf(stderr, "%ux%u radius %u a %u axes %d levels %u filter %d: exact %zu, bound %zu\n",
+                w, h, c->radius, filter_a(c), (int)c->axes, c->levels, (int)c->filter, exact,
+                bound);
         fail();
     }
 }
 
 static void test_workspace_macro_bounds_the_query(void **state)
 {
-    static const uint32_t sizes[][2] = {{1, 1},     {2, 3},     {7, 5},     {16, 16},   {33, 17},
-                                        {64, 48},   {160, 120}, {320, 240}, {321, 241}, {640, 480},
-                                        {608, 800}, {1280, 720}, {1920, 1080}, {4000, 16}, {16, 4000},
-                                        {65535, 2}, {2, 65535}};
+    static const uint32_t sizes[][2] = {
+        {1, 1},       {2, 3},     {7, 5},     {16, 16},   {33, 17},   {64, 48},
+        {160, 120},   {320, 240}, {321, 241}, {640, 480}, {608, 800}, {1280, 720},
+        {1920, 1080}, {4000, 16}, {16, 4000}, {65535, 2}, {2, 65535}};
     static const uint32_t radii[] = {1, 2, 3, 5, 8, 16, 31, 32};
     static const uint32_t a_dist[] = {0, 1, 3, 32};
     size_t si, ri, ai;
@@ -101,8 +103,8 @@ static void load(frame *f, const char *name)
 }
 
 /* One detection with point_cap points; the segments and points land in the given arrays. */
-static symline_result detect(const frame *f, const symline_config *c, symline_point *pts, uint32_t cap,
-                             symline_segment *segs, uint32_t segcap)
+static symline_result detect(const frame *f, const symline_config *c, symline_point *pts,
+                             uint32_t cap, symline_segment *segs, uint32_t segcap)
 {
     symline_result r;
     const size_t n = symline_detect_workspace_size(f->view.width, f->view.height, c);
@@ -125,7 +127,9 @@ static symline_result detect(const frame *f, const symline_config *c, symline_po
  */
 static void check_points_needed(const char *name, const symline_config *c)
 {
-    enum { SEGS = 4096 };
+    enum {
+        SEGS = 4096
+    };
     frame f;
     symline_segment *s1 = malloc(SEGS * sizeof *s1), *s2 = malloc(SEGS * sizeof *s2);
     symline_point *p1, *p2;
@@ -195,7 +199,7 @@ static void test_points_needed_is_exact(void **state)
 static void expect_field(void (*spoil)(symline_config *), symline_config_field want)
 {
     symline_config c;
-    symline_config_field field = SYMLINE_FIELD_NONE;
+    symline_config_field field = SYMLINE_CFG_NONE;
     symline_config_default(&c);
     spoil(&c);
     assert_int_equal(symline_config_check(&c, &field), SYMLINE_ERR_CONFIG);
@@ -203,61 +207,124 @@ static void expect_field(void (*spoil)(symline_config *), symline_config_field w
     assert_int_equal(symline_config_check(&c, NULL), SYMLINE_ERR_CONFIG);
 }
 
-static void bad_axes(symline_config *c) { c->axes = (symline_axes)7; }
-static void bad_radius0(symline_config *c) { c->radius = 0u; }
-static void bad_radius(symline_config *c) { c->radius = 33u; }
-static void bad_levels(symline_config *c) { c->levels = 6u; }
-static void bad_filter(symline_config *c) { c->filter = (symline_filter)2; }
-static void bad_illum(symline_config *c) { c->illumination = 256u; }
-static void bad_adaptive(symline_config *c) { c->adaptive = 2u; }
-static void bad_bright(symline_config *c) { c->bright_sigma10 = -101; }
-static void bad_ridge(symline_config *c) { c->ridge_sigma10 = 101u; }
-static void bad_side(symline_config *c) { c->side_sigma10 = 101; }
-static void bad_adist(symline_config *c) { c->a_distance = 33u; }
-static void bad_cpct(symline_config *c) { c->contrast_pct = 101u; }
-static void bad_cmin(symline_config *c) { c->contrast_min = 256u; }
-static void bad_asym(symline_config *c) { c->contrast_asym_pct = 1001u; }
-static void bad_minlen(symline_config *c) { c->min_length = SYMLINE_MAX_DIM + 1u; }
-static void bad_curve(symline_config *c) { c->curve_dev_q8 = (SYMLINE_MAX_DIM << 8) + 1u; }
-static void bad_bend(symline_config *c) { c->curve_bend_q8 = (SYMLINE_MAX_DIM << 8) + 1u; }
-static void bad_mdev(symline_config *c) { c->merge_dev_q8 = (SYMLINE_MAX_DIM << 8) + 1u; }
-static void bad_two(symline_config *c) { c->levels = 9u; c->min_length = SYMLINE_MAX_DIM + 1u; }
+static void bad_axes(symline_config *c)
+{
+    c->axes = (symline_axes)7;
+}
+static void bad_radius0(symline_config *c)
+{
+    c->radius = 0u;
+}
+static void bad_radius(symline_config *c)
+{
+    c->radius = 33u;
+}
+static void bad_levels(symline_config *c)
+{
+    c->levels = 6u;
+}
+static void bad_filter(symline_config *c)
+{
+    c->filter = (symline_filter)2;
+}
+static void bad_illum(symline_config *c)
+{
+    c->illumination = 256u;
+}
+static void bad_bright(symline_config *c)
+{
+    c->bright_sigma10 = -101;
+}
+static void bad_ridge(symline_config *c)
+{
+    c->ridge_sigma10 = 101u;
+}
+static void bad_side(symline_config *c)
+{
+    c->side_sigma10 = 101;
+}
+static void bad_adist(symline_config *c)
+{
+    c->a_distance = 33u;
+}
+static void bad_cpct(symline_config *c)
+{
+    c->contrast_pct = 101u;
+}
+static void bad_cmin(symline_config *c)
+{
+    c->contrast_min = 256u;
+}
+static void bad_asym(symline_config *c)
+{
+    c->contrast_asym_pct = 1001u;
+}
+static void bad_minlen(symline_config *c)
+{
+    c->min_length = SYMLINE_MAX_DIM + 1u;
+}
+static void bad_curve(symline_config *c)
+{
+    c->curve_dev_q8 = (SYMLINE_MAX_DIM << 8) + 1u;
+}
+static void bad_bend(symline_config *c)
+{
+    c->curve_bend_q8 = (SYMLINE_MAX_DIM << 8) + 1u;
+}
+static void bad_mdev(symline_config *c)
+{
+    c->merge_dev_q8 = (SYMLINE_MAX_DIM << 8) + 1u;
+}
+static void bad_fmode(symline_config *c)
+{
+    c->field_boundary = (symline_field_mode)9;
+}
+static void bad_fmargin(symline_config *c)
+{
+    c->field_margin = SYMLINE_MAX_DIM + 1u;
+}
+static void bad_two(symline_config *c)
+{
+    c->levels = 9u;
+    c->min_length = SYMLINE_MAX_DIM + 1u;
+}
 
 static void test_config_check_names_the_field(void **state)
 {
     symline_config c;
-    symline_config_field field = SYMLINE_FIELD_RADIUS;
+    symline_config_field field = SYMLINE_CFG_RADIUS;
     static uint8_t ws[64];
     static symline_point pts[4];
     static const uint8_t px[4] = {0, 0, 0, 0};
     symline_image img = {2, 2, 2, px};
-    symline_result r = {NULL, 0, 0, pts, 4, 0, 0, 0};
+    symline_result r = {NULL, 0, 0, pts, 4, 0, 0, {0}, 0};
     (void)state;
     symline_config_default(&c);
     assert_int_equal(symline_config_check(&c, &field), SYMLINE_OK);
-    assert_int_equal(field, SYMLINE_FIELD_NONE);
-    field = SYMLINE_FIELD_RADIUS;
+    assert_int_equal(field, SYMLINE_CFG_NONE);
+    field = SYMLINE_CFG_RADIUS;
     assert_int_equal(symline_config_check(NULL, &field), SYMLINE_ERR_NULL);
-    assert_int_equal(field, SYMLINE_FIELD_NONE);
-    expect_field(bad_axes, SYMLINE_FIELD_AXES);
-    expect_field(bad_radius0, SYMLINE_FIELD_RADIUS);
-    expect_field(bad_radius, SYMLINE_FIELD_RADIUS);
-    expect_field(bad_levels, SYMLINE_FIELD_LEVELS);
-    expect_field(bad_filter, SYMLINE_FIELD_FILTER);
-    expect_field(bad_illum, SYMLINE_FIELD_ILLUMINATION);
-    expect_field(bad_adaptive, SYMLINE_FIELD_ADAPTIVE);
-    expect_field(bad_bright, SYMLINE_FIELD_BRIGHT_SIGMA10);
-    expect_field(bad_ridge, SYMLINE_FIELD_RIDGE_SIGMA10);
-    expect_field(bad_side, SYMLINE_FIELD_SIDE_SIGMA10);
-    expect_field(bad_adist, SYMLINE_FIELD_A_DISTANCE);
-    expect_field(bad_cpct, SYMLINE_FIELD_CONTRAST_PCT);
-    expect_field(bad_cmin, SYMLINE_FIELD_CONTRAST_MIN);
-    expect_field(bad_asym, SYMLINE_FIELD_CONTRAST_ASYM_PCT);
-    expect_field(bad_minlen, SYMLINE_FIELD_MIN_LENGTH);
-    expect_field(bad_curve, SYMLINE_FIELD_CURVE_DEV_Q8);
-    expect_field(bad_bend, SYMLINE_FIELD_CURVE_BEND_Q8);
-    expect_field(bad_mdev, SYMLINE_FIELD_MERGE_DEV_Q8);
-    expect_field(bad_two, SYMLINE_FIELD_LEVELS); /* the first one, in declaration order */
+    assert_int_equal(field, SYMLINE_CFG_NONE);
+    expect_field(bad_axes, SYMLINE_CFG_AXES);
+    expect_field(bad_radius0, SYMLINE_CFG_RADIUS);
+    expect_field(bad_radius, SYMLINE_CFG_RADIUS);
+    expect_field(bad_levels, SYMLINE_CFG_LEVELS);
+    expect_field(bad_filter, SYMLINE_CFG_FILTER);
+    expect_field(bad_illum, SYMLINE_CFG_ILLUMINATION);
+    expect_field(bad_bright, SYMLINE_CFG_BRIGHT_SIGMA10);
+    expect_field(bad_ridge, SYMLINE_CFG_RIDGE_SIGMA10);
+    expect_field(bad_side, SYMLINE_CFG_SIDE_SIGMA10);
+    expect_field(bad_adist, SYMLINE_CFG_A_DISTANCE);
+    expect_field(bad_cpct, SYMLINE_CFG_CONTRAST_PCT);
+    expect_field(bad_cmin, SYMLINE_CFG_CONTRAST_MIN);
+    expect_field(bad_asym, SYMLINE_CFG_CONTRAST_ASYM_PCT);
+    expect_field(bad_minlen, SYMLINE_CFG_MIN_LENGTH);
+    expect_field(bad_curve, SYMLINE_CFG_CURVE_DEV_Q8);
+    expect_field(bad_bend, SYMLINE_CFG_CURVE_BEND_Q8);
+    expect_field(bad_mdev, SYMLINE_CFG_MERGE_DEV_Q8);
+    expect_field(bad_fmode, SYMLINE_CFG_FIELD_BOUNDARY);
+    expect_field(bad_fmargin, SYMLINE_CFG_FIELD_MARGIN);
+    expect_field(bad_two, SYMLINE_CFG_LEVELS); /* the first one, in declaration order */
     /* symline_detect() refuses exactly what the check names */
     symline_config_default(&c);
     c.side_sigma10 = 150;

@@ -23,46 +23,49 @@ static int usage_error(const char *fmt, const char *arg)
 
 static void usage(FILE *f)
 {
-    fputs("usage: symline-capture SOURCE [options]\n"
-          "\n"
-          "Source (one):\n"
-          "  --device /dev/videoN   V4L2 capture device (--device N means /dev/videoN)\n"
-          "  --list-devices         print the V4L2 devices and the formats symline reads, then exit\n"
-          "  --list-formats         with --device: print its formats, sizes and frame rates, then exit\n"
+    fputs(
+        "usage: symline-capture SOURCE [options]\n"
+        "\n"
+        "Source (one):\n"
+        "  --device /dev/videoN   V4L2 capture device (--device N means /dev/videoN)\n"
+        "  --list-devices         print the V4L2 devices and the formats symline reads, then exit\n"
+        "  --list-formats         with --device: print its formats, sizes and frame rates, then "
+        "exit\n"
 #ifdef SYMLINE_HAVE_LIBCAMERA
-          "  --camera ID|INDEX      libcamera camera, by id or by index (0 = first)\n"
-          "  --list-cameras         print the cameras libcamera sees, then exit\n"
+        "  --camera ID|INDEX      libcamera camera, by id or by index (0 = first)\n"
+        "  --list-cameras         print the cameras libcamera sees, then exit\n"
 #endif
-          "  --replay PATH          folder of .pgm/.png/.jpg frames (name order; *.mask.* are\n"
-          "                         skipped), one image, a .y4m stream, or a text file listing\n"
-          "                         one image path per line\n"
-          "\n"
-          "Capture:\n"
-          "  --frames N             stop after N frames (0 = until stopped; default)\n"
-          "  --width W --height H   requested frame size (the granted size is reported)\n"
-          "  --format FOURCC        GREY NV12 NV21 YU12 YV12 NV16 NV61 422P YUYV YVYU UYVY VYUY,\n"
-          "                         multi-planar NM12 NM21 YM12 YM21 NM16 NM61 YM16,\n"
-          "                         packed RGB RGB3 BGR3 XR24 AR24 XB24 AB24 (converted to luma),\n"
-          "                         8-bit Bayer BA81 GBRG GRBG RGGB (converted to luma),\n"
-          "                         Motion-JPEG MJPG JPEG (decoded to luma)\n"
-          "                         (default: the most direct one the device offers)\n"
-          "  --fps F[/D]            requested frame rate of the camera\n"
-          "  --rate F[/D]|max       replay pace in frames per second; default: a .y4m's own\n"
-          "                         frame rate, image files as fast as they are read\n"
-          "  --buffers N            mmap buffers / request queue depth, 2..32 (default 4)\n"
-          "  --all-frames           process every frame in order; default is freshest-frame\n"
-          "                         mode: when several frames are ready, the newest is\n"
-          "                         processed and the older ones are returned unprocessed\n"
-          "  --exposure US          manual exposure time in microseconds, if the device offers it\n"
-          "  --timeout MS           give up when no frame arrives for MS ms (default 2000)\n"
-          "  --loop                 replay: start over after the last frame\n"
-          "\n"
-          "Detector (as in `symline lines`):\n",
-          f);
+        "  --replay PATH          folder of .pgm/.png/.jpg frames (name order; *.mask.* are\n"
+        "                         skipped), one image, a .y4m stream, or a text file listing\n"
+        "                         one image path per line\n"
+        "\n"
+        "Capture:\n"
+        "  --frames N             stop after N frames (0 = until stopped; default)\n"
+        "  --width W --height H   requested frame size (the granted size is reported)\n"
+        "  --format FOURCC        GREY NV12 NV21 YU12 YV12 NV16 NV61 422P YUYV YVYU UYVY VYUY,\n"
+        "                         multi-planar NM12 NM21 YM12 YM21 NM16 NM61 YM16,\n"
+        "                         packed RGB RGB3 BGR3 XR24 AR24 XB24 AB24 (converted to luma),\n"
+        "                         8-bit Bayer BA81 GBRG GRBG RGGB (converted to luma),\n"
+        "                         Motion-JPEG MJPG JPEG (decoded to luma)\n"
+        "                         (default: the most direct one the device offers)\n"
+        "  --fps F[/D]            requested frame rate of the camera\n"
+        "  --rate F[/D]|max       replay pace in frames per second; default: a .y4m's own\n"
+        "                         frame rate, image files as fast as they are read\n"
+        "  --buffers N            mmap buffers / request queue depth, 2..32 (default 4)\n"
+        "  --all-frames           process every frame in order; default is freshest-frame\n"
+        "                         mode: when several frames are ready, the newest is\n"
+        "                         processed and the older ones are returned unprocessed\n"
+        "  --exposure US          manual exposure time in microseconds, if the device offers it\n"
+        "  --timeout MS           give up when no frame arrives for MS ms (default 2000)\n"
+        "  --loop                 replay: start over after the last frame\n"
+        "\n"
+        "Detector (as in `symline lines`):\n",
+        f);
     detopts_help(f);
     fputs("\n"
           "Output:\n"
-          "  --summary-every S      rate and latency summary on stderr every S seconds (default 5, 0 = off)\n"
+          "  --summary-every S      rate and latency summary on stderr every S seconds (default 5, "
+          "0 = off)\n"
 
           "  --record K DIR         write the luma of every K-th frame as PGM (replayable)\n"
           "  --snapshot-every K DIR write every K-th frame with its detections drawn over it\n"
@@ -94,9 +97,26 @@ static int parse_fps(const char *s, uint32_t *num, uint32_t *den)
 }
 
 enum {
-    OPT_DEVICE = 0x100, OPT_LIST_DEVICES, OPT_LIST_FORMATS, OPT_CAMERA, OPT_LIST_CAMERAS, OPT_REPLAY, OPT_FRAMES,
-    OPT_WIDTH, OPT_HEIGHT, OPT_FORMAT, OPT_FPS, OPT_RATE, OPT_BUFFERS, OPT_ALL_FRAMES, OPT_EXPOSURE, OPT_TIMEOUT,
-    OPT_LOOP, OPT_SUMMARY, OPT_RECORD, OPT_SNAPSHOT
+    OPT_DEVICE = 0x100,
+    OPT_LIST_DEVICES,
+    OPT_LIST_FORMATS,
+    OPT_CAMERA,
+    OPT_LIST_CAMERAS,
+    OPT_REPLAY,
+    OPT_FRAMES,
+    OPT_WIDTH,
+    OPT_HEIGHT,
+    OPT_FORMAT,
+    OPT_FPS,
+    OPT_RATE,
+    OPT_BUFFERS,
+    OPT_ALL_FRAMES,
+    OPT_EXPOSURE,
+    OPT_TIMEOUT,
+    OPT_LOOP,
+    OPT_SUMMARY,
+    OPT_RECORD,
+    OPT_SNAPSHOT
 };
 
 static const struct option own_options[] = {
@@ -136,21 +156,11 @@ static int apply_own(app_options *o, int c, const char *arg, int argc, char **ar
             o->device = arg;
         }
         return 0;
-    case OPT_LIST_DEVICES:
-        o->list_devices = 1;
-        return 0;
-    case OPT_LIST_FORMATS:
-        o->list_formats = 1;
-        return 0;
-    case OPT_CAMERA:
-        o->camera = arg;
-        return 0;
-    case OPT_LIST_CAMERAS:
-        o->list_cameras = 1;
-        return 0;
-    case OPT_REPLAY:
-        o->replay = arg;
-        return 0;
+    case OPT_LIST_DEVICES: o->list_devices = 1; return 0;
+    case OPT_LIST_FORMATS: o->list_formats = 1; return 0;
+    case OPT_CAMERA: o->camera = arg; return 0;
+    case OPT_LIST_CAMERAS: o->list_cameras = 1; return 0;
+    case OPT_REPLAY: o->replay = arg; return 0;
     case OPT_FRAMES:
         if (detopts_u32(arg, 0, 0xffffffffu, &v) != 0) {
             return usage_error("--frames needs a count (0 = until stopped)%s", "");
@@ -164,12 +174,11 @@ static int apply_own(app_options *o, int c, const char *arg, int argc, char **ar
         }
         *(c == OPT_WIDTH ? &o->width : &o->height) = v;
         return 0;
-    case OPT_FORMAT:
-        o->format = arg;
-        return 0;
+    case OPT_FORMAT: o->format = arg; return 0;
     case OPT_FPS:
-        return parse_fps(arg, &o->fps_num, &o->fps_den) == 0 ? 0
-                                                              : usage_error("--fps needs a rate F or F/D%s", "");
+        return parse_fps(arg, &o->fps_num, &o->fps_den) == 0
+                   ? 0
+                   : usage_error("--fps needs a rate F or F/D%s", "");
     case OPT_RATE:
         if (strcmp(arg, "max") == 0) {
             o->rate_max = 1;
@@ -179,10 +188,10 @@ static int apply_own(app_options *o, int c, const char *arg, int argc, char **ar
                    ? 0
                    : usage_error("--rate needs a rate F or F/D, or 'max'%s", "");
     case OPT_BUFFERS:
-        return detopts_u32(arg, 2, 32, &o->buffers) == 0 ? 0 : usage_error("--buffers needs a count 2..32%s", "");
-    case OPT_ALL_FRAMES:
-        o->all_frames = 1;
-        return 0;
+        return detopts_u32(arg, 2, 32, &o->buffers) == 0
+                   ? 0
+                   : usage_error("--buffers needs a count 2..32%s", "");
+    case OPT_ALL_FRAMES: o->all_frames = 1; return 0;
     case OPT_EXPOSURE:
         if (detopts_u32(arg, 100, 100000000, &v) != 0) {
             return usage_error("--exposure needs microseconds >= 100%s", "");
@@ -195,11 +204,11 @@ static int apply_own(app_options *o, int c, const char *arg, int argc, char **ar
         }
         o->timeout_ms = (int)v;
         return 0;
-    case OPT_LOOP:
-        o->loop = 1;
-        return 0;
+    case OPT_LOOP: o->loop = 1; return 0;
     case OPT_SUMMARY:
-        return detopts_u32(arg, 0, 86400, &o->summary_s) == 0 ? 0 : usage_error("--summary-every needs seconds%s", "");
+        return detopts_u32(arg, 0, 86400, &o->summary_s) == 0
+                   ? 0
+                   : usage_error("--summary-every needs seconds%s", "");
     case OPT_RECORD:
     case OPT_SNAPSHOT:
         /* K DIR: the folder is the next argument. */
@@ -214,8 +223,7 @@ static int apply_own(app_options *o, int c, const char *arg, int argc, char **ar
             o->snapshot_dir = argv[optind++];
         }
         return 0;
-    default:
-        return usage_error("unknown option%s", "");
+    default: return usage_error("unknown option%s", "");
     }
 }
 
@@ -290,4 +298,3 @@ int app_parse_args(int argc, char **argv, app_options *o)
 #endif
     return 0;
 }
-

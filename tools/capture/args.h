@@ -9,8 +9,8 @@
 #include "symline/detect.h"
 
 typedef struct app_options {
-    const char *device;     /* V4L2 device path (a bare --device N is /dev/videoN) */
-    char device_buf[64];    /* holds that path when it was made from a number */
+    const char *device;  /* V4L2 device path (a bare --device N is /dev/videoN) */
+    char device_buf[64]; /* holds that path when it was made from a number */
     const char *camera;
     const char *replay;
     int list_cameras;       /* --list-cameras: print libcamera's cameras and exit */
@@ -19,12 +19,12 @@ typedef struct app_options {
     uint64_t frames;        /* 0 = until stopped or the replay ends */
     uint32_t width, height; /* 0 = the source's default */
     const char *format;
-    uint32_t fps_num, fps_den; /* 0 = the source's default */
+    uint32_t fps_num, fps_den;   /* 0 = the source's default */
     uint32_t rate_num, rate_den; /* replay pace; 0/0 = the recording's own rate (Y4M) or unpaced */
-    int rate_max;           /* --rate max: replay as fast as frames are read */
+    int rate_max;                /* --rate max: replay as fast as frames are read */
     uint32_t buffers;
-    int all_frames;         /* 1 = process every frame instead of the freshest */
-    int32_t exposure_us;    /* < 0 = leave the device's exposure alone */
+    int all_frames;      /* 1 = process every frame instead of the freshest */
+    int32_t exposure_us; /* < 0 = leave the device's exposure alone */
     int timeout_ms;
     int loop;
     uint32_t summary_s;
@@ -32,7 +32,7 @@ typedef struct app_options {
     const char *snapshot_dir;
     uint32_t record_every;
     const char *record_dir;
-    symline_config cfg;     /* detector settings, options as in `symline lines` */
+    symline_config cfg; /* detector settings, options as in `symline lines` */
 } app_options;
 
 #define APP_EXIT_OK 0

@@ -11,10 +11,12 @@
 #include "overlay.h"
 #include "segjson.h"
 #include "cli.h"
+#include "muffopts.h"
 #include "symline/detect.h"
 
 typedef struct lines_args {
     symline_config cfg;
+    muffopts method;   /* the tracer (default) or the Muff-space finder */
     cli_inputs in;     /* lines: every input; overlay: exactly one */
     const char *out;   /* overlay: the image */
     const char *json;  /* where the JSON goes: lines: stdout unless -o; overlay: only with --json */
@@ -29,6 +31,7 @@ static void lines_usage(FILE *f, const char *cmd)
         fprintf(f, "usage: symline lines [options] [-o FILE] IN...\n");
     }
     detopts_help(f);
+    muffopts_help(f);
     if (ov) {
         fprintf(f, "  IN                  binary PGM, PNG or JPEG (colour becomes luma); - reads stdin\n"
                    "  OUT, -o OUT         the frame in colour with lines (solid red) and curves\n"
@@ -50,7 +53,7 @@ static void lines_usage(FILE *f, const char *cmd)
 /* 0 ok, 1 --help shown, CLI_USAGE on error. */
 static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
 {
-    struct option longopts[64];
+    struct option longopts[80];
     size_t n;
     int c;
     const char *out_opt = NULL;
@@ -58,7 +61,9 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
     char err[128];
     detopts_init(&d);
     memset(a, 0, sizeof *a);
+    muffopts_init(&a->method);
     n = detopts_longopts(longopts, 60);
+    n += muffopts_longopts(longopts + n, 76u - n);
     longopts[n++] = (struct option){"output", required_argument, NULL, 'o'};
     longopts[n++] = (struct option){"json", required_argument, NULL, 'j'};
     longopts[n++] = (struct option){"help", no_argument, NULL, 'h'};
@@ -75,10 +80,12 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
             a->json = optarg;
         } else if (c == 'j') {
             return cli_error("lines: the JSON goes to stdout, or to -o FILE");
-        } else if ((rc = detopts_apply(&d, c, optarg, err, sizeof err)) != 1) {
+        } else if ((rc = muffopts_apply(&a->method, c, optarg, err, sizeof err)) != 0 ||
+                   (rc = detopts_apply(&d, c, optarg, err, sizeof err)) != 0) {
             if (rc < 0) {
                 return cli_error("%s: %s", argv[0], err);
             }
+        } else {
             return CLI_USAGE;
         }
     }
@@ -117,11 +124,35 @@ typedef struct det_buffers {
     symline_result res;
 } det_buffers;
 
-static int detect_one(const char *cmd, const imgio_gray *in, const symline_config *cfg, det_buffers *b)
+/* The tracer (symline_detect) or the Muff-space finder with its accumulator. */
+static symline_status run_method(const symline_config *cfg, const muffopts *method, const symline_image *view,
+                                 void *ws, size_t ws_size, symline_result *res)
+{
+    size_t acc_size;
+    uint16_t *acc;
+    symline_status st;
+    if (!method->muff) {
+        return symline_detect(view, cfg, ws, ws_size, res);
+    }
+    acc_size = symline_muff_accumulator_size(view->width, view->height, &method->mc);
+    acc = (uint16_t *)malloc(acc_size > 0u ? acc_size : 1u);
+    if (acc == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    st = symline_detect_muff(view, cfg, &method->mc, acc, acc_size, ws, ws_size, res);
+    free(acc);
+    return st;
+}
+
+static int detect_one(const char *cmd, const imgio_gray *in, const symline_config *cfg, muffopts *method,
+                      det_buffers *b)
 {
     symline_image view;
     symline_status st;
-    const size_t need = symline_detect_workspace_size(in->width, in->height, cfg);
+    size_t need;
+    method->mc.min_length = cfg->min_length;
+    need = method->muff ? symline_detect_muff_workspace_size(in->width, in->height, cfg, &method->mc)
+                        : symline_detect_workspace_size(in->width, in->height, cfg);
     const uint64_t pts = 2u * (uint64_t)in->width * in->height + 1024u;
     if (need == 0u) {
         return cli_error("%s: image size or configuration not supported", cmd);
@@ -148,7 +179,7 @@ static int detect_one(const char *cmd, const imgio_gray *in, const symline_confi
     view.height = in->height;
     view.stride = in->width;
     view.data = in->px;
-    st = symline_detect(&view, cfg, b->ws, b->ws_size, &b->res);
+    st = run_method(cfg, method, &view, b->ws, b->ws_size, &b->res);
     if (st != SYMLINE_OK) {
         cli_error("%s: %s", cmd, symline_status_str(st));
         return CLI_FAIL;
@@ -205,7 +236,7 @@ static int run_lines(int argc, char **argv, int overlay)
             rc = cli_error("%s", err);
             break;
         }
-        rc = detect_one(argv[0], &in, &a.cfg, &b);
+        rc = detect_one(argv[0], &in, &a.cfg, &a.method, &b);
         if (rc == CLI_OK && json != NULL) {
             rc = write_json(json, json_name, file, &in, &b.res);
             if (rc == CLI_OK && errno == EPIPE) {

@@ -31,9 +31,8 @@ static void op_usage(FILE *f, const char *cmd)
             "            format by the name: .pgm, .png, .ppm, .pnm; - writes PGM to stdout\n"
             "Options take --opt VALUE or --opt=VALUE; -- ends the options.\n",
             cmd,
-            strcmp(cmd, "symmetry") == 0
-                ? "8-bit symmetry image (255 = perfect mirror symmetry)"
-                : "extrema map (0 nothing, 128 A point, 255 S point)");
+            strcmp(cmd, "symmetry") == 0 ? "8-bit symmetry image (255 = perfect mirror symmetry)"
+                                         : "extrema map (0 nothing, 128 A point, 255 S point)");
 }
 
 /* 0 ok, 1 --help shown, CLI_USAGE on error. */

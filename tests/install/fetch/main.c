@@ -18,7 +18,7 @@ int main(void)
 {
     symline_config cfg;
     symline_image img = {W, H, W, &frame[0][0]};
-    symline_result res = {segs, 16, 0, pts, 1024, 0, 0, 0};
+    symline_result res = {segs, 16, 0, pts, 1024, 0, 0, {0}, 0};
     size_t need;
     uint32_t y;
     memset(frame, 40, sizeof frame);
