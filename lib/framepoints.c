@@ -15,7 +15,7 @@
 #include "tracer.h"
 
 /* Leaves out the points of a pass's raster list pts[0..n-1] that have no line
- * point among their 8 neighbours (type A, SPEC §4: neither method uses them),
+ * point among their 8 neighbours (type A in the paper's classification: neither method uses them),
  * moves the rest to the front and returns their number. */
 SL_NOINLINE static uint32_t drop_isolated(const sl_pass *p, symline_point *pts, uint32_t n,
                                           const uint32_t *row_start)

@@ -335,7 +335,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
  * pixels with their sub-pixel offsets across the line (fx, fy, as in the
  * segments' points), pass after pass,
  * each pass in raster order, written to pts[0 .. *count-1]. Points without a
- * line point among their 8 neighbours in their pass (type A, SPEC §4) are
+ * line point among their 8 neighbours in their pass (type A in the paper's classification) are
  * left out, as the tracer ignores them. A pixel found by two passes is
  * listed twice. This is what symline_detect() traces and what
  * the Muff-space finder (symline/muff.h) votes with.

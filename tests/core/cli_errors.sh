@@ -53,7 +53,7 @@ expect 0 "" -- symmetry --axis horizontal --radius 3 "$tmp/o.png" "$tmp/o2.pgm"
 expect 0 "" -- convert "$good" "$tmp/c.png"
 expect 2 "convert" -- convert "$good"
 
-# Feature points and histograms (SPEC §6), the line method option.
+# Feature points and histograms (docs/format.md), the line method option.
 expect 0 "--radius" -- features --help
 expect 0 "--plot" -- histogram --help
 expect 2 "usage" -- features "$good"

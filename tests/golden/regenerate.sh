@@ -27,7 +27,7 @@ for src in "$here"/../data/cases/*.pgm "$here"/../data/crops/*.pgm; do
 done
 echo "wrote $n golden images to $out"
 
-# Symmetry feature points and vertical symmetry histograms (SPEC §6), radii 1, 3, 10.
+# Symmetry feature points and vertical symmetry histograms (docs/format.md), radii 1, 3, 10.
 fout="$here/features"
 rm -rf "$fout"
 mkdir -p "$fout"

@@ -57,7 +57,7 @@ static void boundary_usage(FILE *f)
     fprintf(f, "  IN                binary PGM or PNG (colour is converted to luma)\n"
                "  OUT.png           the frame with the boundary drawn in yellow\n"
                "Prints {\"width\": W, \"height\": H, \"cell\": N, \"carpet_mean\": G,\n"
-               "\"field_boundary\": [[x, y], ...]} (SPEC section 7): rows at and below the\n"
+               "\"field_boundary\": [[x, y], ...]} (docs/format.md): rows at and below the\n"
                "polyline are field. See include/symline/field.h for the settings.\n"
                "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n");
 }

@@ -1,6 +1,6 @@
 /*
  * `symline features` and `symline histogram`: the paper's symmetry feature
- * points and vertical symmetry histogram (SPEC §6) as JSON.
+ * points and vertical symmetry histogram (docs/format.md) as JSON.
  */
 #include <stdio.h>
 #include <stdlib.h>
