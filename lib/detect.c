@@ -281,7 +281,6 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.nseg = 0u;
     d.prev_seg = 0u;
     d.npts = 0u;
-    d.dropped = 0u;
     out->points_needed = 0u; /* raised by every pass (pass.c) */
     d.truncated = false;
     d.stats.mean = 0u;

@@ -118,6 +118,27 @@ static void chain(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     }
 }
 
+/* a + b, at most UINT32_MAX (32-bit only: cheap on a Cortex-M0). */
+static uint32_t sat_add(uint32_t a, uint32_t b)
+{
+    return a > 0xFFFFFFFFu - b ? 0xFFFFFFFFu : a + b;
+}
+
+/* symline_result.points_needed grows to at least need. */
+static void note_need(symline_result *r, uint32_t need)
+{
+    if (need > r->points_needed) {
+        r->points_needed = need;
+    }
+}
+
+/* The raster list of n stored and `dropped` lost points after the kept ones.
+ * A call of its own keeps the collection's frame as small as it was. */
+SL_NOINLINE static void note_listed(sl_run *d, uint32_t n, uint32_t dropped)
+{
+    note_need(d->r, sat_add(sat_add(d->npts, n), dropped));
+}
+
 /* Traces the pass's raster list (n points at d->npts) and keeps its
  * segments' points right after the earlier passes' ones. t: the tracer's
  * state, in the pass workspace. Apart from sl_pass_run() so that its frame
@@ -143,16 +164,11 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     /* Storage this pass needed: the raster list and the chains after the kept
      * points, plus one free entry that shows the tracer nothing is left. When
      * it ran out, at most every line point is in a chain: base + 2 * all. */
-    {
-        const uint64_t all = (uint64_t)n + d->dropped;
-        uint64_t need = n == 0u ? base : (uint64_t)tail + 1u;
-        if (d->dropped != 0u || cut || (tail >= r->point_cap && n > 0u)) {
-            need = (uint64_t)base + 2u * all + 1u;
-        }
-        /* Kept in the result as the passes go (the frame's stack stays as it was). */
-        if (need > r->points_needed) {
-            r->points_needed = need > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)need;
-        }
+    if (row_start[p->h + 1u] != 0u || cut || (tail >= r->point_cap && n > 0u)) {
+        const uint32_t all = sat_add(n, row_start[p->h + 1u]);
+        note_need(r, sat_add(sat_add(base, sat_add(all, all)), 1u));
+    } else {
+        note_need(r, n == 0u ? base : sat_add(tail, 1u));
     }
     /* Keep only the points the new segments use, right after the earlier ones. */
     w = base;
@@ -173,25 +189,20 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 }
 
 /* The pass's raster list into the free part of the point storage (after
- * d->npts), *n points; d->dropped counts those that did not fit. Apart from
+ * d->npts), *n points; row_start[p->h + 1] counts those that did not fit. Apart from
  * sl_pass_run() so that the collection's call and the tracing's are never on
  * the stack together. */
 SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
                                           const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
     symline_status st = sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
-                                   d->r->point_cap - d->npts, n, row_start, &d->dropped);
-    if (d->dropped != 0u) {
+                                   d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);
+    if (row_start[p->h + 1u] != 0u) {
         d->truncated = true;
     }
     /* The raster list needs its room (all of it, stored or not) before the
      * field boundary thins it. */
-    {
-        const uint64_t listed = (uint64_t)d->npts + *n + d->dropped;
-        if (listed > d->r->points_needed) {
-            d->r->points_needed = listed > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)listed;
-        }
-    }
+    note_listed(d, *n, row_start[p->h + 1u]);
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         /* Above the field: nothing to trace. */
         sl_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
@@ -204,14 +215,15 @@ SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *
 symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end)
 {
     uint8_t *rest = ws;
-    uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
+    /* The row index (h + 1 entries), then the count of line points that did not fit. */
+    uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 2u) * sizeof(uint32_t));
     uint32_t n = 0u;
     sl_tracer *t;
     symline_status st;
     if (row_start == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    d->dropped = 0u;
+    row_start[p->h + 1u] = 0u;
     st = collect(d, p, rest, end, row_start, &n);
     if (st != SYMLINE_OK) {
         return st;

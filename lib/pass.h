@@ -21,7 +21,6 @@ typedef struct sl_run {
     uint32_t nseg;        /* segments so far */
     uint32_t prev_seg;    /* segments of earlier passes: [0, prev_seg) */
     uint32_t npts;        /* points kept so far: [0, npts) */
-    uint32_t dropped;     /* line points of the current pass that did not fit */
     sl_frame_stats stats; /* for the adaptive thresholds (cfg->adaptive) */
     bool truncated;
     uint16_t *field_rows; /* NULL, or width entries: line points above the field
@@ -40,7 +39,7 @@ static inline size_t sl_pass_ws_size(const sl_pass *p, uint32_t width)
 {
     const size_t c = sl_collect_ws_size(p, width);
     const size_t t = sl_align_up(sizeof(sl_tracer)) + SL_ALIGN;
-    return sl_align_up(sizeof(sl_pass)) + SL_ALIGN + sl_align_up(((size_t)p->h + 1u) * 4u) +
+    return sl_align_up(sizeof(sl_pass)) + SL_ALIGN + sl_align_up(((size_t)p->h + 2u) * 4u) +
            SL_ALIGN + (c > t ? c : t);
 }
 
