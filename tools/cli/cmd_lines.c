@@ -20,6 +20,7 @@ typedef struct lines_args {
     cli_inputs in;     /* lines: every input; overlay: exactly one */
     const char *out;   /* overlay: the image */
     const char *json;  /* where the JSON goes: lines: stdout unless -o; overlay: only with --json */
+    uint32_t repeat;   /* detections run on each frame (the output is printed once) */
 } lines_args;
 
 static void lines_usage(FILE *f, const char *cmd)
@@ -46,7 +47,10 @@ static void lines_usage(FILE *f, const char *cmd)
                    "Prints one JSON object per input (keys: docs/format.md); with several inputs\n"
                    "or a folder, each object starts with \"file\": its input.\n");
     }
-    fprintf(f, "Options take --opt VALUE or --opt=VALUE; -- ends the options.\n"
+    fprintf(f, "  --repeat N          run the detection N times (1..1000000; default 1) and\n"
+               "                      print it once: (cost(N=11) - cost(N=1)) / 10 is one\n"
+               "                      detection (tools/bench/icount.sh)\n"
+               "Options take --opt VALUE or --opt=VALUE; -- ends the options.\n"
                "Exit status: 0 ok, 1 processing or write error, 2 usage or input error.\n");
 }
 
@@ -61,11 +65,13 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
     char err[128];
     detopts_init(&d);
     memset(a, 0, sizeof *a);
+    a->repeat = 1u;
     muffopts_init(&a->method);
     n = detopts_longopts(longopts, 60);
-    n += muffopts_longopts(longopts + n, 76u - n);
+    n += muffopts_longopts(longopts + n, 75u - n); /* room for 4 more and the end */
     longopts[n++] = (struct option){"output", required_argument, NULL, 'o'};
     longopts[n++] = (struct option){"json", required_argument, NULL, 'j'};
+    longopts[n++] = (struct option){"repeat", required_argument, NULL, 'R'};
     longopts[n++] = (struct option){"help", no_argument, NULL, 'h'};
     longopts[n] = (struct option){NULL, 0, NULL, 0};
     optind = 1;
@@ -76,6 +82,10 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
             return 1;
         } else if (c == 'o') {
             out_opt = optarg;
+        } else if (c == 'R') {
+            if (detopts_u32(optarg, 1u, 1000000u, &a->repeat) != 0) {
+                return cli_error("%s: --repeat needs a number 1..1000000", argv[0]);
+            }
         } else if (c == 'j' && overlay) {
             a->json = optarg;
         } else if (c == 'j') {
@@ -145,8 +155,9 @@ static symline_status run_method(const symline_config *cfg, const muffopts *meth
 }
 
 static int detect_one(const char *cmd, const imgio_gray *in, const symline_config *cfg, muffopts *method,
-                      det_buffers *b)
+                      uint32_t repeat, det_buffers *b)
 {
+    uint32_t r;
     symline_image view;
     symline_status st;
     size_t need;
@@ -179,7 +190,10 @@ static int detect_one(const char *cmd, const imgio_gray *in, const symline_confi
     view.height = in->height;
     view.stride = in->width;
     view.data = in->px;
-    st = run_method(cfg, method, &view, b->ws, b->ws_size, &b->res);
+    st = SYMLINE_OK;
+    for (r = 0u; r < repeat && st == SYMLINE_OK; r++) {
+        st = run_method(cfg, method, &view, b->ws, b->ws_size, &b->res);
+    }
     if (st != SYMLINE_OK) {
         cli_error("%s: %s", cmd, symline_status_str(st));
         return CLI_FAIL;
@@ -236,7 +250,7 @@ static int run_lines(int argc, char **argv, int overlay)
             rc = cli_error("%s", err);
             break;
         }
-        rc = detect_one(argv[0], &in, &a.cfg, &a.method, &b);
+        rc = detect_one(argv[0], &in, &a.cfg, &a.method, a.repeat, &b);
         if (rc == CLI_OK && json != NULL) {
             rc = write_json(json, json_name, file, &in, &b.res);
             if (rc == CLI_OK && errno == EPIPE) {
