@@ -1,5 +1,5 @@
 /*
- * SPEC §7 JSON writer for detected segments.
+ * The JSON writer for detected segments (docs/format.md).
  */
 #include "segjson.h"
 
@@ -11,6 +11,23 @@ static void put_q8(FILE *f, int32_t v)
     uint32_t hundredths = (uint32_t)(((uint64_t)a * 100u + 128u) >> 8);
     fprintf(f, "%s%u.%02u", (neg && hundredths != 0u) ? "-" : "", hundredths / 100u,
             hundredths % 100u);
+}
+
+void segjson_put_string(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s != '\0'; s++) {
+        const unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') {
+            fputc('\\', f);
+            fputc(c, f);
+        } else if (c < 0x20u) {
+            fprintf(f, "\\u%04x", c);
+        } else {
+            fputc(c, f);
+        }
+    }
+    fputc('"', f);
 }
 
 /*
@@ -44,9 +61,21 @@ static void put_vertex(FILE *f, const symline_point *p, uint32_t n, uint32_t k, 
 
 int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r)
 {
+    return segjson_write_named(f, NULL, width, height, r);
+}
+
+int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t height,
+                        const symline_result *r)
+{
     uint32_t i, k;
-    fprintf(f, "{\"width\": %u, \"height\": %u, \"truncated\": %s,\n \"segments\": [", width,
-            height, r->truncated ? "true" : "false");
+    fputc('{', f);
+    if (file != NULL) {
+        fputs("\"file\": ", f);
+        segjson_put_string(f, file);
+        fputs(", ", f);
+    }
+    fprintf(f, "\"width\": %u, \"height\": %u, \"truncated\": %s,\n \"segments\": [", width, height,
+            r->truncated ? "true" : "false");
     for (i = 0; i < r->segment_count; i++) {
         const symline_segment *s = &r->segments[i];
         fputs(i == 0u ? "\n  {" : ",\n  {", f);

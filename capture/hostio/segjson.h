@@ -1,5 +1,5 @@
 /*
- * The JSON form of a detection (SPEC §7), shared by the CLI, the capture
+ * The JSON form of a detection (docs/format.md), shared by the CLI, the capture
  * loop, the tests and the Cortex-M golden check. Needs only stdio.
  */
 #ifndef SYMLINE_HOSTIO_SEGJSON_H
@@ -24,5 +24,12 @@
  * Ends with a newline. Returns 0, or -1 when writing failed.
  */
 int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r);
+
+/* The same object with "file": NAME as its first key (when file is not NULL). */
+int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t height,
+                        const symline_result *r);
+
+/* s as a JSON string: quoted, with quotes, backslashes and control characters escaped. */
+void segjson_put_string(FILE *f, const char *s);
 
 #endif

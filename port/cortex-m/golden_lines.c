@@ -29,7 +29,7 @@ static symline_point pts[PT_CAP];
 static int run(const char *name, const fw_frame *f, int paper)
 {
     const symline_image img = {f->width, f->height, f->width, f->px};
-    symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u, {0}};
+    symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u, {0}, 0u};
     symline_config cfg;
     size_t need;
     symline_status st;

@@ -57,8 +57,8 @@ int main(void)
     const symline_image img = {f->width, f->height, f->width, f->px};
     const uint32_t n = f->width * f->height;
     symline_config def, paper;
-    symline_result r1 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}};
-    symline_result r2 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}};
+    symline_result r1 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
+    symline_result r2 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
     int bad = 0;
     symline_config_default(&def);
     paper = def;

@@ -1,6 +1,8 @@
 #!/bin/sh
 # The CLI's exit codes and messages: 0 ok, 2 usage or input error, and
 # messages that name the file and the problem.
+# Usage: cli_errors.sh SYMLINE DATA_DIR
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -u
 cli=$1 data=$2
 tmp=$(mktemp -d)
@@ -76,17 +78,16 @@ expect 2 "wide.pgm: image size 100000x100000 outside 1..65535" -- lines "$tmp/wi
 expect 2 "big.pgm: image size 20000x20000 exceeds the limit" -- lines "$tmp/big.pgm"
 : >"$tmp/empty.pgm"
 expect 2 "empty.pgm: empty file" -- lines "$tmp/empty.pgm"
-expect 2 "/dev/zero: not a PGM or PNG file" -- lines /dev/zero
-expect 2 "/dev/urandom: not a PGM or PNG file" -- lines /dev/urandom
-expect 2 "read error: Is a directory" -- lines "$data"
+expect 2 "/dev/zero: not a PGM, PNG or JPEG file" -- lines /dev/zero
+expect 2 "/dev/urandom: not a PGM, PNG or JPEG file" -- lines /dev/urandom
+expect 2 "read error: Is a directory" -- symmetry --axis vertical --radius 3 "$data" "$tmp/o.pgm"
 # The pixel limit is the caller's to change.
 SYMLINE_MAX_PIXELS=100 expect 2 "exceeds the limit of 100 pixels" -- lines "$good"
 SYMLINE_MAX_PIXELS=1000000 expect 0 "" -- lines "$good"
 
 # Output that cannot be written is an error (exit 1), not an empty success.
 if [ -w /dev/full ]; then
-    expect 1 "cannot write the result to standard output" -- lines "$good" ">/dev/full"
-    expect 1 "cannot write to standard output" -- --help ">/dev/full"
+    expect 1 "writing stdout: No space left on device" -- lines "$good" ">/dev/full"
 fi
 expect 1 "cannot create" -- overlay "$good" "$tmp/no/such/dir/o.png"
 
@@ -103,7 +104,7 @@ expect 2 "unknown option" -- boundary --bogus "$good"
 expect 2 "missing.pgm: cannot open" -- boundary "$tmp/missing.pgm"
 expect 2 "--field needs" -- lines --field sideways "$good"
 
-# Feature points and histograms (SPEC §6), the line method option.
+# Feature points and histograms (docs/format.md), the line method option.
 expect 0 "--radius" -- features --help
 expect 0 "--plot" -- histogram --help
 expect 2 "usage" -- features "$good"

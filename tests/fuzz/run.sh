@@ -8,6 +8,7 @@
 # Exit status: 0 all ran clean, 1 a finding or a build error, 77 skipped
 # (clang or its fuzzer runtime missing and not installable).
 # Findings are kept in build-fuzz/findings/TARGET/ (reproduce: build-fuzz/fuzz/TARGET FILE).
+case "${1:-}" in -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -u
 cd "$(dirname "$0")/../.."
 secs=${1:-60}

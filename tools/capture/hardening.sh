@@ -10,6 +10,7 @@
 #   - with SYMLINE-ADVFRAMES: SIGTERM in the middle of slow, cluttered
 #     frames (2560x1920 rings) ends the loop within one frame time.
 # usage: hardening.sh SYMLINE-CAPTURE CAPTURE-CHECK SYMLINE DATA-DIR [SYMLINE-ADVFRAMES]
+case "${1:-}" in -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -u
 app=$1 check=$2 cli=$3 data=$(cd "$4" && pwd) adv=${5:-}
 tmp=$(mktemp -d)
@@ -105,7 +106,7 @@ for sig in INT TERM; do
         fi
         k=$((k + 1))
     done
-    parts=$(find "$rec" -name '*.part' | wc -l)
+    parts=$(find "$rec" -name '.part-*' | wc -l)
     if [ $missing -ne 0 ] || [ "$parts" -ne 0 ]; then
         bad "record, SIG$sig: $missing of $n reported frames missing or damaged, $parts partial files"
     else
