@@ -11,11 +11,13 @@
 #include "../common/segjson.h"
 #include "cli.h"
 #include "symline/detect.h"
+#include "symline/intersections.h"
 
 typedef struct lines_args {
     symline_config cfg;
     const char *in;
     const char *out;
+    int intersections; /* 0 with --no-intersections */
 } lines_args;
 
 static void lines_usage(FILE *f, const char *cmd)
@@ -24,12 +26,15 @@ static void lines_usage(FILE *f, const char *cmd)
     fprintf(f, "usage: symline %s [options] IN%s\n", cmd, ov ? " OUT.png" : "");
     detopts_help(f);
     fprintf(f,
+            "  --no-intersections  leave out where lines meet (JSON key \"intersections\")\n"
             "  IN                  binary PGM or PNG (colour is converted to luma)\n"
             "%s"
             "Prints JSON (SPEC section 7) on stdout%s.\n"
             "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n",
-            ov ? "  OUT.png             the frame in colour with lines (solid red) and curves\n"
-                 "                      (dotted cyan); PPM unless the name ends in .png\n"
+            ov ? "  OUT.png             the frame in colour with lines (solid red), curves\n"
+                 "                      (dotted cyan) and intersections (a square with a spoke\n"
+                 "                      per ray: L green, T orange, X magenta); PPM unless\n"
+                 "                      the name ends in .png\n"
                : "",
             ov ? " as well" : "");
 }
@@ -42,12 +47,17 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     detopts d;
     char err[128];
     detopts_init(&d);
+    a->intersections = 1;
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
         int rc;
         if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) {
             lines_usage(stdout, argv[0]);
             return 1;
+        }
+        if (strcmp(o, "--no-intersections") == 0) {
+            a->intersections = 0;
+            continue;
         }
         rc = detopts_parse(&d, argc, argv, &i, err, sizeof err);
         if (rc < 0) {
@@ -81,6 +91,9 @@ static int run_lines(int argc, char **argv, int overlay)
     imgio_gray in;
     symline_image view;
     symline_result res;
+    symline_intersection_config icfg;
+    symline_intersection items[256];
+    symline_intersection_result ix;
     char err[512];
     void *ws;
     size_t ws_size;
@@ -110,14 +123,21 @@ static int run_lines(int argc, char **argv, int overlay)
     if (ws == NULL || res.segments == NULL || res.points == NULL) {
         rc = cli_error("out of memory");
     } else {
+        const symline_intersection_result *ixp = a.intersections ? &ix : NULL;
+        symline_intersection_config_default(&icfg);
+        ix.items = items;
+        ix.cap = sizeof items / sizeof items[0];
         st = symline_detect(&view, &a.cfg, ws, ws_size, &res);
+        if (st == SYMLINE_OK && a.intersections) {
+            st = symline_intersections(&res, &icfg, &ix);
+        }
         if (st != SYMLINE_OK) {
             cli_error("%s: %s", argv[0], symline_status_str(st));
             rc = CLI_FAIL;
-        } else if (segjson_write(stdout, in.width, in.height, &res) != 0) {
+        } else if (segjson_write_ix(stdout, in.width, in.height, &res, ixp) != 0) {
             rc = CLI_FAIL;
-        } else if (overlay && overlay_write(a.out, in.px, in.width, in.height, in.width, &res,
-                                            err, sizeof err) != 0) {
+        } else if (overlay && overlay_write_ix(a.out, in.px, in.width, in.height, in.width, &res,
+                                               ixp, err, sizeof err) != 0) {
             cli_error("%s", err);
             rc = CLI_FAIL;
         }

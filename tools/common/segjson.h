@@ -9,6 +9,7 @@
 #include <stdio.h>
 
 #include "symline/detect.h"
+#include "symline/intersections.h"
 
 /*
  * Writes one JSON object for the result of a width x height frame to f:
@@ -21,5 +22,14 @@
  * Ends with a newline. Returns 0, or -1 when writing failed.
  */
 int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r);
+
+/*
+ * The same with the key "intersections" after "segments" when ix is not NULL:
+ *   "intersections": [{"x":..,"y":..,"type":"L"|"T"|"X","rays":[deg,..],
+ *                      "segments":[i,..]}, ...]
+ * positions in pixels, rays in degrees (two decimals), ascending.
+ */
+int segjson_write_ix(FILE *f, uint32_t width, uint32_t height, const symline_result *r,
+                     const symline_intersection_result *ix);
 
 #endif
