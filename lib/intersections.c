@@ -18,6 +18,10 @@
 /* A curve's polyline takes every IX_STEP-th point at full resolution (about
  * 4-6 px chords), every point from scale 2 on (points 4 px apart there). */
 #define IX_STEP 4u
+/* A stem meeting a bar at angle a stops short of it by about (half the bar's
+ * width) / sin(a): the gap grows with 1/sin of the angle between the two,
+ * up to this factor (sin >= 1/4, angles >= 14.5 degrees). */
+#define IX_SIN_MIN_Q8 64
 /* Scale levels above this do not widen the gap further. */
 #define IX_LEVEL_MAX 5u
 #define IX_DEG_180 (180u * 256u)
@@ -33,7 +37,7 @@ void symline_intersection_config_default(symline_intersection_config *cfg)
     cfg->gap_pct = 50u;
     cfg->arm_q8 = 10u * 256u;
     cfg->merge_q8 = 10u * 256u;
-    cfg->min_length_q8 = 0u;
+    cfg->min_length_q8 = 16u * 256u;
 }
 
 /* ---- integer helpers ---- */
@@ -106,7 +110,10 @@ typedef struct ix_poly {
     uint32_t index;           /* in the result's segments */
     ix_vec a, b;              /* chord ends */
     ix_vec lo, hi;            /* box of the vertices grown by the gap */
-    int32_t gap;              /* how far a free end may stop short of a crossing */
+    int32_t gap_base;         /* how far a free end may stop short of a crossing
+                                 meeting at a right angle */
+    int32_t gap_cap;          /* ... and at any angle (part of the length) */
+    int32_t gap;              /* the largest of those: min(4 * gap_base, gap_cap) */
 } ix_poly;
 
 typedef struct ix_params {
@@ -152,8 +159,8 @@ static void grow_box(ix_poly *p, ix_vec v)
     p->hi.y = v.y > p->hi.y ? v.y : p->hi.y;
 }
 
-/* Segment i as a polyline; 0 when it takes no part (shorter than the
- * configured minimum or than one arm: it could not give a ray). */
+/* Segment i as a polyline; 0 when it takes no part (smaller than the
+ * configured minimum length or than one arm: it could not give a ray). */
 static int poly_init(ix_poly *p, const symline_result *r, uint32_t i,
                      const symline_intersection_config *c, const ix_params *ip)
 {
@@ -177,21 +184,26 @@ static int poly_init(ix_poly *p, const symline_result *r, uint32_t i,
         p->a = vertex(p, 0u);
         p->b = vertex(p, p->n - 1u);
     }
-    len = length_of(p->a, p->b);
-    if (p->pts == NULL && (len < (uint32_t)ip->arm || len * 16u < c->min_length_q8)) {
-        return 0;
-    }
-    if (p->pts != NULL && len * 16u < c->min_length_q8) {
-        return 0;
-    }
-    gap = (c->gap_q8 << level) / 16u;
-    k = (uint32_t)(((uint64_t)len * c->gap_pct) / 100u);
-    p->gap = (int32_t)(gap < k ? gap : k);
     p->lo = p->a;
     p->hi = p->a;
     for (k = 1u; k < p->n; k++) {
         grow_box(p, vertex(p, k));
     }
+    /* size: the chord, or for a curve its box when larger (a closed loop) */
+    len = length_of(p->a, p->b);
+    k = (uint32_t)(p->hi.x - p->lo.x) > (uint32_t)(p->hi.y - p->lo.y)
+            ? (uint32_t)(p->hi.x - p->lo.x)
+            : (uint32_t)(p->hi.y - p->lo.y);
+    len = len > k ? len : k;
+    if (len < (uint32_t)ip->arm || len * 16u < c->min_length_q8) {
+        return 0;
+    }
+    gap = (c->gap_q8 << level) / 16u;
+    k = (uint32_t)(((uint64_t)len * c->gap_pct) / 100u);
+    p->gap_base = (int32_t)gap;
+    p->gap_cap = (int32_t)k;
+    gap = gap * (256u / IX_SIN_MIN_Q8);
+    p->gap = (int32_t)(gap < k ? gap : k);
     p->lo.x -= p->gap;
     p->lo.y -= p->gap;
     p->hi.x += p->gap;
@@ -206,6 +218,12 @@ static int boxes_meet(ix_vec alo, ix_vec ahi, ix_vec blo, ix_vec bhi)
 
 /* ---- crossing two chords ---- */
 
+/* a / b rounded to nearest, b > 0. */
+static int64_t div_round(int64_t a, int64_t b)
+{
+    return (a >= 0 ? a + b / 2 : a - b / 2) / b;
+}
+
 typedef struct ix_hit {
     int32_t x, y;   /* Q4 */
     int32_t ta, tb; /* Q16 along chord a, chord b */
@@ -215,9 +233,11 @@ typedef struct ix_hit {
  * acceptable: on the chord (the end excluded but on the last chord, so a
  * crossing at a vertex counts once), or beyond a free end by at most the gap? */
 static int on_chord(const ix_poly *p, uint32_t k, int64_t t, int64_t x, int64_t y, ix_vec v0,
-                    ix_vec v1)
+                    ix_vec v1, int64_t sin_q8)
 {
-    const int64_t g2 = (int64_t)p->gap * p->gap;
+    int64_t g = (int64_t)p->gap_base * 256 / sin_q8, g2;
+    g = g < p->gap_cap ? g : p->gap_cap;
+    g2 = g * g;
     if (t < 0) {
         return k == 0u && dist2(x - v0.x, y - v0.y) <= g2;
     }
@@ -238,7 +258,7 @@ static int cross_chords(const ix_poly *a, uint32_t ka, ix_vec p0, ix_vec p1, con
     const int64_t sx = (int64_t)q1.x - q0.x, sy = (int64_t)q1.y - q0.y;
     const int64_t wx = (int64_t)q0.x - p0.x, wy = (int64_t)q0.y - p0.y;
     int64_t den = rx * sy - ry * sx, nt = wx * sy - wy * sx, nu = wx * ry - wy * rx;
-    int64_t t, u, x, y;
+    int64_t t, u, x, y, sin_q8;
     if (den == 0) {
         return 0; /* parallel */
     }
@@ -254,11 +274,18 @@ static int cross_chords(const ix_poly *a, uint32_t ka, ix_vec p0, ix_vec p1, con
         nu > den * 4096 || -nu > den * 4096) {
         return 0;
     }
-    t = nt * 65536 / den;
-    u = nu * 65536 / den;
-    x = p0.x + rx * t / 65536;
-    y = p0.y + ry * t / 65536;
-    if (!on_chord(a, ka, t, x, y, p0, p1) || !on_chord(b, kb, u, x, y, q0, q1)) {
+    {
+        /* sin of the angle between the chords, Q8, at least IX_SIN_MIN_Q8 */
+        const uint64_t rr = sl_isqrt64((uint64_t)(rx * rx + ry * ry));
+        const uint64_t ss = sl_isqrt64((uint64_t)(sx * sx + sy * sy));
+        sin_q8 = rr * ss == 0u ? 256 : den * 256 / (int64_t)(rr * ss);
+        sin_q8 = sin_q8 < IX_SIN_MIN_Q8 ? IX_SIN_MIN_Q8 : sin_q8;
+    }
+    t = div_round(nt * 65536, den);
+    u = div_round(nu * 65536, den);
+    x = p0.x + div_round(rx * t, 65536);
+    y = p0.y + div_round(ry * t, 65536);
+    if (!on_chord(a, ka, t, x, y, p0, p1, sin_q8) || !on_chord(b, kb, u, x, y, q0, q1, sin_q8)) {
         return 0;
     }
     h->x = (int32_t)x;
@@ -277,7 +304,7 @@ static int cross_chords(const ix_poly *a, uint32_t ka, ix_vec p0, ix_vec p1, con
  * direction of its whole chord. Part of a gap bridged beyond a free end
  * does not count as going on. */
 static int ray_of(const ix_poly *p, uint32_t k, int32_t t, int32_t x, int32_t y, int back,
-                  const ix_params *ip, uint32_t *deg)
+                  const ix_params *ip, uint32_t *deg, ix_vec *far)
 {
     const uint32_t reach = 2u * (uint32_t)ip->arm;
     uint32_t v, acc = 0u;
@@ -304,7 +331,25 @@ static int ray_of(const ix_poly *p, uint32_t k, int32_t t, int32_t x, int32_t y,
         return 0;
     }
     *deg = sl_heading_q8((int64_t)w.x - x, (int64_t)w.y - y);
+    *far = w;
     return 1;
+}
+
+/* The rays of p at a crossing on its chord k: 0, 1 or 2 into rays[]. A curve
+ * going on both ways takes its tangent from the chord between the two far
+ * points, which is parallel to the tangent on a circle (a chord from the
+ * crossing to one far point is off by half the arc's turn). */
+static uint32_t rays_of(const ix_poly *p, uint32_t k, int32_t t, int32_t x, int32_t y,
+                        const ix_params *ip, uint32_t *rays)
+{
+    ix_vec back, fwd;
+    uint32_t n = (uint32_t)ray_of(p, k, t, x, y, 1, ip, &rays[0], &back);
+    n += (uint32_t)ray_of(p, k, t, x, y, 0, ip, &rays[n], &fwd);
+    if (n == 2u && p->pts != NULL) {
+        rays[1] = sl_heading_q8((int64_t)fwd.x - back.x, (int64_t)fwd.y - back.y);
+        rays[0] = (rays[1] + IX_DEG_180) % SYMLINE_DEG_Q8_FULL;
+    }
+    return n;
 }
 
 /* ---- gathering crossings into intersections ---- */
@@ -391,17 +436,18 @@ static void take_hit(const ix_poly *a, uint32_t ka, const ix_poly *b, uint32_t k
                      const ix_hit *h, const ix_params *ip, symline_intersection_result *out)
 {
     uint32_t rays[4];
-    uint32_t na = 0u, nr;
-    na += (uint32_t)ray_of(a, ka, h->ta, h->x, h->y, 1, ip, &rays[na]);
-    na += (uint32_t)ray_of(a, ka, h->ta, h->x, h->y, 0, ip, &rays[na]);
+    const uint32_t na = rays_of(a, ka, h->ta, h->x, h->y, ip, rays);
+    uint32_t nr;
     if (na == 0u) {
         return;
     }
-    nr = na;
-    nr += (uint32_t)ray_of(b, kb, h->tb, h->x, h->y, 1, ip, &rays[nr]);
-    nr += (uint32_t)ray_of(b, kb, h->tb, h->x, h->y, 0, ip, &rays[nr]);
+    nr = na + rays_of(b, kb, h->tb, h->x, h->y, ip, rays + na);
     if (nr == na || lines_between(rays[0], rays[na]) < ip->min_angle) {
         return; /* b gives no ray, or one line continuing / parallel lines */
+    }
+    if (nr == 2u && a->pts != NULL && b->pts != NULL) {
+        return; /* two curves meeting end to end: where the tracer cut the centre
+                   circle's ellipse at its sharpest bend, not a corner */
     }
     gather(out, ip, h->x * 16, h->y * 16, rays, nr, a->index, b->index);
 }

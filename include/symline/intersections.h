@@ -89,7 +89,9 @@ typedef struct symline_intersection_config {
     uint32_t merge_q8;     /* crossings closer than this are one intersection, Q8 px,
                               0..256*256; default 2560 (10 px) */
     uint32_t min_length_q8; /* segments shorter than this (chord, Q8 px) take no
-                              part, 0..65535*256; default 0 */
+                              part: short pieces near junctions and at the centre
+                              circle's sharpest bends give false corners;
+                              0..65535*256; default 4096 (16 px) */
 } symline_intersection_config;
 
 /* Fills *cfg with the defaults documented above (no-op on NULL). */

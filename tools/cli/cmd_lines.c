@@ -1,6 +1,7 @@
 /*
  * `symline lines` and `symline overlay`: the line detector on one image.
  */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,10 +16,46 @@
 
 typedef struct lines_args {
     symline_config cfg;
+    symline_intersection_config icfg;
     const char *in;
     const char *out;
     int intersections; /* 0 with --no-intersections */
 } lines_args;
+
+/* Intersection options: name, range, field of symline_intersection_config. */
+typedef struct ix_opt {
+    const char *name;
+    uint32_t lo, hi;
+    size_t offset;
+} ix_opt;
+
+static const ix_opt ix_opts[] = {
+    {"--ix-min-angle", 0, 90u * 256u, offsetof(symline_intersection_config, min_angle_q8)},
+    {"--ix-gap", 0, 65536u, offsetof(symline_intersection_config, gap_q8)},
+    {"--ix-gap-pct", 0, 100u, offsetof(symline_intersection_config, gap_pct)},
+    {"--ix-arm", 256u, 65536u, offsetof(symline_intersection_config, arm_q8)},
+    {"--ix-merge", 0, 65536u, offsetof(symline_intersection_config, merge_q8)},
+    {"--ix-min-length", 0, 65535u << 8, offsetof(symline_intersection_config, min_length_q8)},
+};
+
+/* 1 when argv[*i] is an intersection option (value taken), 0 when not, CLI_USAGE on error. */
+static int parse_ix_opt(lines_args *a, int argc, char **argv, int *i)
+{
+    size_t k;
+    for (k = 0; k < sizeof ix_opts / sizeof ix_opts[0]; k++) {
+        if (strcmp(argv[*i], ix_opts[k].name) == 0) {
+            uint32_t v;
+            if (*i + 1 >= argc || detopts_u32(argv[*i + 1], ix_opts[k].lo, ix_opts[k].hi, &v) != 0) {
+                return cli_error("%s: %s needs a number in %u..%u", argv[0], argv[*i],
+                                 ix_opts[k].lo, ix_opts[k].hi);
+            }
+            memcpy((char *)&a->icfg + ix_opts[k].offset, &v, sizeof v);
+            (*i)++;
+            return 1;
+        }
+    }
+    return 0;
+}
 
 static void lines_usage(FILE *f, const char *cmd)
 {
@@ -27,6 +64,9 @@ static void lines_usage(FILE *f, const char *cmd)
     detopts_help(f);
     fprintf(f,
             "  --no-intersections  leave out where lines meet (JSON key \"intersections\")\n"
+            "  --ix-min-angle Q8DEG, --ix-gap Q8PX, --ix-gap-pct PCT, --ix-arm Q8PX,\n"
+            "  --ix-merge Q8PX, --ix-min-length Q8PX\n"
+            "                      intersection settings (include/symline/intersections.h)\n"
             "  IN                  binary PGM or PNG (colour is converted to luma)\n"
             "%s"
             "Prints JSON (SPEC section 7) on stdout%s.\n"
@@ -48,6 +88,7 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     char err[128];
     detopts_init(&d);
     a->intersections = 1;
+    symline_intersection_config_default(&a->icfg);
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
         int rc;
@@ -57,6 +98,13 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
         }
         if (strcmp(o, "--no-intersections") == 0) {
             a->intersections = 0;
+            continue;
+        }
+        rc = parse_ix_opt(a, argc, argv, &i);
+        if (rc == CLI_USAGE) {
+            return rc;
+        }
+        if (rc == 1) {
             continue;
         }
         rc = detopts_parse(&d, argc, argv, &i, err, sizeof err);
@@ -91,7 +139,6 @@ static int run_lines(int argc, char **argv, int overlay)
     imgio_gray in;
     symline_image view;
     symline_result res;
-    symline_intersection_config icfg;
     symline_intersection items[256];
     symline_intersection_result ix;
     char err[512];
@@ -124,12 +171,11 @@ static int run_lines(int argc, char **argv, int overlay)
         rc = cli_error("out of memory");
     } else {
         const symline_intersection_result *ixp = a.intersections ? &ix : NULL;
-        symline_intersection_config_default(&icfg);
         ix.items = items;
         ix.cap = sizeof items / sizeof items[0];
         st = symline_detect(&view, &a.cfg, ws, ws_size, &res);
         if (st == SYMLINE_OK && a.intersections) {
-            st = symline_intersections(&res, &icfg, &ix);
+            st = symline_intersections(&res, &a.icfg, &ix);
         }
         if (st != SYMLINE_OK) {
             cli_error("%s: %s", argv[0], symline_status_str(st));

@@ -4,8 +4,9 @@
  *
  * Reference: the ground truth (NAME.lines.txt straight pieces, NAME.arcs.txt
  * circle pieces as curves through their points, NAME.dontcare.txt) is handed
- * to symline_intersections() with its default settings: ground-truth pieces
- * run exactly to where centre lines cross, so the stage's rules (a corner,
+ * to symline_intersections() with fixed settings (those of the stage's defaults
+ * when it was written, but a gap of 3 px): ground-truth pieces run exactly to
+ * where centre lines cross, so the stage's rules (a corner,
  * a T, a crossing; pieces meeting at less than the minimum angle are one
  * line) decide what the reference is, not the detector's gaps. A reference
  * intersection that involves a don't-care piece is don't-care: a detection
@@ -34,8 +35,8 @@ static void usage(FILE *f)
 {
     fputs("usage: symline-ixscore [--tol PX] [--list] NAME DET.json\n"
           "Reference: intersections of NAME's ground truth (NAME.lines.txt, NAME.arcs.txt,\n"
-          "NAME.dontcare.txt; missing files count as empty) by symline_intersections() with\n"
-          "its defaults; one that involves a don't-care piece is don't-care. Detected: the\n"
+          "NAME.dontcare.txt; missing files count as empty) by symline_intersections()\n"
+          "(minimum angle 20 deg, gap 3 px, arm 10 px, merge 10 px); one that involves a don't-care piece is don't-care. Detected: the\n"
           "\"intersections\" key of DET.json. A detection matches the nearest free reference\n"
           "within the tolerance (default max(4, 8*width/640) px, width from NAME.pgm or\n"
           "DET.json), nearest pairs first.\n"
@@ -83,10 +84,32 @@ static void add_pieces(const ev_paths *p, symline_result *r)
     }
 }
 
+/* Don't-care parts of the circle come as short two-point pieces, one after the
+ * other: chained back into polylines (curves) so that they can take part. */
+static void chain_pieces(const ev_paths *in, ev_paths *out)
+{
+    size_t i, k;
+    for (i = 0; i < in->npieces; i++) {
+        const ev_pt *q = ev_piece_pts(in, i);
+        const size_t n = ev_piece_len(in, i);
+        size_t from = 1;
+        if (i == 0 || out->npts == 0 || fabs(out->pts[out->npts - 1].x - q[0].x) > 0.01 ||
+            fabs(out->pts[out->npts - 1].y - q[0].y) > 0.01) {
+            ev_paths_begin(out, EV_TAG_LINE);
+            from = 0;
+        } else {
+            out->tag[out->npieces - 1] = EV_TAG_CURVE;
+        }
+        for (k = from; k < n; k++) {
+            ev_paths_add(out, q[k].x, q[k].y);
+        }
+    }
+}
+
 static int reference(const char *name, ix_item *ref, int *nref)
 {
     char path[4096];
-    ev_paths gt, dc;
+    ev_paths gt, dc, raw;
     symline_result r;
     symline_intersection_config cfg;
     symline_intersection items[IX_MAX];
@@ -95,6 +118,7 @@ static int reference(const char *name, ix_item *ref, int *nref)
     int rc = -1;
     ev_paths_init(&gt);
     ev_paths_init(&dc);
+    ev_paths_init(&raw);
     memset(&r, 0, sizeof r);
     snprintf(path, sizeof path, "%s.lines.txt", name);
     if (ev_read_segments(path, EV_TAG_LINE, 1, &gt) != 0) {
@@ -105,9 +129,10 @@ static int reference(const char *name, ix_item *ref, int *nref)
         goto done;
     }
     snprintf(path, sizeof path, "%s.dontcare.txt", name);
-    if (ev_read_segments(path, EV_TAG_LINE, 1, &dc) != 0) {
+    if (ev_read_segments(path, EV_TAG_LINE, 1, &raw) != 0) {
         goto done;
     }
+    chain_pieces(&raw, &dc);
     r.segment_cap = (uint32_t)(gt.npieces + dc.npieces);
     r.point_cap = (uint32_t)(gt.npts + dc.npts);
     r.segments = calloc(r.segment_cap + 1u, sizeof *r.segments);
@@ -119,7 +144,15 @@ static int reference(const char *name, ix_item *ref, int *nref)
     add_pieces(&gt, &r);
     nreq = r.segment_count;
     add_pieces(&dc, &r);
+    /* fixed here, so that tuning the stage's defaults does not move the reference:
+     * ground truth runs to the crossings, so a small gap (rounding) suffices */
     symline_intersection_config_default(&cfg);
+    cfg.min_angle_q8 = 20u * 256u;
+    cfg.gap_q8 = 3u * 256u;
+    cfg.gap_pct = 50u;
+    cfg.arm_q8 = 10u * 256u;
+    cfg.merge_q8 = 10u * 256u;
+    cfg.min_length_q8 = 0u;
     if (symline_intersections(&r, &cfg, &out) != SYMLINE_OK || out.truncated) {
         fprintf(stderr, "symline-ixscore: %s: reference intersections failed\n", name);
         goto done;
@@ -146,6 +179,7 @@ done:
     free(r.points);
     ev_paths_free(&gt);
     ev_paths_free(&dc);
+    ev_paths_free(&raw);
     return rc;
 }
 
