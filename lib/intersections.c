@@ -431,6 +431,41 @@ static void gather(symline_intersection_result *out, const ix_params *ip, int32_
     it->type = (uint8_t)(it->ray_count - 2u);
 }
 
+/* Joins intersections that ended up closer than the merge distance (a curve
+ * can cross a line, or come near it, at several chords of one junction, and
+ * an intersection's mean moves as crossings join it). */
+static void settle(symline_intersection_result *out, const ix_params *ip)
+{
+    uint32_t i, j, k;
+    for (i = 0; i < out->count; i++) {
+        symline_intersection *a = &out->items[i];
+        for (j = i + 1u; j < out->count;) {
+            const symline_intersection *b = &out->items[j];
+            if (dist2((int64_t)a->x - b->x, (int64_t)a->y - b->y) > ip->merge2) {
+                j++;
+                continue;
+            }
+            {
+                const int32_t wa = a->support, wb = b->support;
+                a->x = (int32_t)(((int64_t)a->x * wa + (int64_t)b->x * wb) / (wa + wb));
+                a->y = (int32_t)(((int64_t)a->y * wa + (int64_t)b->y * wb) / (wa + wb));
+                a->support = (uint8_t)(wa + wb > 255 ? 255 : wa + wb);
+            }
+            for (k = 0; k < b->ray_count; k++) {
+                add_ray(a, b->rays[k], ip->min_angle);
+            }
+            for (k = 0; k < b->segment_count; k++) {
+                add_segment(a, b->segments[k]);
+            }
+            a->type = (uint8_t)(a->ray_count - 2u);
+            for (k = j + 1u; k < out->count; k++) {
+                out->items[k - 1u] = out->items[k];
+            }
+            out->count--;
+        }
+    }
+}
+
 /* A crossing of a and b: their rays, the angle test, then gathering. */
 static void take_hit(const ix_poly *a, uint32_t ka, const ix_poly *b, uint32_t kb,
                      const ix_hit *h, const ix_params *ip, symline_intersection_result *out)
@@ -561,5 +596,6 @@ symline_status symline_intersections(const symline_result *lines,
             }
         }
     }
+    settle(out, &ip);
     return SYMLINE_OK;
 }
