@@ -7,17 +7,21 @@
  * field line meets the circle across it (the halfway line) or not at all, so
  * the direction test keeps lines that merely touch a curve.
  */
-#include "detect_internal.h"
+#include "curvejoin.h"
+
+#include "fixed.h"
 
 /* A curve's direction at an end is taken over up to this many points. */
 #define SL_TANGENT_SPAN 8
+/* Ends within 3 px of each other, plus the block size of the line's scale. */
+#define SL_JOIN_TOL_Q8 SL_PX_Q8(3u)
 
 /* Direction of line s in px, halved until both parts are within +-1023 so
  * that every product below stays in 32 bits. */
 static void line_dir(const symline_segment *s, int32_t *dx, int32_t *dy)
 {
-    *dx = (s->x1 - s->x0) / 256;
-    *dy = (s->y1 - s->y0) / 256;
+    *dx = (s->x1 - s->x0) / (int32_t)SL_Q8_ONE;
+    *dy = (s->y1 - s->y0) / (int32_t)SL_Q8_ONE;
     while (*dx > 1023 || *dx < -1023 || *dy > 1023 || *dy < -1023) {
         *dx /= 2;
         *dy /= 2;
@@ -39,8 +43,8 @@ static int continues(const symline_segment *s, const symline_segment *c, const s
         /* e & 1: c's end (else its start); e & 2: s's end x1 (else x0). */
         const int32_t at = (e & 1) ? last : 0, in = (e & 1) ? last - j : j;
         const int32_t cdx = (int32_t)p[at].x - p[in].x, cdy = (int32_t)p[at].y - p[in].y;
-        const int32_t gx = ((e & 2) ? s->x1 : s->x0) - ((int32_t)p[at].x << 8);
-        const int32_t gy = ((e & 2) ? s->y1 : s->y0) - ((int32_t)p[at].y << 8);
+        const int32_t gx = ((e & 2) ? s->x1 : s->x0) - ((int32_t)p[at].x << SL_Q8_SHIFT);
+        const int32_t gy = ((e & 2) ? s->y1 : s->y0) - ((int32_t)p[at].y << SL_Q8_SHIFT);
         /* s leaves its end x1 along +dir, its end x0 along -dir; continuing c
          * means leaving against c's outward direction. */
         const int32_t dot = (e & 2) ? -(ldx * cdx + ldy * cdy) : ldx * cdx + ldy * cdy;
@@ -61,8 +65,7 @@ void sl_curve_join(symline_result *r, int join)
      * before vertical, so most flat pieces come after the curve they continue. */
     for (i = 0; i < r->segment_count; i++) {
         symline_segment *s = &r->segments[i];
-        /* Ends within 3 px, plus the block size of the line's scale. */
-        const int32_t tol = 768 + (int32_t)(((1u << s->level) - 1u) << 8);
+        const int32_t tol = (int32_t)(SL_JOIN_TOL_Q8 + sl_block_q8(s->level));
         /* A merged line (reserved set by sl_merge) has its points piece after
          * piece, not in one run a curve could be drawn through. */
         for (k = 0; join && s->kind == SYMLINE_KIND_LINE && s->reserved == 0u &&

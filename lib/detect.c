@@ -1,9 +1,15 @@
 /*
- * symline_detect(): configuration, workspace, the frame statistics of the
- * adaptive thresholds, the passes over axes and scales (pass.c), the final
- * merge (merge.c) and the curve continuation (curvejoin.c).
+ * symline_detect(): configuration, workspace, the loop over the passes
+ * (axes and scales, pass.c), the final merge (merge.c) and the curve
+ * continuation (curvejoin.c).
  */
-#include "detect_internal.h"
+#include "symline/detect.h"
+
+#include "common.h"
+#include "curvejoin.h"
+#include "linefilter.h"
+#include "merge.h"
+#include "pass.h"
 
 void symline_config_default(symline_config *cfg)
 {
@@ -88,17 +94,6 @@ static symline_axis axis_of(const symline_config *c, uint32_t i)
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
 }
 
-/* A pass's workspace: its state, the row index, and the collection's rings
- * (reused by the tracer's state afterwards). Small state lives here rather
- * than on the stack, which must stay within a firmware's budget. */
-static size_t pass_ws_size(const sl_pass *p, uint32_t width)
-{
-    size_t c = sl_collect_ws_size(p, width);
-    const size_t t = sl_align_up(sizeof(sl_tracer)) + SL_ALIGN;
-    return sl_align_up(sizeof(sl_pass)) + SL_ALIGN + sl_align_up(((size_t)p->h + 1u) * 4u) +
-           SL_ALIGN + (c > t ? c : t);
-}
-
 SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const symline_config *cfg)
 {
     uint32_t L, l, a;
@@ -113,94 +108,34 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
             sl_pass p;
             size_t n;
             sl_pass_setup(&p, cfg, axis_of(cfg, a), l, width, height);
-            n = pass_ws_size(&p, width);
+            n = sl_pass_ws_size(&p, width);
             best = n > best ? n : best;
         }
     }
     return best;
 }
 
-/* Mean and standard deviation (Q4) of the frame's gray values: one read of
- * the frame, summed per row so a row's sums stay in 32 bits. */
-SL_NOINLINE static void frame_stats(const symline_image *img, uint32_t *mean, uint32_t *sigma_q4)
+/* Every pass, fine scale first, horizontal before vertical. Kept apart from
+ * symline_detect() so that the pass state and the merge are never on the
+ * stack together. */
+SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_t ws_size,
+                                   sl_run *d)
 {
-    uint64_t sum = 0u, sq = 0u;
-    const uint64_t n = (uint64_t)img->width * img->height;
-    int64_t var_q8;
-    uint32_t x, y;
-    *mean = 0u;
-    *sigma_q4 = 0u;
-    if (n == 0u) {
-        return;
-    }
-    for (y = 0; y < img->height; y++) {
-        const uint8_t *row = img->data + (size_t)y * img->stride;
-        uint32_t rs = 0u, rq = 0u; /* 255^2 * 65535 < 2^32 */
-        for (x = 0; x < img->width; x++) {
-            const uint32_t v = row[x];
-            rs += v;
-            rq += v * v;
-        }
-        sum += rs;
-        sq += rq;
-    }
-    *mean = (uint32_t)((sum + n / 2u) / n);
-    /* var = sq/n - (sum/n)^2, in Q8 (rounding may make it slightly negative). */
-    var_q8 = (int64_t)((sq << 8) / n) - (int64_t)(((sum << 4) / n) * ((sum << 4) / n));
-    *sigma_q4 = var_q8 > 0 ? (uint32_t)sl_isqrt64((uint64_t)var_q8) : 0u;
-}
-
-/* The adaptive thresholds folded into a pass. */
-static void adapt(sl_pass *p, const symline_config *cfg, uint32_t mean, uint32_t sigma_q4)
-{
-    const int64_t t = (int64_t)mean + (int64_t)cfg->bright_sigma10 * sigma_q4 / 160;
-    const uint32_t ridge = (uint32_t)(((uint64_t)cfg->ridge_sigma10 * sigma_q4 + 80u) / 160u);
-    const uint32_t illum = t < 0 ? 0u : (t > 255 ? 255u : (uint32_t)t);
-    if (illum > p->illum) {
-        p->illum = illum;
-    }
-    if (ridge > p->cmin) {
-        p->cmin = ridge;
-    }
-    if (cfg->side_sigma10 < 100) {
-        const int64_t sm = (int64_t)mean + (int64_t)cfg->side_sigma10 * sigma_q4 / 160;
-        p->side_max = sm < 0 ? 0u : (sm > 255 ? 255u : (uint32_t)sm);
-    }
-}
-
-/* Every pass, fine scale first, horizontal before vertical; returns the
- * number of points kept. Kept apart from symline_detect() so that the pass
- * state and the merge are never on the stack together. */
-SL_NOINLINE static uint32_t run_passes(const symline_image *img, const symline_config *cfg,
-                                       uint8_t *ws, size_t ws_size, sl_run *d)
-{
-    uint32_t L, l, a, npts = 0u;
+    uint32_t L, l, a;
     uint8_t *cur = ws, *const end = ws + ws_size;
     sl_pass *p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
-    L = level_count(cfg, img->width, img->height);
+    L = level_count(cfg, d->img->width, d->img->height);
     for (l = 0; l < L && p != NULL; l++) {
         for (a = 0; a < axis_count(cfg); a++) {
-            uint8_t *rest = cur;
-            uint32_t *row_start;
-            uint32_t n = 0u;
-            sl_tracer *t;
-            sl_pass_setup(p, cfg, axis_of(cfg, a), l, img->width, img->height);
+            sl_pass_setup(p, cfg, axis_of(cfg, a), l, d->img->width, d->img->height);
             if (cfg->adaptive) {
-                adapt(p, cfg, d->mean, d->sigma_q4);
+                sl_linefilter_adapt(&p->filter, cfg, &d->stats);
             }
-            row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
-            /* The collection's rings are free again once it returns: the tracer's
-             * state takes their place. */
-            (void)sl_collect(img, p, rest, (size_t)(end - rest), d->r->points + npts,
-                             d->r->point_cap - npts, &n, row_start, &d->truncated);
-            t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
-            if (row_start == NULL || t == NULL) {
-                return npts; /* not reached: the workspace size was checked */
+            if (sl_pass_run(d, p, cur, end) != SYMLINE_OK) {
+                return; /* not reached: the workspace size was checked */
             }
-            sl_trace_pass(d, p, row_start, n, t, &npts);
         }
     }
-    return npts;
 }
 
 symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
@@ -230,13 +165,15 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.r = out;
     d.nseg = 0u;
     d.prev_seg = 0u;
+    d.npts = 0u;
     d.truncated = 0u;
-    d.mean = 0u;
-    d.sigma_q4 = 0u;
+    d.stats.mean = 0u;
+    d.stats.sigma_q4 = 0u;
     if (cfg->adaptive) {
-        frame_stats(img, &d.mean, &d.sigma_q4);
+        sl_frame_stats_measure(img, &d.stats);
     }
-    out->point_count = run_passes(img, cfg, (uint8_t *)ws, ws_size, &d);
+    run_passes(cfg, (uint8_t *)ws, ws_size, &d);
+    out->point_count = d.npts;
     out->segment_count = d.nseg;
     if (cfg->merge_gap != 0u) {
         const uint32_t gap = cfg->merge_gap == 0xFFFFFFFFu ? img->width / 8u : cfg->merge_gap;

@@ -11,7 +11,7 @@
  */
 #include "intersections.h"
 
-#include "detect_internal.h" /* SL_NOINLINE */
+#include "common.h" /* SL_NOINLINE */
 
 /* Largest |coordinate| of a segment end, Q8 (65535 px). */
 #define IX_COORD_MAX ((int32_t)(SYMLINE_MAX_DIM << 8))

@@ -5,33 +5,115 @@
  * asks exactly that of the S point: its gray value must stand above the gray
  * values k = m+1 pixels to both sides. k = m+1 also rejects S points inside
  * regions wider than the operator's reach (those belong to a coarser scale).
- * The ridge height needed and the minimum gray value are set per frame by
- * symline_detect() from the frame's mean and standard deviation (`adaptive`),
- * so scaling or offsetting the brightness leaves the decision unchanged apart
- * from clipping and rounding.
- * The paper's A1-S filter only asks for an A point nearby (done by the
- * caller, which holds the extrema) and an absolute illumination threshold.
+ * The ridge height needed and the minimum gray value are set per frame from
+ * the frame's mean and standard deviation (`adaptive`), so scaling or
+ * offsetting the brightness leaves the decision unchanged apart from
+ * clipping and rounding.
+ * The paper's A1-S filter only asks for an A point nearby and an absolute
+ * illumination threshold.
  */
-#include "detect_internal.h"
+#include "linefilter.h"
 
-void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
-                   uint32_t width, uint32_t height)
+#include "fixed.h"
+
+void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg)
 {
-    p->axis = axis;
-    p->level = level;
-    p->w = width >> level;
-    p->h = height >> level;
-    p->m = cfg->radius;
-    p->k = cfg->radius + 1u;
-    p->filter = cfg->filter;
-    p->a_dist = 0u;
+    f->kind = cfg->filter;
+    f->a_distance = 0u;
     if (cfg->filter == SYMLINE_FILTER_PAPER) {
-        p->a_dist = cfg->a_distance != 0u ? cfg->a_distance : cfg->radius;
+        f->a_distance = cfg->a_distance != 0u ? cfg->a_distance : cfg->radius;
     }
-    p->lag = cfg->radius;
-    p->illum = cfg->illumination;
-    p->pct = cfg->contrast_pct;
-    p->cmin = cfg->contrast_min;
-    p->apct = cfg->contrast_asym_pct;
-    p->side_max = 255u;
+    f->min_gray = cfg->illumination;
+    f->ridge_pct = cfg->contrast_pct;
+    f->ridge_min = cfg->contrast_min;
+    f->asym_pct = cfg->contrast_asym_pct;
+    f->side_max = 255u;
+}
+
+/* Summed per row so a row's sums stay in 32 bits. */
+SL_NOINLINE void sl_frame_stats_measure(const symline_image *img, sl_frame_stats *st)
+{
+    uint64_t sum = 0u, sq = 0u;
+    const uint64_t n = (uint64_t)img->width * img->height;
+    int64_t var_q8;
+    uint32_t x, y;
+    st->mean = 0u;
+    st->sigma_q4 = 0u;
+    if (n == 0u) {
+        return;
+    }
+    for (y = 0; y < img->height; y++) {
+        const uint8_t *row = img->data + (size_t)y * img->stride;
+        uint32_t rs = 0u, rq = 0u; /* 255^2 * 65535 < 2^32 */
+        for (x = 0; x < img->width; x++) {
+            const uint32_t v = row[x];
+            rs += v;
+            rq += v * v;
+        }
+        sum += rs;
+        sq += rq;
+    }
+    st->mean = (uint32_t)((sum + n / 2u) / n);
+    /* var = sq/n - (sum/n)^2, in Q8 (rounding may make it slightly negative). */
+    var_q8 = (int64_t)((sq << 8) / n) - (int64_t)(((sum << 4) / n) * ((sum << 4) / n));
+    st->sigma_q4 = var_q8 > 0 ? (uint32_t)sl_isqrt64((uint64_t)var_q8) : 0u;
+}
+
+/* A sigma10 / 10 * sigma_q4 / 16 multiple of sigma: the divisor 160. */
+#define SL_SIGMA10_Q4_DIV 160
+/* side_sigma10 of this much or more leaves the sides alone. */
+#define SL_SIDE_SIGMA10_OFF 100
+
+void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_frame_stats *st)
+{
+    const uint32_t mean = st->mean, sigma_q4 = st->sigma_q4;
+    const int64_t t = (int64_t)mean + (int64_t)cfg->bright_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
+    const uint32_t ridge = (uint32_t)(((uint64_t)cfg->ridge_sigma10 * sigma_q4 +
+                                       SL_SIGMA10_Q4_DIV / 2u) / SL_SIGMA10_Q4_DIV);
+    const uint32_t bright = t < 0 ? 0u : (t > 255 ? 255u : (uint32_t)t);
+    if (bright > f->min_gray) {
+        f->min_gray = bright;
+    }
+    if (ridge > f->ridge_min) {
+        f->ridge_min = ridge;
+    }
+    if (cfg->side_sigma10 < SL_SIDE_SIGMA10_OFF) {
+        const int64_t sm = (int64_t)mean + (int64_t)cfg->side_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
+        f->side_max = sm < 0 ? 0u : (sm > 255 ? 255u : (uint32_t)sm);
+    }
+}
+
+/*
+ * The gray values k grid px to either side across the line (full-resolution
+ * pixels), summed along the piece, must differ by less than the summed ridge
+ * over twice asym_pct. Summing averages out the carpet's texture and the
+ * noise that make the test per point loose, so it can be stricter here: a
+ * bright band between two different surfaces (the foot of a wall, the floor
+ * beyond the carpet, the rim of a robot) lies on no carpet on one side.
+ * At most 4096 points are summed, so every product stays in 32 bits.
+ */
+#define SL_SIDE_SAMPLES 4096u
+SL_NOINLINE int sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
+                                           symline_axis axis, uint32_t level, uint32_t k,
+                                           const symline_point *q, uint32_t n)
+{
+    const int horiz = axis == SYMLINE_AXIS_HORIZONTAL;
+    const uint32_t half = (1u << level) >> 1, off = k << level;
+    const uint32_t step = n / SL_SIDE_SAMPLES + 1u;
+    const size_t across = horiz ? img->stride : 1u;
+    const uint32_t lim = horiz ? img->height : img->width;
+    uint32_t slo = 0u, shi = 0u, sc = 0u, i, side;
+    for (i = 0; i < n; i += step) {
+        /* Grid points map inside the frame: (v << level) + half < size. */
+        const uint32_t x = ((uint32_t)q[i].x << level) + half;
+        const uint32_t y = ((uint32_t)q[i].y << level) + half;
+        const uint32_t pos = horiz ? y : x;
+        const uint8_t *c = img->data + (size_t)y * img->stride + x;
+        sc += *c;
+        slo += *(c - (size_t)(pos >= off ? off : pos) * across);
+        shi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
+    }
+    side = slo > shi ? slo : shi;
+    return sc <= side ||
+           (slo > shi ? slo - shi : shi - slo) * (2u * f->asym_pct) > (sc - side) * 100u;
 }

@@ -16,9 +16,10 @@
  * Output: points appended in raster order, so the list is its own spatial
  * index together with row_start.
  */
-#include "detect_internal.h"
-#include "symline/extrema.h"
-#include "symline/symmetry.h"
+#include "linepoints.h"
+
+#include "extrema.h"
+#include "symmetry.h"
 
 void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_t *acc,
                  uint8_t *out)
@@ -62,11 +63,11 @@ void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_
 /* Rows of the horizontal-axis rings. */
 static uint32_t h_delta(const sl_pass *p)
 {
-    return p->a_dist + p->lag + 1u;
+    return p->filter.a_distance + p->lag + 1u;
 }
 static uint32_t h_map_rows(const sl_pass *p)
 {
-    return h_delta(p) + p->a_dist;
+    return h_delta(p) + p->filter.a_distance;
 }
 static uint32_t h_gray_rows(const sl_pass *p)
 {
@@ -122,61 +123,6 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 
 /* ---- vertical axis: along rows ---- */
 
-/*
- * Extrema of one row with the plateau limit: map gets 0, A or S per pixel.
- * First a branch-free pass over strict extrema (the common case, vectorised),
- * then plateaus (runs of equal E), if the row has any, by the SPEC §3 run rule.
- */
-static void row_extrema(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
-{
-    uint32_t a, i, eq = 0u;
-    map[0] = SYMLINE_MAP_NONE;
-    map[n - 1u] = SYMLINE_MAP_NONE;
-    for (i = 1u; i + 1u < n; i++) {
-        const uint32_t l = E[i - 1u], c = E[i], r = E[i + 1u];
-        const uint32_t s = (uint32_t)(l > c) & (uint32_t)(r > c);
-        const uint32_t am = (uint32_t)(l < c) & (uint32_t)(r < c);
-        eq |= (uint32_t)(l == c);
-        map[i] = (uint8_t)(s * SYMLINE_MAP_S + am * SYMLINE_MAP_A);
-    }
-    if (n >= 2u) {
-        eq |= (uint32_t)(E[n - 2u] == E[n - 1u]);
-    }
-    if (!eq) {
-        return;
-    }
-    for (a = 0u, i = 1u; i < n; i++) {
-        if (E[i] == E[a]) {
-            continue;
-        }
-        /* Run [a, i-1]; runs of one were handled above. */
-        if (a >= 1u && i - 1u > a) {
-            const uint32_t mid = (a + i - 1u) / 2u;
-            if (i - 1u - mid <= lag) {
-                if (E[a - 1u] > E[a] && E[i] > E[i - 1u]) {
-                    map[mid] = SYMLINE_MAP_S;
-                } else if (E[a - 1u] < E[a] && E[i] < E[i - 1u]) {
-                    map[mid] = SYMLINE_MAP_A;
-                }
-            }
-        }
-        a = i;
-    }
-}
-
-static int a_near_row(const uint8_t *map, uint32_t n, uint32_t x, uint32_t d)
-{
-    const uint32_t lo = x >= d ? x - d : 0u;
-    const uint32_t hi = x + d < n ? x + d : n - 1u;
-    uint32_t i;
-    for (i = lo; i <= hi; i++) {
-        if (map[i] == SYMLINE_MAP_A) {
-            return 1;
-        }
-    }
-    return 0;
-}
-
 SL_NOINLINE static symline_status collect_vertical(const symline_image *img, const sl_pass *p, uint8_t *cur,
                                        uint8_t *end, symline_point *pts, uint32_t cap,
                                        uint32_t *n, uint32_t *row_start, uint8_t *truncated)
@@ -207,16 +153,16 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img, con
             row = grow;
         }
         (void)symline_energy_row(row, w, p->m, E);
-        row_extrema(E, w, p->lag, map);
+        sl_extrema_runs(E, w, p->lag, map);
         for (x = 0; x < w; x++) {
             if (map[x] != SYMLINE_MAP_S) {
                 continue;
             }
-            if (!sl_filter_gray(p, row[x], row[x >= k ? x - k : 0u],
-                                row[x + k < w ? x + k : w - 1u])) {
+            if (!sl_linefilter_gray(&p->filter, row[x], row[x >= k ? x - k : 0u],
+                                    row[x + k < w ? x + k : w - 1u])) {
                 continue;
             }
-            if (p->a_dist != 0u && !a_near_row(map, w, x, p->a_dist)) {
+            if (p->filter.a_distance != 0u && !sl_linefilter_a_near(&p->filter, map, w, 1u, w, x)) {
                 continue;
             }
             push_point(pts, cap, n, x, y, truncated);
@@ -242,20 +188,6 @@ static uint8_t *h_map(const hring *r, uint32_t y)
     return r->map + (size_t)(y % r->map_rows) * r->p->w;
 }
 
-static int a_near_col(const hring *r, uint32_t x, uint32_t y)
-{
-    const uint32_t d = r->p->a_dist;
-    const uint32_t lo = y >= d ? y - d : 0u;
-    const uint32_t hi = y + d < r->p->h ? y + d : r->p->h - 1u;
-    uint32_t i;
-    for (i = lo; i <= hi; i++) {
-        if (h_map(r, i)[x] == SYMLINE_MAP_A) {
-            return 1;
-        }
-    }
-    return 0;
-}
-
 static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap, uint32_t *n,
                      uint32_t *row_start, uint8_t *truncated)
 {
@@ -270,10 +202,11 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
         if (map[x] != SYMLINE_MAP_S) {
             continue;
         }
-        if (!sl_filter_gray(p, c[x], lo[x], hi[x])) {
+        if (!sl_linefilter_gray(&p->filter, c[x], lo[x], hi[x])) {
             continue;
         }
-        if (p->a_dist != 0u && !a_near_col(r, x, y)) {
+        if (p->filter.a_distance != 0u &&
+            !sl_linefilter_a_near(&p->filter, r->map + x, r->map_rows, p->w, p->h, y)) {
             continue;
         }
         push_point(pts, cap, n, x, y, truncated);

@@ -5,7 +5,14 @@
  * point storage by rotating the points in between (three reversals), so a
  * segment is always one range of points.
  */
-#include "detect_internal.h"
+#include "merge.h"
+
+#include "fixed.h"
+#include "segments.h"
+#include "tracer.h"
+
+/* What joined_dev() returns for a pair whose joined piece would be a curve. */
+#define SL_JOINED_IS_CURVE UINT32_MAX
 
 static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
@@ -79,7 +86,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
     return 1;
 }
 
-/* The joined piece's max_dev, or 0xFFFFFFFF when it would be a curve. Kept
+/* The joined piece's max_dev, or SL_JOINED_IS_CURVE when it would be a curve. Kept
  * apart from mergeable() so their frames are never on the stack together. */
 SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_segment *b,
                                        const symline_point *pts, const int32_t ends[4],
@@ -89,16 +96,22 @@ SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_s
     const uint32_t d2 =
         sl_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     d = d2 > d ? d2 : d;
-    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], d, curve_q8) ? 0xFFFFFFFFu : d;
+    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], d, curve_q8) ? SL_JOINED_IS_CURVE : d;
+}
+
+/* A segment's ends, Q8. */
+static void set_ends(symline_segment *s, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+{
+    s->x0 = x0;
+    s->y0 = y0;
+    s->x1 = x1;
+    s->y1 = y1;
 }
 
 /* Field-by-field copy (a struct assignment may become a libc memcpy call). */
 static void copy_segment(symline_segment *d, const symline_segment *s)
 {
-    d->x0 = s->x0;
-    d->y0 = s->y0;
-    d->x1 = s->x1;
-    d->y1 = s->y1;
+    set_ends(d, s->x0, s->y0, s->x1, s->y1);
     d->max_dev = s->max_dev;
     d->first = s->first;
     d->count = s->count;
@@ -131,7 +144,7 @@ static void absorb(symline_result *r, uint32_t i, uint32_t j)
 
 void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8)
 {
-    const uint64_t gap2 = ((uint64_t)gap_px << 8) * ((uint64_t)gap_px << 8);
+    const uint64_t gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
     uint32_t i, j;
     int changed = 1;
     while (changed) {
@@ -146,21 +159,18 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 symline_segment *a = &r->segments[i];
                 const symline_segment *b = &r->segments[j];
                 const uint32_t lv = a->level > b->level ? a->level : b->level;
-                const uint32_t thr = curve_dev_q8 + (((1u << lv) - 1u) << 7);
+                const uint32_t thr = curve_dev_q8 + sl_block_half_q8(lv);
                 if (b->kind != SYMLINE_KIND_LINE) {
                     continue;
                 }
-                if (!mergeable(a, b, gap2, dev_q8 + (((1u << lv) - 1u) << 7), ends)) {
+                if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(lv), ends)) {
                     continue;
                 }
                 dev = joined_dev(a, b, r->points, ends, thr);
-                if (dev == 0xFFFFFFFFu) {
+                if (dev == SL_JOINED_IS_CURVE) {
                     continue;
                 }
-                a->x0 = ends[0];
-                a->y0 = ends[1];
-                a->x1 = ends[2];
-                a->y1 = ends[3];
+                set_ends(a, ends[0], ends[1], ends[2], ends[3]);
                 a->max_dev = dev;
                 a->level = (uint8_t)lv;
                 a->reserved = 1u; /* merged: points piece after piece (curvejoin.c) */

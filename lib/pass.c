@@ -2,16 +2,42 @@
  * One pass (an axis at one scale) of the detector. It collects its line
  * points into the caller's point storage (raster order, strip processing),
  * traces them from the storage's free tail, turns the chains into segments
- * and compacts the points it keeps down to where the pass began. Parts of a
+ * (cut at corners, the line filter's whole-piece side test, fit) and
+ * compacts the points it keeps down to where the pass began. Parts of a
  * chain that an earlier pass (finer scale, or the horizontal axis at the same
  * scale) already reported are left out, so one physical line is reported once.
  */
-#include "detect_internal.h"
+#include "pass.h"
+
+#include "fixed.h"
+#include "segments.h"
+#include "tracer.h"
+
+/* A point lies on an earlier segment within 2 px, plus the block size of its scale. */
+#define SL_COVER_TOL_Q8 SL_PX_Q8(2u)
+/* The bend test (sl_bend_check) runs on pieces at least this long (px) at
+ * the finest scales only: coarser grids step by 4 px and more. */
+#define SL_BEND_MIN_PX 16u
+#define SL_BEND_MAX_LEVEL 1u
+
+void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
+                   uint32_t width, uint32_t height)
+{
+    p->axis = axis;
+    p->level = level;
+    p->w = width >> level;
+    p->h = height >> level;
+    p->m = cfg->radius;
+    p->k = cfg->radius + 1u;
+    p->lag = cfg->radius;
+    sl_linefilter_setup(&p->filter, cfg);
+}
+
 
 static int covered(const sl_run *d, const symline_point *q, uint32_t level)
 {
     const int32_t x = sl_q8(q->x, level), y = sl_q8(q->y, level);
-    const int32_t tol = 512 + (int32_t)(((1u << level) - 1u) << 8);
+    const int32_t tol = (int32_t)(SL_COVER_TOL_Q8 + sl_block_q8(level));
     uint32_t i;
     for (i = 0; i < d->prev_seg; i++) {
         if (sl_near_segment(&d->r->segments[i], d->r->points, x, y, tol)) {
@@ -19,41 +45,6 @@ static int covered(const sl_run *d, const symline_point *q, uint32_t level)
         }
     }
     return 0;
-}
-
-/*
- * The contrast filter's "sides alike" test once more, over the whole piece:
- * the gray values k grid px to either side across the line (full-resolution
- * pixels), summed along the piece, must differ by less than the summed ridge
- * over twice contrast_asym_pct. Summing averages out the carpet's texture and
- * the noise that make the test per point loose, so it can be stricter here: a
- * bright band between two different surfaces (the foot of a wall, the floor
- * beyond the carpet, the rim of a robot) lies on no carpet on one side.
- * At most 4096 points are summed, so every product stays in 32 bits.
- */
-#define SL_SIDE_SAMPLES 4096u
-SL_NOINLINE static int sides_differ(const sl_run *d, const sl_pass *p, const symline_point *q,
-                                    uint32_t n)
-{
-    const symline_image *img = d->img;
-    const int horiz = p->axis == SYMLINE_AXIS_HORIZONTAL;
-    const uint32_t half = (1u << p->level) >> 1, off = p->k << p->level;
-    const uint32_t step = n / SL_SIDE_SAMPLES + 1u;
-    const size_t across = horiz ? img->stride : 1u;
-    const uint32_t lim = horiz ? img->height : img->width;
-    uint32_t slo = 0u, shi = 0u, sc = 0u, i, side;
-    for (i = 0; i < n; i += step) {
-        /* Grid points map inside the frame: (v << level) + half < size. */
-        const uint32_t x = ((uint32_t)q[i].x << p->level) + half;
-        const uint32_t y = ((uint32_t)q[i].y << p->level) + half;
-        const uint32_t pos = horiz ? y : x;
-        const uint8_t *c = img->data + (size_t)y * img->stride + x;
-        sc += *c;
-        slo += *(c - (size_t)(pos >= off ? off : pos) * across);
-        shi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
-    }
-    side = slo > shi ? slo : shi;
-    return sc <= side || (slo > shi ? slo - shi : shi - slo) * (2u * p->apct) > (sc - side) * 100u;
 }
 
 /* One piece of a chain (grid coordinates, absolute storage index `at`). */
@@ -66,7 +57,8 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     if ((n << p->level) < d->cfg->min_length || n < 2u) {
         return;
     }
-    if (p->filter == SYMLINE_FILTER_CONTRAST && p->apct != 0u && sides_differ(d, p, q, n)) {
+    if (p->filter.kind == SYMLINE_FILTER_CONTRAST && p->filter.asym_pct != 0u &&
+        sl_linefilter_sides_differ(&p->filter, d->img, p->axis, p->level, p->k, q, n)) {
         return;
     }
     if (d->nseg >= d->r->segment_cap) {
@@ -75,10 +67,9 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     }
     s = &d->r->segments[d->nseg++];
     sl_fit(q, n, p->level, d->cfg->curve_dev_q8, s);
-    /* A flat arc stays under the deviation threshold but bends: a curve too.
-     * Only at the two finest scales: coarser grids step by 4 px and more. */
-    if (s->kind == SYMLINE_KIND_LINE && d->cfg->curve_bend_q8 != 0u && p->level <= 1u &&
-        (n << p->level) >= 16u) {
+    /* A flat arc stays under the deviation threshold but bends: a curve too. */
+    if (s->kind == SYMLINE_KIND_LINE && d->cfg->curve_bend_q8 != 0u &&
+        p->level <= SL_BEND_MAX_LEVEL && (n << p->level) >= SL_BEND_MIN_PX) {
         sl_bend_check(q, n, p->level, d->cfg->curve_bend_q8, s);
     }
     s->axis = (uint8_t)p->axis;
@@ -113,17 +104,19 @@ static void chain(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     }
 }
 
-/* Traces the pass's raster list (n points at *npts) and keeps its segments'
- * points right after the earlier passes' ones. t: the tracer's state, in the
- * caller's workspace. */
-void sl_trace_pass(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint32_t n,
-                   sl_tracer *t, uint32_t *npts)
+/* Traces the pass's raster list (n points at d->npts) and keeps its
+ * segments' points right after the earlier passes' ones. t: the tracer's
+ * state, in the pass workspace. Apart from sl_pass_run() so that its frame
+ * and the line point collection's are never on the stack together. */
+SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint32_t n,
+                              sl_tracer *t)
 {
     symline_result *r = d->r;
-    const uint32_t base = *npts;
+    const uint32_t base = d->npts;
     const uint32_t first_seg = d->nseg;
     uint32_t tail = base + n, cnt, k, w;
     uint8_t cut = 0u;
+    /* Chains go to the storage's free tail after the raster list. */
     sl_tracer_init(t, r->points + base, n, row_start, p->h);
     while (tail < r->point_cap &&
            sl_tracer_next(t, r->points + tail, r->point_cap - tail, &cnt, &cut)) {
@@ -145,6 +138,33 @@ void sl_trace_pass(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint3
         s->first = w;
         w += s->count;
     }
-    *npts = w;
+    d->npts = w;
     d->prev_seg = d->nseg;
+}
+
+/* The pass's raster list into the free part of the point storage (after
+ * d->npts); returns its length. Apart from sl_pass_run() so that the
+ * collection's call and the tracing's are never on the stack together. */
+SL_NOINLINE static uint32_t collect(sl_run *d, const sl_pass *p, uint8_t *ws,
+                                    const uint8_t *end, uint32_t *row_start)
+{
+    uint32_t n = 0u;
+    (void)sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
+                     d->r->point_cap - d->npts, &n, row_start, &d->truncated);
+    return n;
+}
+
+symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end)
+{
+    uint8_t *rest = ws;
+    uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
+    /* The collection's rings are free again once it returns: the tracer's
+     * state takes their place. */
+    const uint32_t n = collect(d, p, rest, end, row_start);
+    sl_tracer *t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
+    if (row_start == NULL || t == NULL) {
+        return SYMLINE_ERR_BUFFER; /* not reached: the workspace size was checked */
+    }
+    trace(d, p, row_start, n, t);
+    return SYMLINE_OK;
 }

@@ -5,25 +5,7 @@
  * All geometry is integer: coordinates in Q8 pixels (int32), products in
  * int64, lengths through an integer square root.
  */
-#include "detect_internal.h"
-
-uint64_t sl_isqrt64(uint64_t v)
-{
-    uint64_t r = 0u, bit = (uint64_t)1u << 62;
-    while (bit > v) {
-        bit >>= 2;
-    }
-    while (bit != 0u) {
-        if (v >= r + bit) {
-            v -= r + bit;
-            r = (r >> 1) + bit;
-        } else {
-            r >>= 1;
-        }
-        bit >>= 2;
-    }
-    return r;
-}
+#include "segments.h"
 
 /* Corner test span (points on either side) and threshold cos^2(40 deg) ~ 587/1000. */
 #define SL_CORNER_SPAN 4
@@ -78,22 +60,6 @@ uint32_t sl_corner_cut(const symline_point *p, uint32_t n)
         }
     }
     return n;
-}
-
-/* Distance (Q8) of point (px, py) to the line through a with direction (dx, dy), all Q8. */
-uint32_t sl_div_q8(uint64_t cross, uint64_t len)
-{
-    /* A 32-bit division (no 64-bit division helper on small cores): drop the
-     * same low bits of both; the quotient keeps well under 1/256 px of error
-     * for any chord longer than a pixel. */
-    while (cross > 0xFFFFFFFFu) {
-        cross >>= 1;
-        len >>= 1;
-    }
-    if (len == 0u) {
-        return 0xFFFFFFFFu;
-    }
-    return (uint32_t)cross / (uint32_t)len;
 }
 
 uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py)
@@ -265,14 +231,20 @@ uint32_t sl_bend_q8(const symline_point *p, uint32_t n)
     return (uint32_t)d << 1;
 }
 
-void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
-            symline_segment *s)
+/* The chord of p[0..n-1]'s first and last point as s's ends. */
+static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
-    const uint32_t thr = curve_dev_q8 + (((1u << level) - 1u) << 7);
     s->x0 = sl_q8(p[0].x, level);
     s->y0 = sl_q8(p[0].y, level);
     s->x1 = sl_q8(p[n - 1u].x, level);
     s->y1 = sl_q8(p[n - 1u].y, level);
+}
+
+void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
+            symline_segment *s)
+{
+    const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
+    chord_ends(p, n, level, s);
     s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
     s->kind = (uint8_t)(sl_is_curve(s->x0, s->y0, s->x1, s->y1, s->max_dev, thr)
                             ? SYMLINE_KIND_CURVE
@@ -338,8 +310,9 @@ int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t 
     }
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
-        if (near_chord((int32_t)p[i].x << 8, (int32_t)p[i].y << 8, (int32_t)p[j].x << 8,
-                       (int32_t)p[j].y << 8, x, y, tol_q8)) {
+        if (near_chord((int32_t)p[i].x << SL_Q8_SHIFT, (int32_t)p[i].y << SL_Q8_SHIFT,
+                       (int32_t)p[j].x << SL_Q8_SHIFT, (int32_t)p[j].y << SL_Q8_SHIFT, x, y,
+                       tol_q8)) {
             return 1;
         }
     }
@@ -354,9 +327,6 @@ void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     }
     /* A curve keeps the chord of its first and last point (no line fit). */
     s->kind = SYMLINE_KIND_CURVE;
-    s->x0 = sl_q8(p[0].x, level);
-    s->y0 = sl_q8(p[0].y, level);
-    s->x1 = sl_q8(p[n - 1u].x, level);
-    s->y1 = sl_q8(p[n - 1u].y, level);
+    chord_ends(p, n, level, s);
     s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }

@@ -1,7 +1,7 @@
 /*
  * Status names and the image view check.
  */
-#include "internal.h"
+#include "common.h"
 
 const char *symline_status_str(symline_status st)
 {

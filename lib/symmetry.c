@@ -5,9 +5,10 @@
  * loop is a plain lane-wise multiply-accumulate the compiler vectorises
  * (uint8 loads widened to 32-bit lanes).
  */
-#include "symline/symmetry.h"
+#include "symmetry.h"
 
-#include "internal.h"
+/* 255^2: the squared difference counted for a pair that leaves the image. */
+#define SL_DMAX2 65025u
 
 uint32_t symline_emax(uint32_t m)
 {
@@ -17,7 +18,14 @@ uint32_t symline_emax(uint32_t m)
     return SL_DMAX2 * (m * (m + 1u) / 2u);
 }
 
-/* sum_{j=k+1..m} (m+1-j) * 255^2: what the pairs beyond the border add. */
+/* Distance of index i to the nearer end of 0..n-1. */
+static uint32_t edge_distance(uint32_t i, uint32_t n)
+{
+    return i < n - 1u - i ? i : n - 1u - i;
+}
+
+/* sum_{j=k+1..m} (m+1-j) * 255^2: what the pairs beyond the border add at
+ * k pixels from the nearer end. */
 static uint32_t border_energy(uint32_t m, uint32_t k)
 {
     uint32_t t;
@@ -67,10 +75,10 @@ symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint
     fill(E, n, 0u);
     edge = (m < n) ? m : n;
     for (i = 0; i < edge; i++) {
-        E[i] = border_energy(m, (i < n - 1u - i) ? i : n - 1u - i);
+        E[i] = border_energy(m, edge_distance(i, n));
     }
     for (i = n - edge; i < n; i++) {
-        E[i] = border_energy(m, (i < n - 1u - i) ? i : n - 1u - i);
+        E[i] = border_energy(m, edge_distance(i, n));
     }
     /* In-image pairs: for offset j, indices j .. n-1-j have both partners. */
     for (j = 1u; j <= m && 2u * j < n; j++) {
@@ -113,7 +121,7 @@ symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uin
 symline_status symline_energy_across_image(const symline_image *img, uint32_t y, uint32_t m,
                                            uint32_t *E)
 {
-    uint32_t j, border = 0u;
+    uint32_t j;
     symline_status st = symline_image_check(img);
     if (st != SYMLINE_OK) {
         return st;
@@ -128,13 +136,9 @@ symline_status symline_energy_across_image(const symline_image *img, uint32_t y,
         return SYMLINE_ERR_RANGE;
     }
     /* Same sum as symline_energy_across(), with the rows taken from the frame
-     * directly so no pointer window (up to 511 entries) has to live on the stack. */
-    for (j = 1u; j <= m; j++) {
-        if (j > y || y + j >= img->height) {
-            border += (m + 1u - j) * SL_DMAX2;
-        }
-    }
-    fill(E, img->width, border);
+     * directly so no pointer window (up to 511 entries) has to live on the stack:
+     * the pairs j > edge_distance(y) leave the frame. */
+    fill(E, img->width, border_energy(m, edge_distance(y, img->height)));
     for (j = 1u; j <= m && j <= y && y + j < img->height; j++) {
         add_pair(img->data + (size_t)(y - j) * img->stride,
                  img->data + (size_t)(y + j) * img->stride, m + 1u - j, img->width, E);

@@ -24,7 +24,7 @@
  *    order that has an unvisited neighbour, traces forward, then backward
  *    from the start, and joins the two halves.
  */
-#include "detect_internal.h"
+#include "tracer.h"
 
 static const int8_t DX[8] = {1, 1, 0, -1, -1, -1, 0, 1};
 static const int8_t DY[8] = {0, 1, 1, 1, 0, -1, -1, -1};

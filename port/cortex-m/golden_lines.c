@@ -2,8 +2,8 @@
  * The detector's golden JSON (tests/golden/lines/) reproduced on the target:
  * every bundled real frame (608x800, in flash) through symline_detect() with
  * the default configuration, and one with the paper filter, then
- * symline_intersections() with its defaults, written with the
- * host tools' own JSON writer (tools/common/segjson.c) over semihosting.
+ * symline_intersections() with its defaults, written with the host
+ * programs' JSON writer (capture/hostio/segjson.c) over semihosting.
  * tools/firmware/check.sh splits the output at the "=== NAME" lines and
  * compares each part byte for byte with the golden file.
  */

@@ -1,7 +1,9 @@
 #!/bin/sh
 # The core's rules, checked twice: in the sources (grep) and in what the
 # compiler produced (undefined symbols of the built library, and a build of
-# lib/ with the FPU registers forbidden, which fails on any float arithmetic).
+# lib/ with the FPU registers forbidden, which fails on any float arithmetic);
+# and the layering of the tree: lib/ includes only lib/ and include/,
+# capture/ and port/ nothing from tools/, and lib/'s includes form no cycle.
 # Usage: check_core_rules.sh SOURCE_DIR LIBSYMLINE_A CC
 set -u
 src=$1 lib=$2 cc=$3
@@ -37,6 +39,65 @@ x86_64*|i?86*)
     ;;
 *) echo "note: register-level float check runs on x86 hosts only" ;;
 esac
+
+# 4. layering: arrows run tools -> capture -> lib -> include, never back.
+# Quoted includes resolve against the including file's folder first, then the
+# include path; a name is taken as "outside" when no allowed folder holds it.
+# includes FILE: the quoted include names of FILE, one per line.
+includes() { sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$1"; }
+# 4a. lib/ includes only lib/ and include/ (and the C library's <...> headers).
+bad_inc=""
+for f in $(find "$src/lib" "$src/include" -name '*.[ch]'); do
+    for h in $(includes "$f"); do
+        case "$h" in *..*) bad_inc="$bad_inc
+  $f: \"$h\""; continue ;; esac
+        [ -f "$(dirname "$f")/$h" ] || [ -f "$src/lib/$h" ] || [ -f "$src/include/$h" ] ||
+            bad_inc="$bad_inc
+  $f: \"$h\""
+    done
+done
+[ -z "$bad_inc" ] && ok || bad "lib/ or include/ includes a file from outside lib/ and include/:$bad_inc"
+
+# 4b. capture/ and port/ include nothing from tools/: no include names tools/,
+# and no quoted include is found only in tools/.
+bad_inc=""
+for f in $(find "$src/capture" "$src/port" -name '*.[ch]' -o -name '*.cpp' -o -name '*.hpp'); do
+    for h in $(includes "$f"); do
+        case "$h" in *tools/*) bad_inc="$bad_inc
+  $f: \"$h\""; continue ;; esac
+        [ -f "$(dirname "$f")/$h" ] && continue
+        if [ -n "$(find "$src/tools" -path "*/$h" 2>/dev/null | head -1)" ] &&
+           [ -z "$(find "$src/capture" "$src/port" "$src/lib" "$src/include" -path "*/$h" 2>/dev/null | head -1)" ]; then
+            bad_inc="$bad_inc
+  $f: \"$h\" (only in tools/)"
+        fi
+    done
+done
+[ -z "$bad_inc" ] && ok || bad "capture/ or port/ includes from tools/:$bad_inc"
+# ... nor do their build files compile or include anything under tools/ (build
+# tools such as tools/firmware/pgm2c.c run on the host and are not linked in).
+bad_inc=$(grep -nE 'tools/(common|cli|capture|eval|bench|reference)' \
+          $(find "$src/capture" "$src/port" -name CMakeLists.txt) 2>/dev/null |
+          grep -vE '^[^:]+:[0-9]+:[[:space:]]*#')
+[ -z "$bad_inc" ] && ok || bad "capture/ or port/ build files use tools/ sources:
+$bad_inc"
+
+# 4c. lib/ has no include cycle, counted per module: foo.c and its private
+# header foo.h are one node, so two stages that include each other's header
+# form a cycle even when no header includes itself (tsort reports it).
+edges=$(for f in "$src"/lib/*.[ch]; do
+    b=$(basename "$f"); b=${b%.*}
+    echo "$b $b"
+    for h in $(includes "$f"); do
+        [ -f "$src/lib/$h" ] && [ "${h%.h}" != "$b" ] && echo "$b ${h%.h}"
+    done
+done)
+if cycle=$(echo "$edges" | tsort 2>&1 >/dev/null) && [ -z "$cycle" ]; then
+    ok
+else
+    bad "lib/ has an include cycle:
+$cycle"
+fi
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

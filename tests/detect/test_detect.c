@@ -12,7 +12,8 @@
 
 #include <cmocka.h>
 
-#include "detect_internal.h"
+#include "linepoints.h"
+#include "pass.h"
 #include "imgio.h"
 #include "symline/extrema.h"
 #include "symline/symmetry.h"
@@ -97,7 +98,7 @@ static int marked(const uint8_t *map, const uint32_t *E, const sl_pass *p, uint3
 
 static uint32_t full_frame_points(const symline_image *img, const sl_pass *p, symline_point *out)
 {
-    const uint32_t w = p->w, h = p->h, k = p->k, D = p->a_dist;
+    const uint32_t w = p->w, h = p->h, k = p->k, D = p->filter.a_distance;
     uint8_t *g = (uint8_t *)malloc((size_t)w * h);
     uint16_t *acc = (uint16_t *)malloc((size_t)img->width * sizeof(uint16_t));
     uint32_t *E = (uint32_t *)malloc((size_t)w * h * sizeof(uint32_t));
@@ -132,7 +133,7 @@ static uint32_t full_frame_points(const symline_image *img, const sl_pass *p, sy
                 lo = g[y * w + (x >= k ? x - k : 0u)];
                 hi = g[y * w + (x + k < w ? x + k : w - 1u)];
             }
-            if (!sl_filter_gray(p, c, lo, hi)) {
+            if (!sl_linefilter_gray(&p->filter, c, lo, hi)) {
                 continue;
             }
             if (D != 0u) {

@@ -9,7 +9,10 @@
 
 #include <cmocka.h>
 
-#include "detect_internal.h"
+#include "curvejoin.h"
+#include "merge.h"
+#include "segments.h"
+#include "tracer.h"
 
 #define MAXP 512u
 

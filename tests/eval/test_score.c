@@ -8,6 +8,8 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <math.h>
 #include <cmocka.h>
 
 #include "evio.h"
@@ -257,7 +259,7 @@ static void test_ignore(void **state)
     ev_labels ignore;
     ev_paths gt, det;
     ev_score s;
-    ev_extras ex = {NULL, NULL, NULL};
+    ev_extras ex = {NULL, NULL, NULL, NULL, NULL};
     int x, y, w, h;
     (void)state;
     for (y = 0; y < 20; y++) {
@@ -322,6 +324,17 @@ static void test_index_exact(void **state)
                 }
             }
             assert_int_equal(ev_index_near(&ix, pt, NULL), brute);
+            {
+                /* The nearest distance, exactly as the scan over every segment finds it. */
+                double best = -1.0, d = ev_index_dist(&ix, pt);
+                for (i = 0; i < p.npieces; i++) {
+                    double e = ev_dist_piece(&p, i, pt); /* -1: a piece without points */
+                    if (e >= 0.0 && e <= tol && (best < 0.0 || e < best)) {
+                        best = e;
+                    }
+                }
+                assert_true(d == best);
+            }
             hits += brute;
         }
         ev_index_free(&ix);
@@ -359,7 +372,7 @@ static void test_labels(void **state)
                                          "t", &det, &w, &h),
                      0);
     {
-        ev_extras ex = {NULL, NULL, NULL};
+        ev_extras ex = {NULL, NULL, NULL, NULL, NULL};
         ex.labels = &labels;
         ev_score_paths_ex(&gt, NULL, &det, 2.0, &s, &ex);
     }
@@ -373,6 +386,141 @@ static void test_labels(void **state)
     ev_paths_free(&det);
 }
 
+/* Scores a detection JSON with extras (centre dump) against gt. */
+static ev_score score_json_ex(const ev_paths *gt, const ev_paths *dc, const char *json,
+                              FILE *centre)
+{
+    ev_paths det;
+    ev_score s;
+    ev_extras ex;
+    int w, h;
+    memset(&ex, 0, sizeof(ex));
+    ex.centre = centre;
+    ev_paths_init(&det);
+    assert_int_equal(ev_parse_detections(json, "test", &det, &w, &h), 0);
+    ev_score_paths_ex(gt, dc, &det, 2.0, &s, &ex);
+    ev_paths_free(&det);
+    return s;
+}
+
+/* Three pieces along one long line count 3; a crossing piece, a 3-sample piece and
+   pieces along short or circle ground truth do not count; a line nothing lies along
+   is not found. */
+static void test_fragmentation(void **state)
+{
+    ev_paths gt;
+    ev_score s;
+    (void)state;
+    ev_paths_init(&gt);
+    seg(&gt, EV_TAG_LINE, 10, 10, 110, 10);  /* 100 px: counts */
+    seg(&gt, EV_TAG_LINE, 10, 50, 30, 50);   /* 20 px: too short */
+    seg(&gt, EV_TAG_CURVE, 10, 80, 110, 80); /* circle ground truth: not straight */
+    seg(&gt, EV_TAG_LINE, 200, 10, 200, 60); /* 50 px: counts, nothing along it */
+    s = score_json_ex(&gt, NULL,
+                      "{\"segments\":[{\"x0\":10,\"y0\":10,\"x1\":40,\"y1\":10},"
+                      "{\"x0\":45,\"y0\":11,\"x1\":75,\"y1\":11},"
+                      "{\"x0\":80,\"y0\":9,\"x1\":110,\"y1\":9},"
+                      "{\"x0\":60,\"y0\":0,\"x1\":60,\"y1\":30},"
+                      "{\"x0\":50,\"y0\":10,\"x1\":51,\"y1\":10},"
+                      "{\"x0\":10,\"y0\":50,\"x1\":30,\"y1\":50},"
+                      "{\"x0\":10,\"y0\":80,\"x1\":110,\"y1\":80}]}",
+                      NULL);
+    assert_int_equal(s.frag_pieces, 2);
+    assert_int_equal(s.frag_found, 1);
+    assert_int_equal(s.frag_segments, 3);
+    /* One piece from x 0 to 130 along the first line: the samples at x 8..112 are within
+       2 px of it, 209 of 261 = 80 %: one piece, fragmentation 1. */
+    s = score_json_ex(&gt, NULL, "{\"segments\":[{\"x0\":0,\"y0\":10,\"x1\":130,\"y1\":10}]}",
+                      NULL);
+    assert_int_equal(s.frag_found, 1);
+    assert_int_equal(s.frag_segments, 1);
+    ev_paths_free(&gt);
+}
+
+/* The 70 % share and the 8-sample minimum at their limits. */
+static void test_fragmentation_limits(void **state)
+{
+    ev_paths gt;
+    ev_score s;
+    (void)state;
+    ev_paths_init(&gt);
+    seg(&gt, EV_TAG_LINE, 10, 10, 110, 10);
+    /* x 5..14.5: 20 samples, x >= 8 within 2 px: 14 = 70 %. */
+    s = score_json_ex(&gt, NULL, "{\"segments\":[{\"x0\":5,\"y0\":10,\"x1\":14.5,\"y1\":10}]}",
+                      NULL);
+    assert_int_equal(s.frag_segments, 1);
+    /* x 4.5..14: 13 of 20 = 65 %. */
+    s = score_json_ex(&gt, NULL, "{\"segments\":[{\"x0\":4.5,\"y0\":10,\"x1\":14,\"y1\":10}]}",
+                      NULL);
+    assert_int_equal(s.frag_segments, 0);
+    assert_int_equal(s.frag_found, 0);
+    assert_int_equal(s.frag_pieces, 1);
+    /* 8 samples (3.5 px) count, 7 (3 px) do not. */
+    s = score_json_ex(&gt, NULL, "{\"segments\":[{\"x0\":50,\"y0\":10,\"x1\":53.5,\"y1\":10}]}",
+                      NULL);
+    assert_int_equal(s.frag_segments, 1);
+    s = score_json_ex(&gt, NULL, "{\"segments\":[{\"x0\":50,\"y0\":10,\"x1\":53,\"y1\":10}]}",
+                      NULL);
+    assert_int_equal(s.frag_segments, 0);
+    /* No detection: nothing found, nothing counted. */
+    s = score_json_ex(&gt, NULL, "{\"segments\":[]}", NULL);
+    assert_int_equal(s.frag_pieces, 1);
+    assert_int_equal(s.frag_found + s.frag_segments, 0);
+    ev_paths_free(&gt);
+}
+
+/* A detection tilted by 1 px over 100 px: 202 samples (length just over 100 px),
+   sample k is k/201 px off the ground truth; an unmatched piece and samples near a
+   don't-care part are left out. */
+static void test_centre_error(void **state)
+{
+    ev_paths gt, dc;
+    ev_score s;
+    FILE *f = tmpfile();
+    double d, sum = 0.0;
+    int n = 0;
+    (void)state;
+    assert_non_null(f);
+    ev_paths_init(&gt);
+    ev_paths_init(&dc);
+    seg(&gt, EV_TAG_LINE, 10, 10, 110, 10);
+    s = score_json_ex(&gt, NULL, "{\"segments\":[{\"x0\":10,\"y0\":10.3,\"x1\":110,\"y1\":10.3}]}",
+                      NULL);
+    assert_int_equal(s.centre_n, 201);
+    assert_true(fabs(s.centre_median - 0.3) < 1e-9 && fabs(s.centre_p90 - 0.3) < 1e-9);
+    s = score_json_ex(&gt, NULL,
+                      "{\"segments\":[{\"x0\":10,\"y0\":10,\"x1\":110,\"y1\":11},"
+                      "{\"x0\":10,\"y0\":40,\"x1\":110,\"y1\":40}]}",
+                      f);
+    /* Nearest rank: median = value 101 of 202 (k = 100), p90 = value 182 (k = 181). */
+    assert_int_equal(s.centre_n, 202);
+    assert_true(fabs(s.centre_median - 100.0 / 201.0) < 1e-9);
+    assert_true(fabs(s.centre_p90 - 181.0 / 201.0) < 1e-9);
+    /* The dump holds the same 202 distances. */
+    rewind(f);
+    while (fscanf(f, "%lf", &d) == 1) {
+        sum += d;
+        n++;
+    }
+    assert_int_equal(n, 202);
+    assert_true(fabs(sum - 101.0) < 0.01); /* sum of k/201 for k = 0..201 */
+    /* Don't-care from x 10 to 30: samples with x <= 32 are left out, k = 45..201 remain
+       (157); median = value 79 (k = 123), p90 = value 142 (k = 186). */
+    seg(&dc, EV_TAG_OTHER, 10, 10, 30, 10);
+    s = score_json_ex(&gt, &dc, "{\"segments\":[{\"x0\":10,\"y0\":10,\"x1\":110,\"y1\":11}]}",
+                      NULL);
+    assert_int_equal(s.centre_n, 157);
+    assert_true(fabs(s.centre_median - 123.0 / 201.0) < 1e-9);
+    assert_true(fabs(s.centre_p90 - 186.0 / 201.0) < 1e-9);
+    /* Nothing matched: no centre error. */
+    s = score_json_ex(&gt, NULL, "{\"segments\":[{\"x0\":10,\"y0\":40,\"x1\":110,\"y1\":40}]}",
+                      NULL);
+    assert_int_equal(s.centre_n, 0);
+    fclose(f);
+    ev_paths_free(&gt);
+    ev_paths_free(&dc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -382,7 +530,8 @@ int main(void)
         cmocka_unit_test(test_curve_polyline), cmocka_unit_test(test_empty),
         cmocka_unit_test(test_json),        cmocka_unit_test(test_mask),
         cmocka_unit_test(test_labels),      cmocka_unit_test(test_index_exact),
-        cmocka_unit_test(test_ignore),
+        cmocka_unit_test(test_ignore),      cmocka_unit_test(test_fragmentation),
+        cmocka_unit_test(test_fragmentation_limits), cmocka_unit_test(test_centre_error),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -6,10 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../common/detopts.h"
-#include "../common/imgio.h"
-#include "../common/overlay.h"
-#include "../common/segjson.h"
+#include "detopts.h"
+#include "imgio.h"
+#include "overlay.h"
+#include "segjson.h"
 #include "cli.h"
 #include "symline/detect.h"
 #include "symline/intersections.h"

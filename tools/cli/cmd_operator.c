@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../common/detopts.h"
-#include "../common/imgio.h"
+#include "detopts.h"
+#include "imgio.h"
 #include "cli.h"
 #include "symline/extrema.h"
 #include "symline/symmetry.h"

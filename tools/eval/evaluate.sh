@@ -3,8 +3,10 @@
 #   - the given synthetic scenes DATA_DIR/synth (ground truth in the synth README formats),
 #   - the rendered sets normal, dark, overexposed, occluded, circle at 320x240 and
 #     640x480 (symline-render, fixed seeds),
-#   - the real frames DATA_DIR/field: F1 against a line mask where one exists, and
-#     stability F1 against the same frame with brightness x0.5, +40 and -40.
+#   - the real frames DATA_DIR/field: against hand ground truth where NAME.lines.txt
+#     exists (P, R, F1, segments, fragmentation, centre error; line-free frames: their
+#     segment count), F1 against a line mask where one exists, and stability F1 against
+#     the same frame with brightness x0.5, +40 and -40.
 # Every set is run with each filter side by side (default: the paper's A1-S filter
 # and the shipped default). Scoring: SPEC section 7, see docs/evaluation.md.
 #
@@ -20,6 +22,8 @@
 #   --per-image      also print one row per image
 #   --overlays       also draw the detections on every real frame (OUT/overlay/FILTER/NAME.png)
 #   --jobs N         parallel jobs (default 2)
+#   --real-only      only the table of the annotated real frames (fast; default --out
+#                    REPO/out/eval-real)
 set -eu
 
 usage() { sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
@@ -39,10 +43,12 @@ OPTS=
 PER_IMAGE=0
 OVERLAYS=0
 JOBS=2
+REAL_ONLY=0
+OUT_SET=0
 while [ $# -gt 0 ]; do
     case $1 in
         --build) BUILD=$2; shift 2 ;;
-        --out) OUT=$2; shift 2 ;;
+        --out) OUT=$2; OUT_SET=1; shift 2 ;;
         --filter) FILTERS="$FILTERS $2"; shift 2 ;;
         --count) COUNT=$2; shift 2 ;;
         --seed) SEED=$2; shift 2 ;;
@@ -51,10 +57,12 @@ while [ $# -gt 0 ]; do
         --per-image) PER_IMAGE=1; shift ;;
         --overlays) OVERLAYS=1; shift ;;
         --jobs) JOBS=$2; shift 2 ;;
+        --real-only) REAL_ONLY=1; shift ;;
         *) echo "evaluate.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
     esac
 done
 [ -n "$FILTERS" ] || FILTERS="paper default"
+[ "$REAL_ONLY" -eq 0 ] || [ "$OUT_SET" -eq 1 ] || OUT=$REPO/out/eval-real
 [ -d "$DATA" ] || { echo "evaluate.sh: no data folder '$DATA'" >&2; exit 2; }
 DATA=$(cd "$DATA" && pwd)
 case $BUILD in /*) ;; *) BUILD=$(pwd)/$BUILD ;; esac
@@ -91,6 +99,7 @@ START=$(date +%s)
 
 # ---- rendered sets (cached: the renderer is deterministic for its binary and arguments) ----
 SETS="normal dark overexposed occluded circle"
+[ "$REAL_ONLY" -eq 0 ] || { SETS=; SIZES=; }
 RSUM=$(cksum < "$BIN/symline-render" | cut -d' ' -f1)
 mkdir -p "$OUT/render"
 : > "$OUT/render.todo"
@@ -119,7 +128,7 @@ add_job() { # IMAGE JSON FILTER
 }
 GIVEN=$DATA/synth
 set_dirs=
-[ -d "$GIVEN" ] && set_dirs="given:$GIVEN"
+[ -d "$GIVEN" ] && [ "$REAL_ONLY" -eq 0 ] && set_dirs="given:$GIVEN"
 for size in $SIZES; do
     for set in $SETS; do set_dirs="$set_dirs $set-${size%%x*}:$OUT/render/$set-$size"; done
 done
@@ -134,16 +143,23 @@ for sd in $set_dirs; do
     done
 done
 
-# Real frames and their brightness variants.
+# Real frames and their brightness variants (--real-only: the annotated frames alone).
 FIELD=$DATA/field
 TR=$OUT/field-variants
 mkdir -p "$TR"
 FRAMES=
+ANNOTATED=
 if [ -d "$FIELD" ]; then
     for img in "$FIELD"/*.pgm; do
         case $img in *.mask.pgm) continue ;; esac
         [ -f "$img" ] || continue
         name=$(basename "$img" .pgm)
+        [ -f "$FIELD/$name.lines.txt" ] && ANNOTATED="$ANNOTATED $name"
+        if [ "$REAL_ONLY" -eq 1 ]; then
+            [ -f "$FIELD/$name.lines.txt" ] || continue
+            for f in $FILTERS; do add_job "$img" "$OUT/det/$f/field/$name.json" "$f"; done
+            continue
+        fi
         FRAMES="$FRAMES $name"
         "$BIN/symline-bright" --mul 0.5 "$img" "$TR/$name.x0.5.pgm"
         "$BIN/symline-bright" --report --clipped "$TR/$name.p40.sat.pgm" --add 40 "$img" "$TR/$name.p40.pgm" > "$TR/$name.p40.clip"
@@ -173,12 +189,14 @@ for f in $FILTERS; do
             echo failed >> "$1.err"
         fi' < "$OUT/detect.$f.todo"
 done
-if [ "$OVERLAYS" -eq 1 ] && [ -n "$FRAMES" ]; then
+OVL_FRAMES=$FRAMES
+[ "$REAL_ONLY" -eq 0 ] || OVL_FRAMES=$ANNOTATED
+if [ "$OVERLAYS" -eq 1 ] && [ -n "$OVL_FRAMES" ]; then
     for f in $FILTERS; do
         fo=
         [ "$f" = default ] || fo="--filter $f"
         mkdir -p "$OUT/overlay/$f"
-        for name in $FRAMES; do
+        for name in $OVL_FRAMES; do
             # shellcheck disable=SC2086
             "$BIN/symline" overlay $fo $OPTS "$FIELD/$name.pgm" "$OUT/overlay/$f/$name.png" ||
                 echo "evaluate.sh: overlay of $name failed" >&2
@@ -190,6 +208,93 @@ FAILS=$(find "$OUT/det" -name '*.err' -exec grep -l '^failed$' {} + 2>/dev/null 
 # ---- scoring and tables ----
 # kv KEY LINE: value of KEY=... in a symline-score line
 kv() { printf '%s\n' "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"; }
+PER=$OUT/per-image.txt
+: > "$PER"
+
+# Nearest-rank quantiles of a file of numbers, one per line: "median p90" ("- -" if empty).
+quantiles() {
+    sort -g "$1" | awk '{ v[NR] = $1 }
+        function rank(q,  r) { r = int(q * NR); if (r < q * NR) r++; return r < 1 ? 1 : r }
+        END { if (NR == 0) print "- -"; else printf "%.2f %.2f\n", v[rank(0.5)], v[rank(0.9)] }'
+}
+
+# The annotated real frames (NAME.lines.txt in DATA_DIR/field), one table per filter.
+real_frames_table() {
+    [ -n "$ANNOTATED" ] || return 0
+    echo "## Real frames against hand ground truth ($FIELD)"
+    echo
+    echo "The frames with NAME.lines.txt (hand annotations, SOURCES.md there). P, R, F1: SPEC 7"
+    echo "scoring against NAME.lines.txt, .arcs.txt, .dontcare.txt. segs = reported segments."
+    echo "frag = fragmentation: reported segments along each straight ground-truth piece of at"
+    echo "least 40 px (a segment lies along one when at least 70 % and at least 8 of its samples"
+    echo "are within tolerance of it), mean over the pieces with at least one (pieces found / all"
+    echo "in brackets); 1.00 = one segment per painted line. centre = distance of the matched"
+    echo "detected samples (within tolerance of ground truth, not don't-care) to the ground-truth"
+    echo "centre line, median / 90th percentile in px. Line-free frames (three empty files) show"
+    echo "their segment count only. Means over the frames with lines: P, R, F1 per frame;"
+    echo "frag pooled (all segments along found pieces / all found pieces); centre pooled over"
+    echo "the matched samples of all frames."
+    for f in $FILTERS; do
+        d=$OUT/det/$f/field
+        cfile=$OUT/centre.$f.txt
+        rows=$OUT/real.$f.tmp
+        : > "$cfile"
+        : > "$rows"
+        echo
+        echo "### Filter $f${OPTS:+, options $OPTS}"
+        echo
+        echo "| frame | P | R | F1 | segs | frag | centre med / p90 |"
+        echo "|---|---:|---:|---:|---:|---:|---:|"
+        for name in $ANNOTATED; do
+            if [ ! -s "$FIELD/$name.lines.txt" ] && [ ! -s "$FIELD/$name.arcs.txt" ] &&
+                [ ! -s "$FIELD/$name.dontcare.txt" ]; then
+                s=$("$BIN/symline-score" gt "$FIELD/$name" "$d/$name.json" | head -n 1)
+                echo "$f real-free $name $s" >> "$PER"
+                echo "free $s" >> "$rows"
+                echo "| $name (line-free) | | | | $(kv det_pieces "$s") | | |"
+                continue
+            fi
+            : > "$OUT/centre.one.tmp"
+            s=$("$BIN/symline-score" --centre "$OUT/centre.one.tmp" gt "$FIELD/$name" "$d/$name.json" | head -n 1)
+            cat "$OUT/centre.one.tmp" >> "$cfile"
+            echo "$f real $name $s" >> "$PER"
+            echo "lines $s" >> "$rows"
+            printf '%s\n' "$s" | awk -v name="$name" -v q="$(quantiles "$OUT/centre.one.tmp")" '
+                { for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
+                END { split(q, c, " ")
+                      frag = v["frag_found"] ? sprintf("%.2f (%d/%d)", v["frag_segments"] / v["frag_found"],
+                                                      v["frag_found"], v["frag_pieces"]) : sprintf("- (0/%d)", v["frag_pieces"])
+                      printf "| %s | %.3f | %.3f | %.3f | %d | %s | %s / %s |\n", name, v["p"], v["r"], v["f1"],
+                             v["det_pieces"], frag, c[1], c[2] }'
+        done
+        awk -v q="$(quantiles "$cfile")" '
+            { for (i = 2; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
+            $1 == "lines" { n++; p += v["p"]; r += v["r"]; f1 += v["f1"]; segs += v["det_pieces"]
+                            fs += v["frag_segments"]; ff += v["frag_found"]; fp += v["frag_pieces"] }
+            $1 == "free" { nfree++; free += v["det_pieces"] }
+            END { split(q, c, " ")
+                  if (n) printf "| mean of %d frames with lines | %.3f | %.3f | %.3f | %.1f | %s | %s / %s |\n",
+                                n, p / n, r / n, f1 / n, segs / n,
+                                ff ? sprintf("%.2f (%d/%d)", fs / ff, ff, fp) : "-", c[1], c[2]
+                  if (nfree) printf "| line-free frames: %d | | | | %d | | |\n", nfree, free }' "$rows"
+    done
+    echo
+}
+
+finish() {
+    echo "Detection runs: $NRUNS, failed: $FAILS; wall time $(($(date +%s) - START)) s."
+    echo "Per-image scores: $PER; detections: $OUT/det/FILTER/SET/NAME.json."
+}
+
+if [ "$REAL_ONLY" -eq 1 ]; then
+    echo "# symline line detection: annotated real frames"
+    echo
+    echo "Data: $DATA; build: $BIN; filters: $FILTERS."
+    echo
+    real_frames_table
+    finish
+    exit 0
+fi
 
 echo "# symline line detection: evaluation"
 echo
@@ -212,8 +317,6 @@ echo "## Synthetic scenes"
 echo
 echo "$hdr"
 echo "$sep"
-PER=$OUT/per-image.txt
-: > "$PER"
 : > "$OUT/setf1.tmp"
 : > "$OUT/stab.tmp"
 for sd in $set_dirs; do
@@ -247,6 +350,8 @@ for sd in $set_dirs; do
     echo "| $label | $n |$row"
 done
 echo
+
+real_frames_table
 
 if [ -n "$FRAMES" ]; then
     echo "## Real frames ($FIELD)"
@@ -422,5 +527,4 @@ if [ "$PER_IMAGE" -eq 1 ]; then
     echo '```'
     echo
 fi
-echo "Detection runs: $NRUNS, failed: $FAILS; wall time $(($(date +%s) - START)) s."
-echo "Per-image scores: $PER; detections: $OUT/det/FILTER/SET/NAME.json."
+finish

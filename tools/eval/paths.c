@@ -293,12 +293,14 @@ void ev_index_free(ev_index *ix)
     memset(ix, 0, sizeof(*ix));
 }
 
-int ev_index_near(const ev_index *ix, ev_pt q, int *tag_out)
+/* The nearest segment within tol: its distance (-1 when none); *tag_out its piece's
+   tag; with stop_at_first, the first segment found within tol instead. */
+static double index_scan(const ev_index *ix, ev_pt q, int *tag_out, int stop_at_first)
 {
     size_t c, k;
     double best = -1.0;
     if (ix->paths == NULL || ix->paths->npts == 0) {
-        return 0;
+        return -1.0;
     }
     /* Clamping is monotone, so a point outside the grid still meets every segment near it. */
     c = (size_t)cell_of(q.y, ix->y0, ix->cell, ix->ny) * (size_t)ix->nx +
@@ -310,10 +312,35 @@ int ev_index_near(const ev_index *ix, ev_pt q, int *tag_out)
             best = d;
             if (tag_out != NULL) {
                 *tag_out = ix->paths->tag[sg->piece];
-            } else {
-                return 1;
+            }
+            if (stop_at_first) {
+                break;
             }
         }
     }
-    return best >= 0.0;
+    return best;
+}
+
+int ev_index_near(const ev_index *ix, ev_pt q, int *tag_out)
+{
+    return index_scan(ix, q, tag_out, tag_out == NULL) >= 0.0;
+}
+
+double ev_index_dist(const ev_index *ix, ev_pt q)
+{
+    return index_scan(ix, q, NULL, 0);
+}
+
+double ev_dist_piece(const ev_paths *p, size_t piece, ev_pt q)
+{
+    const ev_pt *v = ev_piece_pts(p, piece);
+    size_t n = ev_piece_len(p, piece), k;
+    double best = n ? ev_dist_point_seg(q, v[0], v[0]) : -1.0;
+    for (k = 0; k + 1 < n; k++) {
+        double d = ev_dist_point_seg(q, v[k], v[k + 1]);
+        if (d < best) {
+            best = d;
+        }
+    }
+    return best;
 }

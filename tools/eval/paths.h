@@ -76,5 +76,9 @@ void ev_index_build(ev_index *ix, const ev_paths *p, double tol);
 void ev_index_free(ev_index *ix);
 /* 1 when q is within tol of a segment; *tag_out (optional) = tag of the nearest such piece. */
 int ev_index_near(const ev_index *ix, ev_pt q, int *tag_out);
+/* Distance from q to the nearest segment when it is within tol, else -1. */
+double ev_index_dist(const ev_index *ix, ev_pt q);
+/* Distance from q to the nearest segment of one piece of p. */
+double ev_dist_piece(const ev_paths *p, size_t piece, ev_pt q);
 
 #endif

@@ -61,6 +61,81 @@ static int width_bucket(double w)
     return w < 2.0 ? 0 : w < 4.0 ? 1 : w < 8.0 ? 2 : w < 16.0 ? 3 : 4;
 }
 
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Nearest-rank quantile of n sorted values: the value at rank ceil(q*n). */
+static double quantile(const double *v, size_t n, double q)
+{
+    size_t r = (size_t)ceil(q * (double)n);
+    return n == 0 ? 0.0 : v[r > 0 ? r - 1 : 0];
+}
+
+/* Median and 90th percentile of the n centre distances (sorted in place). */
+static void centre_stats(double *d, size_t n, ev_score *out)
+{
+    qsort(d, n, sizeof(*d), cmp_double);
+    out->centre_n = n;
+    out->centre_median = quantile(d, n, 0.5);
+    out->centre_p90 = quantile(d, n, 0.9);
+}
+
+/*
+ * Fragmentation: for every straight ground-truth piece at least EV_FRAG_MIN_LEN long,
+ * the detected pieces lying along it. ds/dpiece/nd are the detected samples, nsamp the
+ * samples per detected piece.
+ */
+static void fragmentation(const ev_paths *gt, const ev_paths *det, const ev_pt *ds,
+                          const size_t *dpiece, size_t nd, const size_t *nsamp, double tol,
+                          ev_score *out, FILE *report)
+{
+    size_t *near = calloc(det->npieces + 1, sizeof(size_t));
+    size_t g, i, j;
+    for (g = 0; g < gt->npieces; g++) {
+        const ev_pt *v = ev_piece_pts(gt, g);
+        size_t n = ev_piece_len(gt, g), along = 0;
+        double len = ev_piece_length(gt, g), lx = v[0].x, hx = v[0].x, ly = v[0].y, hy = v[0].y;
+        if (gt->tag[g] != EV_TAG_LINE || len < EV_FRAG_MIN_LEN) {
+            continue;
+        }
+        for (j = 1; j < n; j++) {
+            lx = fmin(lx, v[j].x);
+            hx = fmax(hx, v[j].x);
+            ly = fmin(ly, v[j].y);
+            hy = fmax(hy, v[j].y);
+        }
+        memset(near, 0, (det->npieces + 1) * sizeof(size_t));
+        for (i = 0; i < nd; i++) {
+            if (ds[i].x < lx - tol || ds[i].x > hx + tol || ds[i].y < ly - tol || ds[i].y > hy + tol) {
+                continue;
+            }
+            if (ev_dist_piece(gt, g, ds[i]) <= tol) {
+                near[dpiece[i]]++;
+            }
+        }
+        for (j = 0; j < det->npieces; j++) {
+            along += near[j] >= EV_FRAG_MIN_SAMPLES && 100 * near[j] >= EV_FRAG_SHARE_PCT * nsamp[j];
+        }
+        out->frag_pieces++;
+        out->frag_found += along > 0;
+        out->frag_segments += along;
+        if (report != NULL) {
+            fprintf(report, "gtpiece=%zu x0=%.1f y0=%.1f x1=%.1f y1=%.1f length=%.1f along=%zu pieces=",
+                    g, v[0].x, v[0].y, v[n - 1].x, v[n - 1].y, len, along);
+            for (j = 0, i = 0; j < det->npieces; j++) {
+                if (near[j] >= EV_FRAG_MIN_SAMPLES && 100 * near[j] >= EV_FRAG_SHARE_PCT * nsamp[j]) {
+                    fprintf(report, "%s%zu", i++ ? "," : "", j);
+                }
+            }
+            fputs(i ? "\n" : "-\n", report);
+        }
+    }
+    free(near);
+}
+
 void ev_score_paths(const ev_paths *gt, const ev_paths *dontcare, const ev_paths *det,
                     double tol, ev_score *out)
 {
@@ -79,12 +154,15 @@ void ev_score_paths_ex(const ev_paths *gt, const ev_paths *dontcare, const ev_pa
     FILE *pieces = extras ? extras->pieces : NULL;
     const ev_labels *labels = extras ? extras->labels : NULL;
     const ev_labels *ign = extras ? extras->ignore : NULL;
+    FILE *centre = extras ? extras->centre : NULL;
     ev_index gix, dcix, dix;
     ev_pt *ds = NULL, *gs = NULL;
     size_t *dpiece = NULL, *gpiece = NULL, nd, ng, i;
     size_t *near_line = calloc(det->npieces + 1, sizeof(size_t));
     size_t *near_curve = calloc(det->npieces + 1, sizeof(size_t));
     size_t *nsamp = calloc(det->npieces + 1, sizeof(size_t));
+    double *cdist;
+    size_t ncentre = 0;
 
     memset(out, 0, sizeof(*out));
     ev_index_build(&gix, gt, tol);
@@ -96,6 +174,8 @@ void ev_score_paths_ex(const ev_paths *gt, const ev_paths *dontcare, const ev_pa
 
     nd = ev_sample(det, EV_SAMPLE_STEP, &ds, &dpiece);
     out->det_samples = nd;
+    out->det_pieces = det->npieces;
+    cdist = malloc((nd + 1) * sizeof(double));
     for (i = 0; i < nd; i++) {
         int tag = -1;
         int near_gt = ev_index_near(&gix, ds[i], &tag);
@@ -115,6 +195,13 @@ void ev_score_paths_ex(const ev_paths *gt, const ev_paths *dontcare, const ev_pa
         }
         out->det_counted++;
         out->det_hits += (size_t)near_gt;
+        if (near_gt) {
+            cdist[ncentre] = ev_index_dist(&gix, ds[i]);
+            if (centre != NULL) {
+                fprintf(centre, "%.4f\n", cdist[ncentre]);
+            }
+            ncentre++;
+        }
         if (!near_gt && labels != NULL) {
             long x = lround(ds[i].x), y = lround(ds[i].y);
             if (x >= 0 && y >= 0 && x < labels->width && y < labels->height) {
@@ -176,8 +263,11 @@ void ev_score_paths_ex(const ev_paths *gt, const ev_paths *dontcare, const ev_pa
             }
         }
     }
+    fragmentation(gt, det, ds, dpiece, nd, nsamp, tol, out, extras ? extras->gt_pieces : NULL);
+    centre_stats(cdist, ncentre, out);
     finish(out);
 
+    free(cdist);
     free(ds);
     free(gs);
     free(dpiece);
@@ -210,5 +300,8 @@ void ev_score_mask(const unsigned char *mask, int width, int height, const ev_pa
     /* A mask says nothing about line or curve. */
     out->line_matched = out->line_ok = out->curve_matched = out->curve_ok = 0;
     out->line_matched_s = out->line_ok_s = out->curve_matched_s = out->curve_ok_s = 0;
+    /* Nor where a line's centre is: mask pixels are not centre lines. */
+    out->centre_n = 0;
+    out->centre_median = out->centre_p90 = 0.0;
     ev_paths_free(&pix);
 }

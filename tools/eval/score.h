@@ -15,6 +15,12 @@
 #define EV_NLABELS 8 /* label values 0..7 counted; larger ones count as 7 */
 #define EV_LABEL_PAINT 1 /* the label of painted lines (symline-render --labels) */
 #define EV_NWIDTHS 5
+/* Fragmentation (docs/evaluation.md): straight ground-truth pieces at least this long
+   count; a detected piece lies along one when at least EV_FRAG_SHARE_PCT % of its
+   samples, and at least EV_FRAG_MIN_SAMPLES samples, are within tolerance of it. */
+#define EV_FRAG_MIN_LEN 40.0
+#define EV_FRAG_SHARE_PCT 70
+#define EV_FRAG_MIN_SAMPLES 8
 
 /* A label image (one byte per pixel, stride = width), e.g. rendered surfaces. */
 typedef struct ev_labels {
@@ -24,6 +30,7 @@ typedef struct ev_labels {
 
 typedef struct ev_score {
     double p, r, f1;
+    size_t det_pieces;   /* detected pieces (reported segments) */
     size_t det_samples;  /* all samples of the detections */
     size_t det_counted;  /* those not ignored (not within tol of a don't-care part) */
     size_t det_hits;     /* counted samples within tol of ground truth */
@@ -38,6 +45,16 @@ typedef struct ev_score {
        [0,2) [2,4) [4,8) [8,16) [16,inf) (width from the paint labels, +-1 px). */
     size_t fp_label[EV_NLABELS];
     size_t gt_width_n[EV_NWIDTHS], gt_width_hits[EV_NWIDTHS];
+    /* Fragmentation: straight ground-truth pieces >= EV_FRAG_MIN_LEN px (frag_pieces),
+       those with at least one detected piece along them (frag_found), and the number of
+       detected pieces along those (frag_segments; a detected piece may lie along two
+       ground-truth pieces and then counts for both). Mean = frag_segments / frag_found. */
+    size_t frag_pieces, frag_found, frag_segments;
+    /* Centre error: distance of every matched detected sample (counted and within tol of
+       ground truth) to the nearest ground-truth centre line, pixels: how many, the median
+       and the 90th percentile (nearest rank: the value at rank ceil(q*n); 0 when n = 0). */
+    size_t centre_n;
+    double centre_median, centre_p90;
 } ev_score;
 
 /* max(2, 3*width/640) pixels. */
@@ -59,6 +76,10 @@ typedef struct ev_extras {
                                  their nearest pixel) and gt_width_* are filled */
     const ev_labels *ignore;  /* nonzero pixels: samples (detected and ground truth) whose
                                  nearest pixel is nonzero are left out of P and R */
+    FILE *centre;             /* the centre error of every matched detected sample, one
+                                 distance in pixels per line (%.4f), to pool images */
+    FILE *gt_pieces;          /* one line per straight ground-truth piece >= EV_FRAG_MIN_LEN:
+                                 its length and the detected pieces along it */
 } ev_extras;
 
 /* ev_score_paths() with extras (NULL: none). */

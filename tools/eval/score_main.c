@@ -13,6 +13,7 @@
 
 static int g_pieces;            /* --pieces: one line per detected piece before the score (gt mode) */
 static const char *g_ignore;    /* --ignore IMG: samples on its nonzero pixels are left out */
+static FILE *g_centre;          /* --centre FILE: centre error of every matched sample */
 static imgio_gray g_ignore_img;
 static ev_labels g_ignore_lab;
 
@@ -37,9 +38,9 @@ static const ev_labels *ignore_image(void)
 
 static void usage(FILE *f)
 {
-    fputs("usage: symline-score [--pieces] [--ignore IMG] [--tol PX] gt NAME DET.json\n"
+    fputs("usage: symline-score [--pieces] [--ignore IMG] [--centre FILE] [--tol PX] gt NAME DET.json\n"
           "       symline-score [--tol PX] mask MASK.pgm DET.json\n"
-          "       symline-score [--ignore IMG] [--tol PX] pair REF.json DET.json\n"
+          "       symline-score [--ignore IMG] [--centre FILE] [--tol PX] pair REF.json DET.json\n"
           "       symline-score gtjson NAME\n"
           "\n"
           "gt:   ground truth NAME.lines.txt, NAME.arcs.txt, NAME.dontcare.txt (missing\n"
@@ -56,22 +57,43 @@ static void usage(FILE *f)
           "Prints one line of key=value pairs: f1 p r, sample counts, and the\n"
           "classification counts line_matched line_ok curve_matched curve_ok and the\n"
           "same weighted by length (samples): line_matched_s line_ok_s curve_matched_s curve_ok_s.\n"
+          "det_pieces (gt, pair): the number of detected pieces (reported segments).\n"
+          "Fragmentation (gt, pair): frag_pieces = straight ground-truth pieces >= 40 px,\n"
+          "      frag_found = those with a detected piece along them (>= 70 % and >= 8 of the\n"
+          "      piece's samples within tolerance of it), frag_segments = the detected pieces\n"
+          "      along those; mean fragmentation = frag_segments / frag_found (1.0 = one piece\n"
+          "      per line; sum both over images to pool).\n"
+          "Centre error (gt, pair): distance of every matched detected sample (counted, within\n"
+          "      tolerance of ground truth) to the nearest ground-truth centre line: centre_n,\n"
+          "      centre_med, centre_p90 (nearest rank; '-' when centre_n = 0).\n"
+          "--centre FILE: appends those distances to FILE, one per line (pool them over images).\n"
           "--ignore IMG (gt, pair): samples whose nearest pixel is nonzero in IMG count\n"
           "      neither for precision nor for recall (e.g. pixels a brightness change saturated).\n"
           "--pieces (gt mode): first one line per detected piece: kind, length, samples near\n"
-          "      straight and near circle ground truth, class (straight, circle, unmatched).\n"
+          "      straight and near circle ground truth, class (straight, circle, unmatched);\n"
+          "      then one per straight ground-truth piece >= 40 px: the detected pieces along it.\n"
           "Exit status: 0 ok, 1 unreadable input, 2 usage.\n",
           f);
 }
 
-static void print_score(const ev_score *s, double tol, int with_labels)
+static void print_score(const ev_score *s, double tol, int with_labels, int with_geometry)
 {
     printf("f1=%.6f p=%.6f r=%.6f tol=%.3f det_samples=%zu det_counted=%zu det_hits=%zu "
            "gt_samples=%zu gt_hits=%zu line_matched=%zu line_ok=%zu curve_matched=%zu "
-           "curve_ok=%zu line_matched_s=%zu line_ok_s=%zu curve_matched_s=%zu curve_ok_s=%zu\n",
+           "curve_ok=%zu line_matched_s=%zu line_ok_s=%zu curve_matched_s=%zu curve_ok_s=%zu",
            s->f1, s->p, s->r, tol, s->det_samples, s->det_counted, s->det_hits, s->gt_samples,
            s->gt_hits, s->line_matched, s->line_ok, s->curve_matched, s->curve_ok,
            s->line_matched_s, s->line_ok_s, s->curve_matched_s, s->curve_ok_s);
+    if (with_geometry) {
+        printf(" det_pieces=%zu frag_pieces=%zu frag_found=%zu frag_segments=%zu centre_n=%zu", s->det_pieces, s->frag_pieces,
+               s->frag_found, s->frag_segments, s->centre_n);
+        if (s->centre_n > 0) {
+            printf(" centre_med=%.4f centre_p90=%.4f", s->centre_median, s->centre_p90);
+        } else {
+            printf(" centre_med=- centre_p90=-");
+        }
+    }
+    putchar('\n');
     if (with_labels) {
         /* Rendered surfaces (symline-render --labels) under the wrong samples. */
         static const char *const names[] = {"carpet", "paint", "floor", "wall", "ceiling", "robot"};
@@ -153,9 +175,11 @@ static int mode_gt(const char *name, const char *detpath, double tol)
         ex.pieces = g_pieces ? stdout : NULL;
         ex.labels = have_lab ? &labels : NULL;
         ex.ignore = ignore_image();
+        ex.centre = g_centre;
+        ex.gt_pieces = g_pieces ? stdout : NULL;
         ev_score_paths_ex(&gt, &dc, &det, tol, &s, &ex);
     }
-    print_score(&s, tol, have_lab);
+    print_score(&s, tol, have_lab, 1);
     rc = 0;
 out:
     if (have_lab) {
@@ -187,7 +211,7 @@ static int mode_mask(const char *maskpath, const char *detpath, double tol)
         tol = ev_tolerance((int)m.width);
     }
     ev_score_mask(m.px, (int)m.width, (int)m.height, &det, tol, &s);
-    print_score(&s, tol, 0);
+    print_score(&s, tol, 0, 0);
     imgio_free(&m);
     ev_paths_free(&det);
     return 0;
@@ -216,9 +240,10 @@ static int mode_pair(const char *refpath, const char *detpath, double tol)
         ev_extras ex;
         memset(&ex, 0, sizeof(ex));
         ex.ignore = ignore_image();
+        ex.centre = g_centre;
         ev_score_paths_ex(&ref, NULL, &det, tol, &s, &ex);
     }
-    print_score(&s, tol, 0);
+    print_score(&s, tol, 0, 1);
     rc = 0;
 out:
     ev_paths_free(&ref);
@@ -279,6 +304,16 @@ int main(int argc, char **argv)
             i++;
         } else if (i + 1 < argc && strcmp(argv[i], "--ignore") == 0) {
             g_ignore = argv[i + 1];
+            i += 2;
+        } else if (i + 1 < argc && strcmp(argv[i], "--centre") == 0) {
+            if (g_centre != NULL) {
+                fclose(g_centre);
+            }
+            g_centre = fopen(argv[i + 1], "a");
+            if (g_centre == NULL) {
+                fprintf(stderr, "symline-score: cannot open %s\n", argv[i + 1]);
+                return 1;
+            }
             i += 2;
         } else if (i + 1 < argc && strcmp(argv[i], "--tol") == 0) {
             char *end;

@@ -1,80 +1,17 @@
 /*
- * symline-capture: the on-robot loop. Frames from a V4L2 device, a libcamera
- * camera or files; the line detector on each; one JSON line per frame on
- * stdout; a rate and latency summary on stderr.
+ * The capture loop (loop.h): detection, frame records and summaries.
  */
 #define _POSIX_C_SOURCE 200809L
-#include <errno.h>
-#include <signal.h>
+#include "loop.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
-#include "args.h"
 #include "imgio.h"
 #include "overlay.h"
-#include "replay_source.h"
 #include "segjson.h"
-#include "source.h"
-#include "symline/detect.h"
 #include "symline/intersections.h"
-#include "v4l2_source.h"
-#ifdef SYMLINE_HAVE_LIBCAMERA
-#include "libcamera_source.h"
-#endif
-
-static volatile sig_atomic_t stop_requested;
-static volatile sig_atomic_t stop_signal;
-
-static void on_stop(int sig)
-{
-    stop_requested = 1;
-    stop_signal = sig;
-}
-
-static capsrc *open_source(const app_options *o, char *err, size_t errlen)
-{
-    if (o->device != NULL) {
-        v4l2_options v;
-        memset(&v, 0, sizeof v);
-        v.device = o->device;
-        v.width = o->width;
-        v.height = o->height;
-        v.format = o->format;
-        v.fps_num = o->fps_num;
-        v.fps_den = o->fps_den;
-        v.buffers = o->buffers;
-        v.freshest = !o->all_frames;
-        v.exposure_100us = o->exposure_us >= 0 ? o->exposure_us / 100 : -1;
-        return v4l2_source_open(&v, err, errlen);
-    }
-#ifdef SYMLINE_HAVE_LIBCAMERA
-    if (o->camera != NULL) {
-        libcamera_options c;
-        memset(&c, 0, sizeof c);
-        c.camera = o->camera;
-        c.width = o->width;
-        c.height = o->height;
-        c.format = o->format;
-        c.fps_num = o->fps_num;
-        c.fps_den = o->fps_den;
-        c.buffers = o->buffers;
-        c.freshest = !o->all_frames;
-        c.exposure_us = o->exposure_us;
-        return libcamera_source_open(&c, err, errlen);
-    }
-#endif
-    {
-        replay_options r;
-        memset(&r, 0, sizeof r);
-        r.path = o->replay;
-        r.fps_num = o->fps_num;
-        r.fps_den = o->fps_den;
-        r.loop = o->loop;
-        return replay_source_open(&r, err, errlen);
-    }
-}
 
 /* Detector memory, sized for the current frame size (sources may change it: replay). */
 typedef struct detector {
@@ -225,15 +162,6 @@ static void summary_window(summary *s, const capsrc *src, int64_t now)
     s->window_lat_max_ms = 0;
 }
 
-static int make_dir(const char *dir)
-{
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "symline-capture: cannot create %s: %s\n", dir, strerror(errno));
-        return -1;
-    }
-    return 0;
-}
-
 static int record_frame(const char *dir, const capsrc_frame *f)
 {
     char path[4096], err[512];
@@ -258,73 +186,37 @@ static int snapshot_frame(const char *dir, const capsrc_frame *f, const detector
     return 0;
 }
 
-int main(int argc, char **argv)
+int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic_t *stop_signal)
 {
-    app_options o;
-    capsrc *src;
     capsrc_frame frame;
     summary sum;
     detector det;
     line_writer lw;
-    struct sigaction sa;
-    char err[512];
-    int rc, status = APP_EXIT_OK;
+    int status = 0;
     const char *stop_reason = "end of input";
 
-    rc = app_parse_args(argc, argv, &o);
-    if (rc != 0) {
-        return rc == 1 ? APP_EXIT_OK : rc;
-    }
-#ifdef SYMLINE_HAVE_LIBCAMERA
-    if (o.list_cameras) {
-        return libcamera_list_cameras(stdout) >= 0 ? APP_EXIT_OK : APP_EXIT_FAIL;
-    }
-#endif
-    if ((o.record_dir && make_dir(o.record_dir) != 0) ||
-        (o.snapshot_dir && make_dir(o.snapshot_dir) != 0)) {
-        return APP_EXIT_FAIL;
-    }
     memset(&det, 0, sizeof det);
     memset(&lw, 0, sizeof lw);
     lw.mem = open_memstream(&lw.buf, &lw.len);
     if (lw.mem == NULL) {
         fprintf(stderr, "symline-capture: out of memory\n");
-        return APP_EXIT_FAIL;
+        return -1;
     }
-
-    /* No SA_RESTART: a stop signal must wake the wait for a frame. */
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_stop;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    signal(SIGPIPE, SIG_IGN);
-
-    src = open_source(&o, err, sizeof err);
-    if (src == NULL) {
-        fprintf(stderr, "symline-capture: %s\n", err);
-        fclose(lw.mem);
-        free(lw.buf);
-        return APP_EXIT_FAIL;
-    }
-    fprintf(stderr, "symline-capture: %s\n", src->description);
-
     memset(&sum, 0, sizeof sum);
     if (capsrc_start(src) != CAPSRC_OK) {
         fprintf(stderr, "symline-capture: error: %s\n", capsrc_error(src));
-        capsrc_close(src);
         fclose(lw.mem);
         free(lw.buf);
-        return APP_EXIT_FAIL;
+        return -1;
     }
     sum.t0_ns = sum.window_t0_ns = capsrc_now_ns();
 
-    while (!stop_requested && (o.frames == 0 || sum.frames < o.frames)) {
+    while (!*stop_signal && (o->frames == 0 || sum.frames < o->frames)) {
         int64_t t_got, t_det0, t_det1;
         double lat_ms, det_ms;
         symline_image img;
         symline_status st;
-        capsrc_result r = capsrc_next(src, &frame, o.timeout_ms);
+        capsrc_result r = capsrc_next(src, &frame, o->timeout_ms);
         if (r == CAPSRC_INTERRUPTED) {
             continue;
         }
@@ -334,13 +226,13 @@ int main(int argc, char **argv)
         if (r != CAPSRC_OK) {
             fprintf(stderr, "symline-capture: error: %s\n", capsrc_error(src));
             stop_reason = r == CAPSRC_LOST ? "device lost" : (r == CAPSRC_TIMEOUT ? "timeout" : "capture error");
-            status = APP_EXIT_FAIL;
+            status = -1;
             break;
         }
         t_got = capsrc_now_ns();
-        if (detector_fit(&det, &o.cfg, frame.width, frame.height) != 0) {
+        if (detector_fit(&det, o->cfg, frame.width, frame.height) != 0) {
             stop_reason = "detector setup";
-            status = APP_EXIT_FAIL;
+            status = -1;
             break;
         }
         img.width = frame.width;
@@ -348,7 +240,7 @@ int main(int argc, char **argv)
         img.stride = frame.stride;
         img.data = frame.luma;
         t_det0 = capsrc_now_ns();
-        st = symline_detect(&img, &o.cfg, det.ws, det.ws_size, &det.res);
+        st = symline_detect(&img, o->cfg, det.ws, det.ws_size, &det.res);
         if (st == SYMLINE_OK) {
             symline_intersection_config icfg;
             symline_intersection_config_default(&icfg);
@@ -359,37 +251,37 @@ int main(int argc, char **argv)
             fprintf(stderr, "symline-capture: error: detection failed on frame %llu: %s\n",
                     (unsigned long long)frame.number, symline_status_str(st));
             stop_reason = "detector error";
-            status = APP_EXIT_FAIL;
+            status = -1;
             break;
         }
         lat_ms = (double)(t_det1 - frame.timestamp_ns) / 1e6;
         det_ms = (double)(t_det1 - t_det0) / 1e6;
-        if ((o.record_every && frame.number % o.record_every == 0 &&
-             record_frame(o.record_dir, &frame) != 0) ||
-            (o.snapshot_every && frame.number % o.snapshot_every == 0 &&
-             snapshot_frame(o.snapshot_dir, &frame, &det) != 0)) {
+        if ((o->record_every && frame.number % o->record_every == 0 &&
+             record_frame(o->record_dir, &frame) != 0) ||
+            (o->snapshot_every && frame.number % o->snapshot_every == 0 &&
+             snapshot_frame(o->snapshot_dir, &frame, &det) != 0)) {
             stop_reason = "write error";
-            status = APP_EXIT_FAIL;
+            status = -1;
             break;
         }
         capsrc_release(src);
         if (emit_frame(&lw, &frame, &det, lat_ms,
                        (double)(t_got - frame.timestamp_ns - frame.convert_ns) / 1e6, det_ms) != 0) {
-            if (!stop_requested) {
+            if (!*stop_signal) {
                 fprintf(stderr, "symline-capture: error: writing the frame record failed\n");
                 stop_reason = "output error";
-                status = APP_EXIT_FAIL;
+                status = -1;
             }
             break;
         }
         summary_add(&sum, lat_ms, det_ms);
-        if (o.summary_s && t_det1 - sum.window_t0_ns >= (int64_t)o.summary_s * 1000000000) {
+        if (o->summary_s && t_det1 - sum.window_t0_ns >= (int64_t)o->summary_s * 1000000000) {
             summary_window(&sum, src, t_det1);
         }
     }
-    if (stop_requested) {
-        stop_reason = stop_signal == SIGINT ? "SIGINT" : "SIGTERM";
-    } else if (status == APP_EXIT_OK && o.frames && sum.frames >= o.frames) {
+    if (*stop_signal) {
+        stop_reason = *stop_signal == SIGINT ? "SIGINT" : "SIGTERM";
+    } else if (status == 0 && o->frames && sum.frames >= o->frames) {
         stop_reason = "frame count reached";
     }
     {
@@ -404,7 +296,6 @@ int main(int argc, char **argv)
                 (unsigned long long)src->stats.skipped_stale, (unsigned long long)src->stats.error_buffers,
                 (unsigned long long)src->stats.requeue_errors, (unsigned long long)src->stats.sequence_gaps);
     }
-    capsrc_close(src);
     detector_free(&det);
     fclose(lw.mem);
     free(lw.buf);

@@ -1,9 +1,9 @@
 /*
- * Image files for the host tools: binary PGM always, PNG when built with libpng.
+ * Image files for the host programs (tools/, capture/): binary PGM always, PNG when built with libpng.
  * Host-only code (allocates, does I/O); the core library never includes it.
  */
-#ifndef SYMLINE_TOOLS_IMGIO_H
-#define SYMLINE_TOOLS_IMGIO_H
+#ifndef SYMLINE_HOSTIO_IMGIO_H
+#define SYMLINE_HOSTIO_IMGIO_H
 
 #include <stddef.h>
 #include <stdint.h>

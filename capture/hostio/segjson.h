@@ -1,9 +1,9 @@
 /*
- * The JSON form of a detection (SPEC §7), shared by the host CLI and the
- * capture application. Host-only code.
+ * The JSON form of a detection (SPEC §7), shared by the CLI, the capture
+ * loop, the tests and the Cortex-M golden check. Needs only stdio.
  */
-#ifndef SYMLINE_TOOLS_SEGJSON_H
-#define SYMLINE_TOOLS_SEGJSON_H
+#ifndef SYMLINE_HOSTIO_SEGJSON_H
+#define SYMLINE_HOSTIO_SEGJSON_H
 
 #include <stdint.h>
 #include <stdio.h>

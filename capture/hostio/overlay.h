@@ -1,9 +1,9 @@
 /*
- * Host tools: detections drawn over a frame (symline overlay, symline-capture
+ * Host I/O: detections drawn over a frame (symline overlay, symline-capture
  * --snapshot-every). Host-only code: allocates and writes files.
  */
-#ifndef SYMLINE_TOOLS_OVERLAY_H
-#define SYMLINE_TOOLS_OVERLAY_H
+#ifndef SYMLINE_HOSTIO_OVERLAY_H
+#define SYMLINE_HOSTIO_OVERLAY_H
 
 #include <stddef.h>
 #include <stdint.h>

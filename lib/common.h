@@ -1,16 +1,25 @@
 /*
- * Helpers shared by the core modules. Not part of the public API.
+ * The few macros and inline helpers every module of the core shares:
+ * workspace carving and argument checks. Not part of the public API; each
+ * stage's own interface is in its private header (symmetry.h, extrema.h,
+ * linefilter.h, linepoints.h, tracer.h, segments.h, merge.h, curvejoin.h,
+ * pass.h, fixed.h).
  */
-#ifndef SYMLINE_INTERNAL_H
-#define SYMLINE_INTERNAL_H
+#ifndef SYMLINE_COMMON_H
+#define SYMLINE_COMMON_H
 
 #include <stddef.h>
 #include <stdint.h>
 
 #include "symline/types.h"
 
-/* 255^2: the squared difference counted for a pair that leaves the image. */
-#define SL_DMAX2 65025u
+/* Keeps a helper with a large frame out of its caller's frame, so the deepest
+ * stack path stays short (measured by tools/firmware/check.sh). */
+#if defined(__GNUC__)
+#define SL_NOINLINE __attribute__((noinline))
+#else
+#define SL_NOINLINE
+#endif
 
 /* Alignment every workspace carve-out is rounded to. */
 #define SL_ALIGN 8u
@@ -67,14 +76,4 @@ static inline int sl_query_ok(uint32_t width, uint32_t height, symline_axis axis
            sl_check_axis(axis) == SYMLINE_OK && sl_check_radius(m) == SYMLINE_OK;
 }
 
-/*
- * Start of every whole-frame operator call: checks the image, axis, radius
- * and an output plane of height rows of width elements (out, out_stride,
- * out_len), then carves one row of uint32_t energies from the workspace.
- * On success *cur points past the carved row, ready for further carving.
- */
-symline_status sl_frame_begin(const symline_image *img, symline_axis axis, uint32_t m,
-                              const void *out, uint32_t out_stride, size_t out_len, void *ws,
-                              size_t ws_size, uint8_t **cur, uint8_t **end, uint32_t **E);
-
-#endif /* SYMLINE_INTERNAL_H */
+#endif /* SYMLINE_COMMON_H */

@@ -1,10 +1,10 @@
 /*
- * Detector options of the host tools: one parser and one help text for
+ * Detector options of the host programs: one parser and one help text for
  * `symline lines|overlay` and `symline-capture`, so both accept exactly the
  * same options with the same ranges and defaults.
  */
-#ifndef SYMLINE_TOOLS_DETOPTS_H
-#define SYMLINE_TOOLS_DETOPTS_H
+#ifndef SYMLINE_HOSTIO_DETOPTS_H
+#define SYMLINE_HOSTIO_DETOPTS_H
 
 #include <stddef.h>
 #include <stdint.h>

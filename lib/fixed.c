@@ -1,0 +1,37 @@
+/*
+ * Fixed-point helpers (fixed.h).
+ */
+#include "fixed.h"
+
+uint64_t sl_isqrt64(uint64_t v)
+{
+    uint64_t r = 0u, bit = (uint64_t)1u << 62;
+    while (bit > v) {
+        bit >>= 2;
+    }
+    while (bit != 0u) {
+        if (v >= r + bit) {
+            v -= r + bit;
+            r = (r >> 1) + bit;
+        } else {
+            r >>= 1;
+        }
+        bit >>= 2;
+    }
+    return r;
+}
+
+uint32_t sl_div_q8(uint64_t cross, uint64_t len)
+{
+    /* A 32-bit division (no 64-bit division helper on small cores): drop the
+     * same low bits of both; the quotient keeps well under 1/256 px of error
+     * for any chord longer than a pixel. */
+    while (cross > 0xFFFFFFFFu) {
+        cross >>= 1;
+        len >>= 1;
+    }
+    if (len == 0u) {
+        return SL_Q8_NO_QUOTIENT;
+    }
+    return (uint32_t)cross / (uint32_t)len;
+}

@@ -1,0 +1,103 @@
+/*
+ * The line filter (linefilter.c): which S points (symmetry maxima) are line
+ * points. Its thresholds for one pass, the frame statistics that adapt them,
+ * the per-point gray-value and A-point tests, and the whole-piece side test
+ * the pass applies to a traced piece.
+ */
+#ifndef SYMLINE_LIB_LINEFILTER_H
+#define SYMLINE_LIB_LINEFILTER_H
+
+#include "common.h"
+#include "symline/detect.h"
+
+/* The thresholds of one pass (gray levels unless noted). */
+typedef struct sl_linefilter {
+    symline_filter kind;
+    uint32_t min_gray;   /* smallest gray value of a line point (illumination) */
+    uint32_t ridge_pct;  /* contrast: ridge height >= this % of the centre gray value */
+    uint32_t ridge_min;  /* contrast: smallest ridge height */
+    uint32_t asym_pct;   /* contrast: ridge height >= this % of |lo - hi|; 0 = off */
+    uint32_t side_max;   /* contrast: largest gray value of the ridge's sides (255: any) */
+    uint32_t a_distance; /* paper: A point search distance across the line, grid px; 0 otherwise */
+} sl_linefilter;
+
+/* Mean and standard deviation of a frame's gray values. */
+typedef struct sl_frame_stats {
+    uint32_t mean;     /* gray levels, rounded */
+    uint32_t sigma_q4; /* gray levels, Q4 */
+} sl_frame_stats;
+
+/* The thresholds as configured (no range checks). */
+void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg);
+
+/* One read of the frame: its mean and standard deviation. */
+void sl_frame_stats_measure(const symline_image *img, sl_frame_stats *st);
+
+/* The adaptive thresholds (cfg->adaptive) folded into f: each only raises
+ * the configured one (side_max: replaces it unless side_sigma10 is 100). */
+void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_frame_stats *st);
+
+/* The gray-value part of the line filter for an S point with centre value c
+ * and values lo, hi at k pixels before and after it across the line (clamped
+ * at the border). 1 = line point (the paper filter's A-point test is
+ * sl_linefilter_a_near()). Inline: it runs for every S point. */
+static inline int sl_linefilter_gray(const sl_linefilter *f, uint32_t c, uint32_t lo, uint32_t hi)
+{
+    uint32_t side, need;
+    if (c < f->min_gray) {
+        return 0;
+    }
+    if (f->kind == SYMLINE_FILTER_PAPER) {
+        return 1;
+    }
+    side = lo > hi ? lo : hi;
+    if (c <= side || side > f->side_max) {
+        return 0;
+    }
+    need = (c * f->ridge_pct + 99u) / 100u;
+    if (need < f->ridge_min) {
+        need = f->ridge_min;
+    }
+    if (f->asym_pct != 0u) {
+        const uint32_t asym = ((lo > hi ? lo - hi : hi - lo) * f->asym_pct + 99u) / 100u;
+        need = asym > need ? asym : need;
+    }
+    if (c - side < need) {
+        return 0;
+    }
+    return 1;
+}
+
+/*
+ * The paper filter's A-point test: 1 when an A point lies within
+ * f->a_distance entries of entry `at` of a line of n extrema map entries
+ * across the line. Entry i is map[(i % ring) * step]: step 1 and ring n for
+ * a row, the row length and the ring's row count for a column of a ring of
+ * rows. Inline like the gray test: it runs for every S point that passed it.
+ */
+static inline int sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *map, uint32_t ring,
+                                       size_t step, uint32_t n, uint32_t at)
+{
+    const uint32_t d = f->a_distance;
+    const uint32_t lo = at >= d ? at - d : 0u;
+    const uint32_t hi = at + d < n ? at + d : n - 1u;
+    uint32_t i;
+    for (i = lo; i <= hi; i++) {
+        if (map[(size_t)(i % ring) * step] == SYMLINE_MAP_A) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/*
+ * The contrast filter's "sides alike" test once more, over a whole traced
+ * piece q[0..n-1] (grid coordinates at `level`; k: the pass's sample offset
+ * across the line in grid px): 1 when its sides differ too much for a line
+ * on the carpet. Only for the contrast filter with asym_pct != 0.
+ */
+int sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
+                               symline_axis axis, uint32_t level, uint32_t k,
+                               const symline_point *q, uint32_t n);
+
+#endif /* SYMLINE_LIB_LINEFILTER_H */

@@ -1,0 +1,45 @@
+/*
+ * Line points of one pass (linepoints.c): the scale grid's rows, symmetry
+ * energies, extrema with the plateau limit and the line filter, streamed
+ * over a ring of rows into a raster-ordered point list.
+ */
+#ifndef SYMLINE_LIB_LINEPOINTS_H
+#define SYMLINE_LIB_LINEPOINTS_H
+
+#include "common.h"
+#include "linefilter.h"
+#include "symline/detect.h"
+
+/* One pass: an axis at one scale. Coordinates of a pass are on its grid.
+ * Filled by sl_pass_setup() (pass.c). */
+typedef struct sl_pass {
+    symline_axis axis;
+    uint32_t level;  /* grid = frame box-downsampled by 2^level */
+    uint32_t w, h;   /* grid size: width >> level, height >> level */
+    uint32_t m;      /* radius */
+    uint32_t k;      /* contrast sample offset across the line: m + 1 */
+    uint32_t lag;    /* longest accepted plateau: end - marked index <= lag (= m) */
+    sl_linefilter filter;
+} sl_pass;
+
+/* Box-downsampled row y of the pass grid into out (p->w bytes);
+ * acc: scratch of img->width uint16_t. Level 0 copies the row. */
+void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_t *acc,
+                 uint8_t *out);
+
+/* Workspace bytes of sl_collect() (row index excluded). */
+size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width);
+
+/*
+ * The line points of one pass, in raster order, grid coordinates, written to
+ * pts[0 .. *n-1] (at most cap); row_start[y] is the index of the first point
+ * of grid row y, row_start[h] = *n (h+1 entries). Sets *truncated when cap
+ * was too small. Strip processing: only a ring of rows is held.
+ * Returns SYMLINE_OK, SYMLINE_ERR_SIZE (empty grid) or SYMLINE_ERR_BUFFER
+ * (ws_size below sl_collect_ws_size()).
+ */
+symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
+                          symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
+                          uint8_t *truncated);
+
+#endif /* SYMLINE_LIB_LINEPOINTS_H */

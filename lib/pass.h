@@ -1,0 +1,52 @@
+/*
+ * One pass of the detector (pass.c): an axis at one scale, from the frame to
+ * the pass's segments. It collects its line points (linepoints.c), traces
+ * them (tracer.c), cuts, filters and fits the pieces (segments.c) and keeps
+ * the points its segments use.
+ */
+#ifndef SYMLINE_LIB_PASS_H
+#define SYMLINE_LIB_PASS_H
+
+#include "common.h"
+#include "linefilter.h"
+#include "linepoints.h"
+#include "tracer.h"
+#include "symline/detect.h"
+
+/* State of one detection shared by its passes. */
+typedef struct sl_run {
+    const symline_config *cfg;
+    const symline_image *img; /* the frame, for the pieces' side test */
+    symline_result *r;
+    uint32_t nseg;            /* segments so far */
+    uint32_t prev_seg;        /* segments of earlier passes: [0, prev_seg) */
+    uint32_t npts;            /* points kept so far: [0, npts) */
+    sl_frame_stats stats;     /* for the adaptive thresholds (cfg->adaptive) */
+    uint8_t truncated;
+} sl_run;
+
+/* Fills a pass from the configuration (no range checks; the adaptive
+ * thresholds are the caller's: sl_linefilter_adapt()). */
+void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
+                   uint32_t width, uint32_t height);
+
+/* Workspace bytes of a pass: its sl_pass, the row index, and the line point
+ * collection's rings (reused by the tracer's state afterwards). Inline so
+ * that the workspace query stays one call deep. */
+static inline size_t sl_pass_ws_size(const sl_pass *p, uint32_t width)
+{
+    const size_t c = sl_collect_ws_size(p, width);
+    const size_t t = sl_align_up(sizeof(sl_tracer)) + SL_ALIGN;
+    return sl_align_up(sizeof(sl_pass)) + SL_ALIGN + sl_align_up(((size_t)p->h + 1u) * 4u) +
+           SL_ALIGN + (c > t ? c : t);
+}
+
+/*
+ * Runs pass p over d->img: appends its segments to d->r and their points
+ * after the first d->npts, and updates d. [ws, end): the pass workspace
+ * after p itself (which the caller carved first). Returns SYMLINE_OK, or
+ * SYMLINE_ERR_BUFFER when the workspace is smaller than sl_pass_ws_size().
+ */
+symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end);
+
+#endif /* SYMLINE_LIB_PASS_H */

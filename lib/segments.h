@@ -1,0 +1,47 @@
+/*
+ * From traced chains to segments (segments.c): corner cuts, the fit and the
+ * line/curve decision, and the geometry the later stages share (distances
+ * to chords and segments). Coordinates in Q8 px (fixed.h).
+ */
+#ifndef SYMLINE_LIB_SEGMENTS_H
+#define SYMLINE_LIB_SEGMENTS_H
+
+#include "common.h"
+#include "fixed.h"
+#include "symline/detect.h"
+
+/* Length of the first piece of chain p[0..n-1] before a sharp corner (n if none). */
+uint32_t sl_corner_cut(const symline_point *p, uint32_t n);
+
+/* Fits a segment to p[0..n-1] (grid coordinates at `level`): ends, max_dev,
+ * kind (a curve when max_dev exceeds curve_dev_q8 plus half a block), level;
+ * first, count and axis are left to the caller. */
+void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
+            symline_segment *s);
+
+/* Bend of p[0..n-1] (grid coordinates): mean distance to the chord of the middle
+ * half minus that of the outer quarters, Q8 grid px, absolute. */
+uint32_t sl_bend_q8(const symline_point *p, uint32_t n);
+
+/* Makes line s (fitted to p[0..n-1] at `level`) a curve when its bend reaches
+ * bend_thr: kind, raw chord ends and max_dev. */
+void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,
+                   symline_segment *s);
+
+/* Distance (Q8) of (px, py) to the line through a with direction (dx, dy), all Q8. */
+uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py);
+
+/* Largest distance (Q8) of points p[0..n-1] (grid coordinates at `level`;
+ * level 0 for full-resolution points) to the chord (x0,y0)-(x1,y1) (Q8). */
+uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
+                    int32_t x1, int32_t y1);
+
+/* Curve test: max_dev above thr and above 1/32 of the chord. */
+int sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr);
+
+/* 1 when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
+ * (its chord for lines, its points for curves). */
+int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
+                    int32_t tol_q8);
+
+#endif /* SYMLINE_LIB_SEGMENTS_H */

@@ -1,0 +1,41 @@
+/*
+ * The line tracer (tracer.c): chains of neighbouring line points, read from a
+ * raster-ordered point list with its per-row index.
+ */
+#ifndef SYMLINE_LIB_TRACER_H
+#define SYMLINE_LIB_TRACER_H
+
+#include "common.h"
+#include "symline/detect.h"
+
+/* Marks a point of the raster list as visited by the tracer (y is never 65535). */
+#define SL_VISITED 0xFFFFu
+
+/* Iterator over the chains of a raster list. */
+typedef struct sl_tracer {
+    symline_point *pts; /* raster list; visited entries get y = SL_VISITED */
+    uint32_t n;
+    const uint32_t *row_start;
+    uint32_t h;
+    uint32_t scan;  /* next raster index to try as a start */
+    uint32_t phase; /* 0: starts at B points, 1: everything left (loops) */
+} sl_tracer;
+
+void sl_tracer_init(sl_tracer *t, symline_point *pts, uint32_t n, const uint32_t *row_start,
+                    uint32_t h);
+
+/* Number of line points among the 8 neighbours of (x, y) (visited or not). */
+uint32_t sl_neighbours(const sl_tracer *t, uint32_t x, uint32_t y);
+
+/* Reverses n points in place (the tracer's backward half, the merge's rotations). */
+void sl_reverse_points(symline_point *p, uint32_t n);
+
+/*
+ * Next chain, written to dst[0 .. *count-1] in tracing order (grid
+ * coordinates). Returns 1 for a chain, 0 when none is left. A chain longer
+ * than cap is cut at cap points and *cut is set.
+ */
+int sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count,
+                   uint8_t *cut);
+
+#endif /* SYMLINE_LIB_TRACER_H */
