@@ -8,10 +8,11 @@
  * Works on segments only, never on pixels; the caller's output array doubles
  * as the list of junctions gathered so far, so no other memory is needed.
  *
- * Geometry runs in Q4 pixels (1/16 px): coordinates up to 65535 px fit 21
- * bits, so every cross product of two differences fits 44 bits of int64.
- * Divisions are 32-bit only (a 64-bit one calls a library routine with a
- * large stack frame on small cores).
+ * Geometry runs in 32-bit integers only: coordinates in internal units of
+ * 2^shift Q8 units, chosen per call so that they stay below 2^14 (quarter
+ * pixels up to 4095 px, coarser on larger frames); then every product of two
+ * differences fits 31 bits, and no 64-bit division (a library routine with a
+ * large stack frame on small cores) is needed.
  */
 #include "intersections.h"
 
@@ -54,14 +55,14 @@ static const uint16_t ATAN_Q8[33] = {
     8834, 9141, 9439, 9728, 10008, 10280, 10544, 10799, 11047, 11287, 11520};
 
 /* atan(lo/hi) in Q8 degrees for 0 <= lo <= hi, hi > 0: [0, 45*256]. */
-static uint32_t atan_ratio(uint64_t lo, uint64_t hi)
+static uint32_t atan_ratio(uint32_t lo, uint32_t hi)
 {
     uint32_t t, i, f;
     while (hi >= 32768u) { /* keep lo << 16 in 32 bits; hi stays >= 2^14 */
         hi >>= 1;
         lo >>= 1;
     }
-    t = ((uint32_t)lo << 16) / (uint32_t)hi; /* Q16, 0..65536; a 32-bit division */
+    t = (lo << 16) / hi; /* Q16, 0..65536 */
     i = t >> 11;
     f = t & 2047u;
     if (i >= 32u) {
@@ -70,9 +71,10 @@ static uint32_t atan_ratio(uint64_t lo, uint64_t hi)
     return ATAN_Q8[i] + (((uint32_t)(ATAN_Q8[i + 1u] - ATAN_Q8[i]) * f + 1024u) >> 11);
 }
 
-uint32_t sl_heading_q8(int64_t dx, int64_t dy)
+uint32_t sl_heading_q8(int32_t dx, int32_t dy)
 {
-    const uint64_t ax = (uint64_t)(dx < 0 ? -dx : dx), ay = (uint64_t)(dy < 0 ? -dy : dy);
+    const uint32_t ax = dx < 0 ? 0u - (uint32_t)dx : (uint32_t)dx;
+    const uint32_t ay = dy < 0 ? 0u - (uint32_t)dy : (uint32_t)dy;
     uint32_t q;
     if (ax == 0u && ay == 0u) {
         return 0u;
@@ -103,58 +105,63 @@ static uint32_t lines_between(uint32_t a, uint32_t b)
 /* ---- a segment as a polyline ---- */
 
 typedef struct ix_vec {
-    int32_t x, y; /* Q4 */
+    int32_t x, y; /* internal units: Q8 >> shift */
 } ix_vec;
+
+typedef struct ix_params {
+    uint32_t shift;     /* internal unit = 2^shift Q8 units: Q2 up to 8191 px (6) .. */
+    uint32_t min_angle; /* Q8 degrees */
+    int32_t arm;        /* internal units, >= 1 */
+    uint32_t merge;     /* Q8 px */
+} ix_params;
 
 /* A segment seen as a polyline, with its box and gap tolerance. */
 typedef struct ix_poly {
     const symline_segment *s;
     const symline_point *pts; /* a curve's points, or NULL: the chord */
+    const ix_params *ip;
     uint32_t n;               /* vertices, >= 2 */
     uint32_t step;            /* points from one vertex to the next */
     uint32_t index;           /* in the result's segments */
     ix_vec lo, hi;            /* box of the vertices grown by the gap */
     int32_t gap_base;         /* how far a free end may stop short of a crossing
                                  met at a right angle */
-    int32_t cap;              /* ... and at any angle: gap_pct of its size */
-    int32_t gap;              /* the largest gap: min(IX_GAP_GROWTH gap_base, cap) */
+    int32_t gap;              /* ... at any angle: min(IX_GAP_GROWTH gap_base,
+                                 gap_pct of its size) */
 } ix_poly;
 
-typedef struct ix_params {
-    uint32_t min_angle; /* Q8 degrees */
-    int32_t arm;        /* Q4 px */
-    int64_t merge2;     /* (Q8 px)^2 */
-} ix_params;
-
 typedef struct ix_hit {
-    int32_t x, y;   /* Q4 */
+    int32_t x, y;   /* internal units */
     int32_t ta, tb; /* Q16 along chord a, chord b */
 } ix_hit;
 
-/* Q8 -> Q4, rounding down. */
-static int32_t q4_of(int32_t v)
+/* Q8 -> internal units, rounding down (no shift of a negative value). */
+static int32_t iu_of(int32_t v, uint32_t shift)
 {
-    return v >= 0 ? v / 16 : -((15 - v) / 16);
+    return v >= 0 ? (int32_t)((uint32_t)v >> shift)
+                  : -(int32_t)(((uint32_t)-v + (1u << shift) - 1u) >> shift);
 }
 
 static ix_vec vertex(const ix_poly *p, uint32_t k)
 {
+    const uint32_t sh = p->ip->shift;
     ix_vec v;
     if (p->pts == NULL) {
-        v.x = q4_of(k == 0u ? p->s->x0 : p->s->x1);
-        v.y = q4_of(k == 0u ? p->s->y0 : p->s->y1);
+        v.x = iu_of(k == 0u ? p->s->x0 : p->s->x1, sh);
+        v.y = iu_of(k == 0u ? p->s->y0 : p->s->y1, sh);
     } else {
         const symline_point *q = p->pts + (k + 1u >= p->n ? p->s->count - 1u : k * p->step);
-        v.x = (int32_t)q->x * 16;
-        v.y = (int32_t)q->y * 16;
+        v.x = (int32_t)(((uint32_t)q->x << 8) >> sh);
+        v.y = (int32_t)(((uint32_t)q->y << 8) >> sh);
     }
     return v;
 }
 
 /* Length of (dx, dy) within 7 % (max + 3/8 min), without a root. */
-static uint64_t approx_len(int64_t dx, int64_t dy)
+static uint32_t approx_len(int32_t dx, int32_t dy)
 {
-    const uint64_t ax = (uint64_t)(dx < 0 ? -dx : dx), ay = (uint64_t)(dy < 0 ? -dy : dy);
+    const uint32_t ax = dx < 0 ? 0u - (uint32_t)dx : (uint32_t)dx;
+    const uint32_t ay = dy < 0 ? 0u - (uint32_t)dy : (uint32_t)dy;
     return ax > ay ? ax + 3u * ay / 8u : ay + 3u * ax / 8u;
 }
 
@@ -173,8 +180,10 @@ SL_NOINLINE static int poly_init(ix_poly *p, const symline_result *r, uint32_t i
     const symline_segment *s = &r->segments[i];
     const uint32_t level = s->level < IX_LEVEL_MAX ? s->level : IX_LEVEL_MAX;
     uint32_t k, size;
+    int32_t g;
     ix_vec a, v;
     p->s = s;
+    p->ip = ip;
     p->index = i;
     p->pts = NULL;
     p->n = 2u;
@@ -194,18 +203,17 @@ SL_NOINLINE static int poly_init(ix_poly *p, const symline_result *r, uint32_t i
         p->hi.x = v.x > p->hi.x ? v.x : p->hi.x;
         p->hi.y = v.y > p->hi.y ? v.y : p->hi.y;
     }
-    size = (uint32_t)approx_len((int64_t)v.x - a.x, (int64_t)v.y - a.y);
+    size = approx_len(v.x - a.x, v.y - a.y);
     k = (uint32_t)(p->hi.x - p->lo.x) > (uint32_t)(p->hi.y - p->lo.y)
             ? (uint32_t)(p->hi.x - p->lo.x)
             : (uint32_t)(p->hi.y - p->lo.y);
     size = size > k ? size : k;
-    if (size < (uint32_t)ip->arm || size * 16u < c->min_length_q8) {
+    if (size < (uint32_t)ip->arm || (size << ip->shift) < c->min_length_q8) {
         return 0;
     }
-    p->gap_base = (int32_t)(c->gap_q8 * (level + 1u) / 16u);
-    p->cap = (int32_t)(size / 100u * c->gap_pct + size % 100u * c->gap_pct / 100u);
-    p->gap = p->gap_base * (int32_t)IX_GAP_GROWTH < p->cap ? p->gap_base * (int32_t)IX_GAP_GROWTH
-                                                           : p->cap;
+    p->gap_base = (int32_t)((c->gap_q8 * (level + 1u)) >> ip->shift);
+    g = (int32_t)(size / 100u * c->gap_pct + size % 100u * c->gap_pct / 100u);
+    p->gap = p->gap_base * (int32_t)IX_GAP_GROWTH < g ? p->gap_base * (int32_t)IX_GAP_GROWTH : g;
     p->lo.x -= p->gap;
     p->lo.y -= p->gap;
     p->hi.x += p->gap;
@@ -215,81 +223,83 @@ SL_NOINLINE static int poly_init(ix_poly *p, const symline_result *r, uint32_t i
 
 /* ---- crossing a chord with a line ---- */
 
-/* round(n * 65536 / d) for d in [1, 65535], |n| <= 4096 d: two 32-bit divisions. */
+/* |v| * 2^-16 * |t|, signed, for |v| < 2^15, |t| < 2^28 (Q16): 32 bits only. */
+static int32_t q16_mul(int32_t v, int32_t t)
+{
+    const uint32_t av = v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+    const uint32_t at = t < 0 ? 0u - (uint32_t)t : (uint32_t)t;
+    const uint32_t m = av * (at >> 16) + ((av * ((at & 0xFFFFu) >> 1) + 16384u) >> 15);
+    return (v < 0) != (t < 0) ? -(int32_t)m : (int32_t)m;
+}
+
+/* n / d in Q16 for |n| <= 4096 d, d > 0: both brought below 2^16 first, then
+ * two 32-bit divisions. */
 static int32_t q16_div(int32_t n, int32_t d)
 {
-    const uint32_t an = (uint32_t)(n < 0 ? -n : n), ud = (uint32_t)d;
-    const uint32_t q = an / ud, r = an % ud;
-    const uint32_t v = (q << 16) + ((r << 16) + ud / 2u) / ud;
+    uint32_t an = n < 0 ? 0u - (uint32_t)n : (uint32_t)n, ud = (uint32_t)d, q, r, v;
+    while (ud >= 65536u) {
+        ud >>= 1;
+        an >>= 1;
+    }
+    q = an / ud;
+    r = an % ud;
+    v = (q << 16) + ((r << 16) + ud / 2u) / ud;
     return n < 0 ? -(int32_t)v : (int32_t)v;
 }
 
-/* round(v * t / 65536). */
-SL_NOINLINE static int64_t q16_mul(int64_t v, int32_t t)
-{
-    const int64_t m = v * t;
-    return m >= 0 ? (m + 32768) / 65536 : -((-m + 32768) / 65536);
-}
-
 /* Is the crossing (x, y) at parameter t (Q16) of chord v0 -> v1 of p close
- * enough to it: on it, or beyond a free end by at most the gap there, which
- * is gap_base / sin(angle between the chords) (sin = den / (lr ls)), at most
- * p->gap? `free_lo`, `free_hi`: the chord's start / end is a free end. */
-SL_NOINLINE static int near_chord(const ix_poly *p, int32_t t, int64_t x, int64_t y, ix_vec v0, ix_vec v1,
-                      int free_lo, int free_hi, int64_t den, uint32_t lr, uint32_t ls)
+ * enough to it: on it, or beyond a free end by at most the gap there,
+ * gap_base / sin(angle between the chords), at most p->gap?
+ * `free_lo`, `free_hi`: the chord's start / end is a free end. */
+SL_NOINLINE static int near_chord(const ix_poly *p, int32_t t, ix_vec x, ix_vec v0, ix_vec v1,
+                                  int free_lo, int free_hi, uint32_t sin_q8)
 {
-    uint64_t d;
+    uint32_t d;
     if (t >= 0 && t <= 65536) {
         return t < 65536 || free_hi;
     }
     if ((t < 0 && !free_lo) || (t > 65536 && !free_hi)) {
         return 0;
     }
-    d = t < 0 ? approx_len(x - v0.x, y - v0.y) : approx_len(x - v1.x, y - v1.y);
-    return d <= (uint64_t)p->gap && (int64_t)d * den <= (int64_t)p->gap_base * lr * ls;
+    d = t < 0 ? approx_len(x.x - v0.x, x.y - v0.y) : approx_len(x.x - v1.x, x.y - v1.y);
+    return d <= (uint32_t)p->gap && d * sin_q8 <= (uint32_t)p->gap_base * 256u;
 }
 
-/* Crossing of chord ka of a with the line b. Not inlined: its 64-bit
- * temporaries stay off the stack of the rays. */
+/* Crossing of chord ka of a with the line b. Differences of coordinates stay
+ * below 2^15 internal units, so every product fits 31 bits. */
 SL_NOINLINE static int cross(const ix_poly *a, uint32_t ka, const ix_poly *b, ix_hit *h)
 {
     const ix_vec p0 = vertex(a, ka), p1 = vertex(a, ka + 1u);
     const ix_vec q0 = vertex(b, 0u), q1 = vertex(b, 1u);
-    /* differences of Q4 coordinates fit 22 bits; their products need 64 */
     const int32_t rx = p1.x - p0.x, ry = p1.y - p0.y;
     const int32_t sx = q1.x - q0.x, sy = q1.y - q0.y;
     const int32_t wx = q0.x - p0.x, wy = q0.y - p0.y;
-    int64_t den = (int64_t)rx * sy - (int64_t)ry * sx;
-    int64_t nt = (int64_t)wx * sy - (int64_t)wy * sx, nu = (int64_t)wx * ry - (int64_t)wy * rx;
-    int64_t d, x, y;
+    int32_t den = rx * sy - ry * sx, nt = wx * sy - wy * sx, nu = wx * ry - wy * rx;
+    uint32_t lrs, sin_q8;
+    ix_vec x;
     if (den < 0) {
         den = -den;
         nt = -nt;
         nu = -nu;
     }
-    /* parallel, or beyond 4096 chord lengths (the gap decides below) */
-    if (den == 0 || nt > den * 4096 || -nt > den * 4096 || nu > den * 4096 || -nu > den * 4096) {
+    /* parallel, off an inner chord of a curve, or beyond 4096 chord lengths
+     * (the gap decides below) */
+    if (den == 0 || (ka != 0u && nt < 0) || (ka + 2u < a->n && nt >= den) ||
+        (nt < 0 ? -nt : nt) / 4096 > den || (nu < 0 ? -nu : nu) / 4096 > den) {
         return 0;
     }
-    /* t, u in Q16: den brought below 2^16 (with nt, nu, in 29 bits then) */
-    d = den;
-    while (d >= 65536) {
-        d /= 2;
-        nt /= 2;
-        nu /= 2;
-    }
-    h->ta = q16_div((int32_t)nt, (int32_t)d);
-    h->tb = q16_div((int32_t)nu, (int32_t)d);
-    x = p0.x + q16_mul(rx, h->ta);
-    y = p0.y + q16_mul(ry, h->ta);
-    h->x = (int32_t)x;
-    h->y = (int32_t)y;
-    {
-        const uint32_t lr = (uint32_t)approx_len(rx, ry), ls = (uint32_t)approx_len(sx, sy);
-        /* a crossing on a vertex between two chords of a curve counts once */
-        return near_chord(a, h->ta, x, y, p0, p1, ka == 0u, ka + 2u == a->n, den, lr, ls) &&
-               near_chord(b, h->tb, x, y, q0, q1, 1, 1, den, lr, ls);
-    }
+    h->ta = q16_div(nt, den);
+    h->tb = q16_div(nu, den);
+    x.x = p0.x + q16_mul(rx, h->ta);
+    x.y = p0.y + q16_mul(ry, h->ta);
+    h->x = x.x;
+    h->y = x.y;
+    /* sin of the angle between the chords, Q8: den / (|r| |s|) */
+    lrs = (approx_len(rx, ry) * approx_len(sx, sy)) >> 8;
+    sin_q8 = (uint32_t)den / (lrs > 0u ? lrs : 1u);
+    /* a crossing on a vertex between two chords of a curve counts once */
+    return near_chord(a, h->ta, x, p0, p1, ka == 0u, ka + 2u == a->n, sin_q8) &&
+           near_chord(b, h->tb, x, q0, q1, 1, 1, sin_q8);
 }
 
 /* ---- rays ---- */
@@ -318,12 +328,12 @@ static int ray_of(const ix_poly *p, uint32_t k, int32_t t, int32_t x, int32_t y,
     for (;;) {
         uint32_t len;
         w = vertex(p, v);
-        len = (uint32_t)approx_len((int64_t)w.x - prev.x, (int64_t)w.y - prev.y);
+        len = approx_len(w.x - prev.x, w.y - prev.y);
         if (acc + len >= reach && p->pts != NULL) {
             /* the point at `reach`: r = share of this chord, Q16 */
             const int32_t r = (int32_t)(((reach - acc) << 16) / len);
-            w.x = prev.x + (int32_t)q16_mul((int64_t)w.x - prev.x, r);
-            w.y = prev.y + (int32_t)q16_mul((int64_t)w.y - prev.y, r);
+            w.x = prev.x + q16_mul(w.x - prev.x, r);
+            w.y = prev.y + q16_mul(w.y - prev.y, r);
             acc = reach;
             break;
         }
@@ -350,15 +360,15 @@ SL_NOINLINE static uint32_t rays_of(const ix_poly *p, uint32_t k, const ix_hit *
     const int hf = ray_of(p, k, t, h->x, h->y, 0, ip, &fwd);
     uint32_t n = 0u;
     if (hb && hf && p->pts != NULL) {
-        rays[1] = sl_heading_q8((int64_t)fwd.x - back.x, (int64_t)fwd.y - back.y);
+        rays[1] = sl_heading_q8(fwd.x - back.x, fwd.y - back.y);
         rays[0] = (rays[1] + IX_DEG_180) % SYMLINE_DEG_Q8_FULL;
         return 2u;
     }
     if (hb) {
-        rays[n++] = sl_heading_q8((int64_t)back.x - h->x, (int64_t)back.y - h->y);
+        rays[n++] = sl_heading_q8(back.x - h->x, back.y - h->y);
     }
     if (hf) {
-        rays[n++] = sl_heading_q8((int64_t)fwd.x - h->x, (int64_t)fwd.y - h->y);
+        rays[n++] = sl_heading_q8(fwd.x - h->x, fwd.y - h->y);
     }
     return n;
 }
@@ -407,12 +417,12 @@ SL_NOINLINE static void gather(symline_intersection_result *out, const ix_params
                                const ix_hit *h, const uint32_t *rays, uint32_t nr, uint32_t sa,
                                uint32_t sb)
 {
-    const int32_t x = h->x * 16, y = h->y * 16;
+    /* back to Q8 (an accepted crossing lies within a gap of the frame) */
+    const int32_t x = h->x * (int32_t)(1u << ip->shift), y = h->y * (int32_t)(1u << ip->shift);
     symline_intersection *it = NULL;
     uint32_t i;
     for (i = 0; i < out->count && it == NULL; i++) {
-        const int64_t dx = (int64_t)out->items[i].x - x, dy = (int64_t)out->items[i].y - y;
-        if (dx * dx + dy * dy <= ip->merge2) {
+        if (approx_len(out->items[i].x - x, out->items[i].y - y) <= ip->merge) {
             it = &out->items[i];
         }
     }
@@ -445,15 +455,18 @@ SL_NOINLINE static void gather(symline_intersection_result *out, const ix_params
 
 /* ---- arguments ---- */
 
-static int coord_ok(int32_t v)
+static uint32_t abs_of(int32_t v)
 {
-    return v >= -IX_COORD_MAX && v <= IX_COORD_MAX;
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
 }
 
+/* Checks the arguments; *shift: the internal unit (2^shift Q8 units) that
+ * keeps every coordinate below 2^14 units (Q2 for frames up to 4095 px). */
 SL_NOINLINE static symline_status check_args(const symline_result *r,
-                                             const symline_intersection_config *c)
+                                             const symline_intersection_config *c,
+                                             uint32_t *shift)
 {
-    uint32_t i;
+    uint32_t i, k, top = 1u; /* largest |coordinate|, Q8 */
     if (c->min_angle_q8 > IX_DEG_90 || c->gap_q8 > 65536u || c->gap_pct > 100u ||
         c->arm_q8 < 256u || c->arm_q8 > 65536u || c->merge_q8 > 65536u ||
         c->min_length_q8 > (SYMLINE_MAX_DIM << 8)) {
@@ -467,10 +480,12 @@ SL_NOINLINE static symline_status check_args(const symline_result *r,
     }
     for (i = 0; i < r->segment_count; i++) {
         const symline_segment *s = &r->segments[i];
-        if ((s->kind != SYMLINE_KIND_LINE && s->kind != SYMLINE_KIND_CURVE) || !coord_ok(s->x0) ||
-            !coord_ok(s->y0) || !coord_ok(s->x1) || !coord_ok(s->y1)) {
+        const uint32_t m = abs_of(s->x0) | abs_of(s->y0) | abs_of(s->x1) | abs_of(s->y1);
+        if ((s->kind != SYMLINE_KIND_LINE && s->kind != SYMLINE_KIND_CURVE) ||
+            m > (uint32_t)IX_COORD_MAX) {
             return SYMLINE_ERR_RANGE;
         }
+        top |= m;
         if (is_curve(s)) {
             if (r->points == NULL) {
                 return SYMLINE_ERR_NULL;
@@ -478,7 +493,13 @@ SL_NOINLINE static symline_status check_args(const symline_result *r,
             if (s->count > r->point_count || s->first > r->point_count - s->count) {
                 return SYMLINE_ERR_RANGE;
             }
+            for (k = 0; k < s->count; k++) {
+                top |= ((uint32_t)r->points[s->first + k].x | r->points[s->first + k].y) << 8;
+            }
         }
+    }
+    /* top < 2^(14 + shift) */
+    for (*shift = 6u; (top >> (14u + *shift)) != 0u; (*shift)++) {
     }
     return SYMLINE_OK;
 }
@@ -493,13 +514,14 @@ symline_status symline_intersections(const symline_result *lines,
     if (lines == NULL || cfg == NULL || out == NULL || (out->items == NULL && out->cap > 0u)) {
         return SYMLINE_ERR_NULL;
     }
-    st = check_args(lines, cfg);
+    st = check_args(lines, cfg, &ip.shift);
     if (st != SYMLINE_OK) {
         return st;
     }
     ip.min_angle = cfg->min_angle_q8;
-    ip.arm = (int32_t)(cfg->arm_q8 / 16u);
-    ip.merge2 = (int64_t)cfg->merge_q8 * cfg->merge_q8;
+    ip.arm = (int32_t)(cfg->arm_q8 >> ip.shift);
+    ip.arm = ip.arm > 0 ? ip.arm : 1;
+    ip.merge = cfg->merge_q8;
     out->count = 0u;
     out->truncated = 0u;
     /* Each line with every later line and with every curve; a curve is the
@@ -510,8 +532,19 @@ symline_status symline_intersections(const symline_result *lines,
             continue;
         }
         for (j = a.pts != NULL ? 0u : i + 1u; j < lines->segment_count; j++) {
+            const symline_segment *sj = &lines->segments[j];
+            /* first the box of its ends (Q8) grown by its largest possible gap */
+            const int32_t gj = (int32_t)((cfg->gap_q8 * ((sj->level < IX_LEVEL_MAX ? sj->level
+                                                                                : IX_LEVEL_MAX) +
+                                                        1u) *
+                                         IX_GAP_GROWTH) >>
+                                        ip.shift);
             ix_poly b;
-            if (is_curve(&lines->segments[j]) || !poly_init(&b, lines, j, cfg, &ip) ||
+            if (is_curve(sj) || iu_of(sj->x0 < sj->x1 ? sj->x0 : sj->x1, ip.shift) - gj > a.hi.x ||
+                iu_of(sj->x0 > sj->x1 ? sj->x0 : sj->x1, ip.shift) + gj < a.lo.x ||
+                iu_of(sj->y0 < sj->y1 ? sj->y0 : sj->y1, ip.shift) - gj > a.hi.y ||
+                iu_of(sj->y0 > sj->y1 ? sj->y0 : sj->y1, ip.shift) + gj < a.lo.y ||
+                !poly_init(&b, lines, j, cfg, &ip) ||
                 b.lo.x > a.hi.x || a.lo.x > b.hi.x || b.lo.y > a.hi.y || a.lo.y > b.hi.y) {
                 continue;
             }
