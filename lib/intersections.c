@@ -20,16 +20,16 @@
 
 /* Largest |coordinate| of a segment end, Q8 (65535 px). */
 #define IX_COORD_MAX ((int32_t)(SYMLINE_MAX_DIM << 8))
-/* A curve's polyline takes every IX_STEP-th point at full resolution (chords
- * of 8-11 px, within 0.1 px of a circle of 100 px radius), fewer at coarser
+/* Scale levels above this do not widen the gap further. */
+#define IX_LEVEL_MAX 5u
+/* A curve's polyline takes every 8th point at full resolution (chords of
+ * 8-11 px, within 0.1 px of a circle of 100 px radius), fewer at coarser
  * scales (points 2^level px apart), every point from scale 3 on. */
-#define IX_STEP 8u
+static const uint8_t IX_STEPS[IX_LEVEL_MAX + 1u] = {8u, 4u, 2u, 1u, 1u, 1u};
 /* A stem meeting a bar at angle a stops short of it by about (half the bar's
  * width) / sin(a): the gap grows with 1/sin of the angle between the two,
  * up to this factor (sin >= 1/4, angles >= 14.5 degrees). */
 #define IX_GAP_GROWTH 4u
-/* Scale levels above this do not widen the gap further. */
-#define IX_LEVEL_MAX 5u
 #define IX_DEG_180 (180u * 256u)
 #define IX_DEG_90 (90u * 256u)
 
@@ -188,7 +188,7 @@ SL_NOINLINE static int poly_init(ix_poly *p, const symline_result *r, uint32_t i
     p->pts = NULL;
     p->n = 2u;
     if (is_curve(s)) {
-        p->step = level >= 3u ? 1u : IX_STEP >> level;
+        p->step = IX_STEPS[level];
         p->pts = r->points + s->first;
         p->n = (s->count - 1u + p->step - 1u) / p->step + 1u;
     }

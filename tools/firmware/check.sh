@@ -6,7 +6,7 @@
 #      stdio, nothing from libc at all; the M4/M7 code: no FPU instruction;
 #   3. worst-case stack of every public entry point (call graph + -fstack-usage)
 #      <= 512 bytes, on M0+ -Os and M4 -O3;
-#   4. code size (.text + .rodata) on Cortex-M4 -Os <= 12 KiB;
+#   4. code size (.text + .rodata) on Cortex-M4 -Os <= 16 KiB;
 #   5. cppcheck and clang-tidy (tools/firmware/clang-tidy.yaml) clean on lib/;
 #   6. on an emulated Cortex-M4 (qemu mps2-an386, port/cortex-m/): the core's
 #      golden and argument tests (M4 -O3 and M0+ -Os code), a deliberately
@@ -25,7 +25,10 @@ root=$(pwd)
 prefix=${SYMLINE_FW_BUILD:-$root/build-fw}
 jobs=2
 stack_budget=512
-size_budget=12288
+# 12 KiB for the detector, raised to 16 KiB for this round's field-line stages
+# (field boundary, clutter tests, sub-pixel centres, intersections); the table
+# below shows what each part costs.
+size_budget=16384
 qemu_timeout=120
 failed=0
 log=$(mktemp)
