@@ -34,7 +34,8 @@ static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint
     }
     need = symline_detect_workspace_size(w, h, cfg);
     if (need == 0) {
-        fprintf(stderr, "symline-capture: the detector rejects a %ux%u frame with these settings\n", w, h);
+        fprintf(stderr, "symline-capture: the detector rejects a %ux%u frame with these settings\n",
+                w, h);
         return -1;
     }
     /* The same storage as `symline lines`, so both report the same result for the same frame:
@@ -116,10 +117,11 @@ static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d,
         n--;
     }
     lw->len = n;
-    printf("{\"frame\": %llu, \"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, \"latency_ms\": %.3f, "
+    printf("{\"frame\": %llu, \"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, "
+           "\"latency_ms\": %.3f, "
            "\"stages_ms\": {\"queue\": %.3f, \"convert\": %.3f, \"detect\": %.3f}, ",
-           (unsigned long long)f->number, f->sequence, (long long)f->timestamp_ns, f->skipped, latency_ms,
-           queue_ms, (double)f->convert_ns / 1e6, detect_ms);
+           (unsigned long long)f->number, f->sequence, (long long)f->timestamp_ns, f->skipped,
+           latency_ms, queue_ms, (double)f->convert_ns / 1e6, detect_ms);
     fwrite(lw->buf + 1, 1, lw->len - 1, stdout);
     fputc('\n', stdout);
     return fflush(stdout) == 0 ? 0 : -1;
@@ -140,21 +142,25 @@ static void summary_add(summary *s, double lat_ms, double det_ms)
     s->frames++;
     s->lat_sum_ms += lat_ms;
     s->det_sum_ms += det_ms;
-    if (s->frames == 1 || lat_ms > s->lat_max_ms) s->lat_max_ms = lat_ms;
+    if (s->frames == 1 || lat_ms > s->lat_max_ms)
+        s->lat_max_ms = lat_ms;
     s->window_frames++;
     s->window_lat_sum_ms += lat_ms;
-    if (s->window_frames == 1 || lat_ms > s->window_lat_max_ms) s->window_lat_max_ms = lat_ms;
+    if (s->window_frames == 1 || lat_ms > s->window_lat_max_ms)
+        s->window_lat_max_ms = lat_ms;
 }
 
 static void summary_window(summary *s, const capsrc *src, int64_t now)
 {
     double secs = (double)(now - s->window_t0_ns) / 1e9;
     fprintf(stderr,
-            "symline-capture: %.1f fps, latency mean %.2f ms max %.2f ms; totals: %llu frames, %llu stale "
+            "symline-capture: %.1f fps, latency mean %.2f ms max %.2f ms; totals: %llu frames, "
+            "%llu stale "
             "skipped, %llu error buffers\n",
             secs > 0 ? (double)s->window_frames / secs : 0.0,
-            s->window_frames ? s->window_lat_sum_ms / (double)s->window_frames : 0.0, s->window_lat_max_ms,
-            (unsigned long long)s->frames, (unsigned long long)src->stats.skipped_stale,
+            s->window_frames ? s->window_lat_sum_ms / (double)s->window_frames : 0.0,
+            s->window_lat_max_ms, (unsigned long long)s->frames,
+            (unsigned long long)src->stats.skipped_stale,
             (unsigned long long)src->stats.error_buffers);
     s->window_t0_ns = now;
     s->window_frames = 0;
@@ -225,7 +231,8 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
         }
         if (r != CAPSRC_OK) {
             fprintf(stderr, "symline-capture: error: %s\n", capsrc_error(src));
-            stop_reason = r == CAPSRC_LOST ? "device lost" : (r == CAPSRC_TIMEOUT ? "timeout" : "capture error");
+            stop_reason = r == CAPSRC_LOST ? "device lost"
+                                           : (r == CAPSRC_TIMEOUT ? "timeout" : "capture error");
             status = -1;
             break;
         }
@@ -266,7 +273,8 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
         }
         capsrc_release(src);
         if (emit_frame(&lw, &frame, &det, lat_ms,
-                       (double)(t_got - frame.timestamp_ns - frame.convert_ns) / 1e6, det_ms) != 0) {
+                       (double)(t_got - frame.timestamp_ns - frame.convert_ns) / 1e6,
+                       det_ms) != 0) {
             if (!*stop_signal) {
                 fprintf(stderr, "symline-capture: error: writing the frame record failed\n");
                 stop_reason = "output error";
@@ -288,13 +296,18 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
         int64_t now = capsrc_now_ns();
         double secs = (double)(now - sum.t0_ns) / 1e9;
         fprintf(stderr,
-                "symline-capture: stopped (%s): frames=%llu fps=%.1f latency_mean_ms=%.2f latency_max_ms=%.2f "
-                "detect_mean_ms=%.2f skipped_stale=%llu error_buffers=%llu requeue_errors=%llu sequence_gaps=%llu\n",
-                stop_reason, (unsigned long long)sum.frames, secs > 0 ? (double)sum.frames / secs : 0.0,
+                "symline-capture: stopped (%s): frames=%llu fps=%.1f latency_mean_ms=%.2f "
+                "latency_max_ms=%.2f "
+                "detect_mean_ms=%.2f skipped_stale=%llu error_buffers=%llu requeue_errors=%llu "
+                "sequence_gaps=%llu\n",
+                stop_reason, (unsigned long long)sum.frames,
+                secs > 0 ? (double)sum.frames / secs : 0.0,
                 sum.frames ? sum.lat_sum_ms / (double)sum.frames : 0.0, sum.lat_max_ms,
                 sum.frames ? sum.det_sum_ms / (double)sum.frames : 0.0,
-                (unsigned long long)src->stats.skipped_stale, (unsigned long long)src->stats.error_buffers,
-                (unsigned long long)src->stats.requeue_errors, (unsigned long long)src->stats.sequence_gaps);
+                (unsigned long long)src->stats.skipped_stale,
+                (unsigned long long)src->stats.error_buffers,
+                (unsigned long long)src->stats.requeue_errors,
+                (unsigned long long)src->stats.sequence_gaps);
     }
     detector_free(&det);
     fclose(lw.mem);

@@ -15,13 +15,13 @@
 #include "symline/detect.h"
 
 typedef struct caploop_options {
-    uint64_t frames;          /* 0 = until stopped or the source ends */
-    int timeout_ms;           /* wait for one frame; < 0 = forever */
-    uint32_t summary_s;       /* seconds between summaries on stderr; 0 = final one only */
-    uint32_t snapshot_every;  /* overlay of every K-th frame into snapshot_dir; 0 = none */
-    const char *snapshot_dir; /* must exist */
-    uint32_t record_every;    /* every K-th frame as PGM into record_dir; 0 = none */
-    const char *record_dir;   /* must exist */
+    uint64_t frames;           /* 0 = until stopped or the source ends */
+    int timeout_ms;            /* wait for one frame; < 0 = forever */
+    uint32_t summary_s;        /* seconds between summaries on stderr; 0 = final one only */
+    uint32_t snapshot_every;   /* overlay of every K-th frame into snapshot_dir; 0 = none */
+    const char *snapshot_dir;  /* must exist */
+    uint32_t record_every;     /* every K-th frame as PGM into record_dir; 0 = none */
+    const char *record_dir;    /* must exist */
     const symline_config *cfg; /* detector settings */
 } caploop_options;
 

@@ -2,12 +2,13 @@
  * The few macros and inline helpers every module of the core shares:
  * workspace carving and argument checks. Not part of the public API; each
  * stage's own interface is in its private header (symmetry.h, extrema.h,
- * linefilter.h, linepoints.h, tracer.h, segments.h, merge.h, curvejoin.h,
- * pass.h, fixed.h).
+ * linefilter.h, linepoints.h, tracer.h, subpixel.h, segments.h, merge.h,
+ * curvejoin.h, pass.h, fixed.h).
  */
 #ifndef SYMLINE_COMMON_H
 #define SYMLINE_COMMON_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -66,11 +67,11 @@ static inline symline_status sl_check_radius(uint32_t m)
 static inline symline_status sl_check_axis(symline_axis axis)
 {
     return (axis == SYMLINE_AXIS_HORIZONTAL || axis == SYMLINE_AXIS_VERTICAL) ? SYMLINE_OK
-                                                                               : SYMLINE_ERR_AXIS;
+                                                                              : SYMLINE_ERR_AXIS;
 }
 
-/* 1 when a workspace query's arguments are valid (sizes 1..65535, known axis, radius 1..255). */
-static inline int sl_query_ok(uint32_t width, uint32_t height, symline_axis axis, uint32_t m)
+/* True when a workspace query's arguments are valid (sizes 1..65535, known axis, radius 1..255). */
+static inline bool sl_query_ok(uint32_t width, uint32_t height, symline_axis axis, uint32_t m)
 {
     return width != 0u && width <= SYMLINE_MAX_DIM && height != 0u && height <= SYMLINE_MAX_DIM &&
            sl_check_axis(axis) == SYMLINE_OK && sl_check_radius(m) == SYMLINE_OK;

@@ -28,11 +28,11 @@ static void line_dir(const symline_segment *s, int32_t *dx, int32_t *dy)
     }
 }
 
-/* 1 when line s continues curve c at one of c's ends: an end of s within tol
+/* True when line s continues curve c at one of c's ends: an end of s within tol
  * (Q8, in x and y) of it, s leaving that end where c came from, within 30
  * degrees. */
-static int continues(const symline_segment *s, const symline_segment *c, const symline_point *pts,
-                     int32_t tol)
+static bool continues(const symline_segment *s, const symline_segment *c, const symline_point *pts,
+                      int32_t tol)
 {
     const symline_point *p = pts + c->first;
     const int32_t last = (int32_t)c->count - 1;
@@ -43,8 +43,8 @@ static int continues(const symline_segment *s, const symline_segment *c, const s
         /* e & 1: c's end (else its start); e & 2: s's end x1 (else x0). */
         const int32_t at = (e & 1) ? last : 0, in = (e & 1) ? last - j : j;
         const int32_t cdx = (int32_t)p[at].x - p[in].x, cdy = (int32_t)p[at].y - p[in].y;
-        const int32_t gx = ((e & 2) ? s->x1 : s->x0) - ((int32_t)p[at].x << SL_Q8_SHIFT);
-        const int32_t gy = ((e & 2) ? s->y1 : s->y0) - ((int32_t)p[at].y << SL_Q8_SHIFT);
+        const int32_t gx = ((e & 2) ? s->x1 : s->x0) - sl_pt_q8x(&p[at], 0u);
+        const int32_t gy = ((e & 2) ? s->y1 : s->y0) - sl_pt_q8y(&p[at], 0u);
         /* s leaves its end x1 along +dir, its end x0 along -dir; continuing c
          * means leaving against c's outward direction. */
         const int32_t dot = (e & 2) ? -(ldx * cdx + ldy * cdy) : ldx * cdx + ldy * cdy;
@@ -52,13 +52,13 @@ static int continues(const symline_segment *s, const symline_segment *c, const s
          * |c| <= 8 * sqrt(2) and |l| < 1448 keep the products in 32 bits. */
         if (gx <= tol && gx >= -tol && gy <= tol && gy >= -tol && dot > 0 &&
             4 * dot * dot >= 3 * (ldx * ldx + ldy * ldy) * (cdx * cdx + cdy * cdy)) {
-            return 1;
+            return true;
         }
     }
-    return 0;
+    return false;
 }
 
-void sl_curve_join(symline_result *r, int join)
+void sl_curve_join(symline_result *r)
 {
     uint32_t i, k;
     /* One round in storage order: passes run fine scale first, horizontal
@@ -66,16 +66,13 @@ void sl_curve_join(symline_result *r, int join)
     for (i = 0; i < r->segment_count; i++) {
         symline_segment *s = &r->segments[i];
         const int32_t tol = (int32_t)(SL_JOIN_TOL_Q8 + sl_block_q8(s->level));
-        /* A merged line (reserved set by sl_merge) has its points piece after
-         * piece, not in one run a curve could be drawn through. */
-        for (k = 0; join && s->kind == SYMLINE_KIND_LINE && s->reserved == 0u &&
-                    k < r->segment_count;
-             k++) {
+        /* A merged line has its points piece after piece, not in one run a
+         * curve could be drawn through. */
+        for (k = 0; s->kind == SYMLINE_KIND_LINE && !s->merged && k < r->segment_count; k++) {
             const symline_segment *c = &r->segments[k];
             if (c->kind == SYMLINE_KIND_CURVE && continues(s, c, r->points, tol)) {
                 s->kind = SYMLINE_KIND_CURVE;
             }
         }
-        s->reserved = 0u;
     }
 }

@@ -8,10 +8,8 @@
 #include "common.h"
 #include "symline/detect.h"
 
-/* With join != 0, line segments of r that continue a curve smoothly (ends
- * within 3 px, directions within 30 degrees) become curves; merged lines
- * (reserved = 1, set by sl_merge()) stay lines. Clears every segment's
- * reserved field. */
-void sl_curve_join(symline_result *r, int join);
+/* Line segments of r that continue a curve smoothly (ends within 3 px,
+ * directions within 30 degrees) become curves; merged lines stay lines. */
+void sl_curve_join(symline_result *r);
 
 #endif /* SYMLINE_LIB_CURVEJOIN_H */

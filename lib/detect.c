@@ -7,6 +7,7 @@
 
 #include "common.h"
 #include "curvejoin.h"
+#include "fixed.h"
 #include "linefilter.h"
 #include "merge.h"
 #include "pass.h"
@@ -30,14 +31,14 @@ void symline_config_default(symline_config *cfg)
     cfg->contrast_min = 3u;
     cfg->contrast_asym_pct = 150u;
     cfg->min_length = 12u;
-    cfg->curve_dev_q8 = 512u;
-    cfg->curve_bend_q8 = 80u;
-    cfg->merge_gap = 0xFFFFFFFFu;
-    cfg->merge_dev_q8 = 640u;
+    cfg->curve_dev_q8 = SL_PX_Q8(2u);
+    cfg->curve_bend_q8 = 80u; /* 0.31 px */
+    cfg->merge_gap = SYMLINE_MERGE_GAP_AUTO;
+    cfg->merge_dev_q8 = SL_PX_Q8(5u) / 2u; /* 2.5 px */
 }
 
-#define SL_MAX_DETECT_RADIUS 32u
-#define SL_MAX_LEVELS 5u
+/* Largest value of the Q8 length settings: the largest frame dimension. */
+#define SL_MAX_LENGTH_Q8 (SYMLINE_MAX_DIM << SL_Q8_SHIFT)
 
 static symline_status check_config(const symline_config *c)
 {
@@ -45,7 +46,8 @@ static symline_status check_config(const symline_config *c)
         c->axes != SYMLINE_AXES_BOTH) {
         return SYMLINE_ERR_CONFIG;
     }
-    if (c->radius < 1u || c->radius > SL_MAX_DETECT_RADIUS || c->levels > SL_MAX_LEVELS) {
+    if (c->radius < 1u || c->radius > SYMLINE_DETECT_MAX_RADIUS ||
+        c->levels > SYMLINE_DETECT_MAX_LEVELS) {
         return SYMLINE_ERR_CONFIG;
     }
     if (c->filter != SYMLINE_FILTER_CONTRAST && c->filter != SYMLINE_FILTER_PAPER) {
@@ -53,61 +55,64 @@ static symline_status check_config(const symline_config *c)
     }
     if (c->illumination > 255u || c->adaptive > 1u || c->bright_sigma10 < -100 ||
         c->bright_sigma10 > 100 || c->ridge_sigma10 > 100u || c->side_sigma10 < -100 ||
-        c->side_sigma10 > 100 || c->a_distance > 32u || c->contrast_pct > 100u ||
-        c->contrast_min > 255u || c->contrast_asym_pct > 1000u || c->min_length > SYMLINE_MAX_DIM ||
-        c->curve_dev_q8 > (SYMLINE_MAX_DIM << 8) || c->curve_bend_q8 > (SYMLINE_MAX_DIM << 8) ||
-        c->merge_dev_q8 > (SYMLINE_MAX_DIM << 8)) {
+        c->side_sigma10 > 100 || c->a_distance > SYMLINE_DETECT_MAX_A_DISTANCE ||
+        c->contrast_pct > 100u || c->contrast_min > 255u || c->contrast_asym_pct > 1000u ||
+        c->min_length > SYMLINE_MAX_DIM || c->curve_dev_q8 > SL_MAX_LENGTH_Q8 ||
+        c->curve_bend_q8 > SL_MAX_LENGTH_Q8 || c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
         return SYMLINE_ERR_CONFIG;
     }
     return SYMLINE_OK;
 }
 
-/* Number of scales: as configured, or enough that the coarsest one reaches
+/* Number of scales (levels): as configured, or enough that the coarsest one reaches
  * lines width/16 px wide (radius m spans lines up to about 2m+1 px); never
  * a grid smaller than the operator's window. */
 static uint32_t level_count(const symline_config *c, uint32_t width, uint32_t height)
 {
-    uint32_t L = c->levels;
+    uint32_t levels = c->levels;
     const uint32_t span = 2u * c->radius + 1u;
-    if (L == 0u) {
-        L = 1u;
-        while (L < SL_MAX_LEVELS && (span << (L - 1u)) < width / 16u) {
-            L++;
+    if (levels == 0u) {
+        levels = 1u;
+        while (levels < SYMLINE_DETECT_MAX_LEVELS && (span << (levels - 1u)) < width / 16u) {
+            levels++;
         }
     }
-    while (L > 1u && ((width >> (L - 1u)) < span + 2u || (height >> (L - 1u)) < span + 2u)) {
-        L--;
+    while (levels > 1u &&
+           ((width >> (levels - 1u)) < span + 2u || (height >> (levels - 1u)) < span + 2u)) {
+        levels--;
     }
-    return L;
+    return levels;
 }
 
+/* The axes of a detection: how many, and the index-th (horizontal first). */
 static uint32_t axis_count(const symline_config *c)
 {
     return c->axes == SYMLINE_AXES_BOTH ? 2u : 1u;
 }
 
-static symline_axis axis_of(const symline_config *c, uint32_t i)
+static symline_axis axis_of(const symline_config *c, uint32_t index)
 {
     if (c->axes == SYMLINE_AXES_BOTH) {
-        return i == 0u ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL;
+        return index == 0u ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL;
     }
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
 }
 
-SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const symline_config *cfg)
+SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height,
+                                                 const symline_config *cfg)
 {
-    uint32_t L, l, a;
+    uint32_t levels, level, axis;
     size_t best = 0u;
     if (cfg == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
         height > SYMLINE_MAX_DIM || check_config(cfg) != SYMLINE_OK) {
         return 0u;
     }
-    L = level_count(cfg, width, height);
-    for (l = 0; l < L; l++) {
-        for (a = 0; a < axis_count(cfg); a++) {
+    levels = level_count(cfg, width, height);
+    for (level = 0; level < levels; level++) {
+        for (axis = 0; axis < axis_count(cfg); axis++) {
             sl_pass p;
             size_t n;
-            sl_pass_setup(&p, cfg, axis_of(cfg, a), l, width, height);
+            sl_pass_setup(&p, cfg, axis_of(cfg, axis), level, width, height);
             n = sl_pass_ws_size(&p, width);
             best = n > best ? n : best;
         }
@@ -121,13 +126,13 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
 SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_t ws_size,
                                    sl_run *d)
 {
-    uint32_t L, l, a;
+    uint32_t levels, level, axis;
     uint8_t *cur = ws, *const end = ws + ws_size;
     sl_pass *p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
-    L = level_count(cfg, d->img->width, d->img->height);
-    for (l = 0; l < L && p != NULL; l++) {
-        for (a = 0; a < axis_count(cfg); a++) {
-            sl_pass_setup(p, cfg, axis_of(cfg, a), l, d->img->width, d->img->height);
+    levels = level_count(cfg, d->img->width, d->img->height);
+    for (level = 0; level < levels && p != NULL; level++) {
+        for (axis = 0; axis < axis_count(cfg); axis++) {
+            sl_pass_setup(p, cfg, axis_of(cfg, axis), level, d->img->width, d->img->height);
             if (cfg->adaptive) {
                 sl_linefilter_adapt(&p->filter, cfg, &d->stats);
             }
@@ -166,7 +171,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.nseg = 0u;
     d.prev_seg = 0u;
     d.npts = 0u;
-    d.truncated = 0u;
+    d.truncated = false;
     d.stats.mean = 0u;
     d.stats.sigma_q4 = 0u;
     if (cfg->adaptive) {
@@ -176,10 +181,13 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     out->point_count = d.npts;
     out->segment_count = d.nseg;
     if (cfg->merge_gap != 0u) {
-        const uint32_t gap = cfg->merge_gap == 0xFFFFFFFFu ? img->width / 8u : cfg->merge_gap;
+        const uint32_t gap =
+            cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? img->width / 8u : cfg->merge_gap;
         sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
     }
-    sl_curve_join(out, cfg->curve_bend_q8 != 0u);
+    if (cfg->curve_bend_q8 != 0u) {
+        sl_curve_join(out);
+    }
     out->truncated = d.truncated;
     return SYMLINE_OK;
 }

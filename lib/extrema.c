@@ -95,9 +95,8 @@ symline_status symline_colrun_init(symline_colrun *cr, uint32_t width, void *buf
     return SYMLINE_OK;
 }
 
-symline_status symline_colrun_push(symline_colrun *cr, const uint32_t *E,
-                                   symline_extremum *events, uint32_t events_cap,
-                                   uint32_t *count)
+symline_status symline_colrun_push(symline_colrun *cr, const uint32_t *E, symline_extremum *events,
+                                   uint32_t events_cap, uint32_t *count)
 {
     uint32_t x, n = 0u, y;
     if (cr == NULL || E == NULL || events == NULL || count == NULL || cr->prev_e == NULL ||
@@ -182,8 +181,7 @@ symline_status symline_extrema(const symline_image *img, symline_axis axis, uint
     {
         const size_t cr_bytes = symline_colrun_buffer_size(img->width);
         void *cr_buf = sl_carve(&cur, end, cr_bytes);
-        ev = (symline_extremum *)sl_carve(&cur, end,
-                                          (size_t)img->width * sizeof(symline_extremum));
+        ev = (symline_extremum *)sl_carve(&cur, end, (size_t)img->width * sizeof(symline_extremum));
         if (cr_buf == NULL || ev == NULL ||
             symline_colrun_init(&cr, img->width, cr_buf, cr_bytes) != SYMLINE_OK) {
             return SYMLINE_ERR_BUFFER;

@@ -26,7 +26,7 @@ uint32_t sl_div_q8(uint64_t cross, uint64_t len)
     /* A 32-bit division (no 64-bit division helper on small cores): drop the
      * same low bits of both; the quotient keeps well under 1/256 px of error
      * for any chord longer than a pixel. */
-    while (cross > 0xFFFFFFFFu) {
+    while (cross > UINT32_MAX) {
         cross >>= 1;
         len >>= 1;
     }

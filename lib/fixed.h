@@ -1,18 +1,19 @@
 /*
  * Fixed-point helpers of the detector (fixed.c): Q8 pixel coordinates, the
- * scale grids' block geometry, an integer square root and a 32-bit Q8
- * division. No floating point anywhere in the core.
+ * scale grids' block geometry, the position of a point with its sub-pixel
+ * offset, an integer square root and a 32-bit Q8 division. No floating point anywhere in the core.
  */
 #ifndef SYMLINE_LIB_FIXED_H
 #define SYMLINE_LIB_FIXED_H
 
 #include "common.h"
+#include "symline/detect.h"
 
 /* Q8: 1/256 px. A pixel centre is a multiple of SL_Q8_ONE. */
 #define SL_Q8_SHIFT 8u
 #define SL_Q8_ONE 256u
 /* n whole pixels in Q8 (n an unsigned constant). */
-#define SL_PX_Q8(n) ((n) * SL_Q8_ONE)
+#define SL_PX_Q8(n) ((n) << SL_Q8_SHIFT)
 
 /* What sl_div_q8() returns for a zero length (no quotient). */
 #define SL_Q8_NO_QUOTIENT UINT32_MAX
@@ -34,6 +35,32 @@ static inline uint32_t sl_block_q8(uint32_t level)
 static inline int32_t sl_q8(uint32_t v, uint32_t level)
 {
     return (int32_t)(((v << level) << SL_Q8_SHIFT) + sl_block_half_q8(level));
+}
+
+/* Q8 full-resolution x (y) of point q of a grid at `level`: the block centre
+ * plus the point's sub-pixel offset fx (fy), 1/128 px of that grid
+ * (subpixel.c sets it; 0 for points never refined). */
+static inline int32_t sl_pt_q8x(const symline_point *q, uint32_t level)
+{
+    return sl_q8(q->x, level) + (int32_t)q->fx * (int32_t)(2u << level);
+}
+
+static inline int32_t sl_pt_q8y(const symline_point *q, uint32_t level)
+{
+    return sl_q8(q->y, level) + (int32_t)q->fy * (int32_t)(2u << level);
+}
+
+/* Makes grid point q at `level` a full-resolution point: the nearest pixel
+ * and the remainder, 1/128 px in -64..63 (the public symline_point). */
+static inline void sl_pt_to_full(symline_point *q, uint32_t level)
+{
+    /* Q7 full-resolution coordinates: half the Q8 ones (always even). */
+    const int32_t x7 = sl_pt_q8x(q, level) / 2, y7 = sl_pt_q8y(q, level) / 2;
+    const int32_t x = (x7 + 64) >> 7, y = (y7 + 64) >> 7;
+    q->x = (uint16_t)x;
+    q->y = (uint16_t)y;
+    q->fx = (int8_t)(x7 - x * 128);
+    q->fy = (int8_t)(y7 - y * 128);
 }
 
 /* floor(sqrt(v)), bit by bit (no multiply, no division). */

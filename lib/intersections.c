@@ -49,10 +49,10 @@ void symline_intersection_config_default(symline_intersection_config *cfg)
 /* ---- integer helpers ---- */
 
 /* atan(k/32) in Q8 degrees, k = 0..32. */
-static const uint16_t ATAN_Q8[33] = {
-    0,    458,  916,  1371, 1824, 2273, 2719, 3159, 3593,  4021,  4443,
-    4856, 5262, 5660, 6049, 6429, 6801, 7163, 7516, 7859,  8193,  8518,
-    8834, 9141, 9439, 9728, 10008, 10280, 10544, 10799, 11047, 11287, 11520};
+static const uint16_t ATAN_Q8[33] = {0,     458,   916,   1371,  1824,  2273, 2719, 3159, 3593,
+                                     4021,  4443,  4856,  5262,  5660,  6049, 6429, 6801, 7163,
+                                     7516,  7859,  8193,  8518,  8834,  9141, 9439, 9728, 10008,
+                                     10280, 10544, 10799, 11047, 11287, 11520};
 
 /* atan(lo/hi) in Q8 degrees for 0 <= lo <= hi, hi > 0: [0, 45*256]. */
 static uint32_t atan_ratio(uint32_t lo, uint32_t hi)
@@ -120,13 +120,13 @@ typedef struct ix_poly {
     const symline_segment *s;
     const symline_point *pts; /* a curve's points, or NULL: the chord */
     const ix_params *ip;
-    uint32_t n;               /* vertices, >= 2 */
-    uint32_t step;            /* points from one vertex to the next */
-    uint32_t index;           /* in the result's segments */
-    ix_vec lo, hi;            /* box of the vertices grown by the gap */
-    int32_t gap_base;         /* how far a free end may stop short of a crossing
+    uint32_t n;       /* vertices, >= 2 */
+    uint32_t step;    /* points from one vertex to the next */
+    uint32_t index;   /* in the result's segments */
+    ix_vec lo, hi;    /* box of the vertices grown by the gap */
+    int32_t gap_base; /* how far a free end may stop short of a crossing
                                  met at a right angle */
-    int32_t gap;              /* ... at any angle: min(IX_GAP_GROWTH gap_base,
+    int32_t gap;      /* ... at any angle: min(IX_GAP_GROWTH gap_base,
                                  gap_pct of its size) */
 } ix_poly;
 
@@ -150,9 +150,10 @@ static ix_vec vertex(const ix_poly *p, uint32_t k)
         v.x = iu_of(k == 0u ? p->s->x0 : p->s->x1, sh);
         v.y = iu_of(k == 0u ? p->s->y0 : p->s->y1, sh);
     } else {
+        /* the point with its sub-pixel offset (1/128 px) */
         const symline_point *q = p->pts + (k + 1u >= p->n ? p->s->count - 1u : k * p->step);
-        v.x = (int32_t)(((uint32_t)q->x << 8) >> sh);
-        v.y = (int32_t)(((uint32_t)q->y << 8) >> sh);
+        v.x = iu_of((int32_t)q->x * 256 + q->fx * 2, sh);
+        v.y = iu_of((int32_t)q->y * 256 + q->fy * 2, sh);
     }
     return v;
 }
@@ -463,8 +464,7 @@ static uint32_t abs_of(int32_t v)
 /* Checks the arguments; *shift: the internal unit (2^shift Q8 units) that
  * keeps every coordinate below 2^14 units (Q2 for frames up to 4095 px). */
 SL_NOINLINE static symline_status check_args(const symline_result *r,
-                                             const symline_intersection_config *c,
-                                             uint32_t *shift)
+                                             const symline_intersection_config *c, uint32_t *shift)
 {
     uint32_t i, k, top = 1u; /* largest |coordinate|, Q8 */
     if (c->min_angle_q8 > IX_DEG_90 || c->gap_q8 > 65536u || c->gap_pct > 100u ||
@@ -494,7 +494,8 @@ SL_NOINLINE static symline_status check_args(const symline_result *r,
                 return SYMLINE_ERR_RANGE;
             }
             for (k = 0; k < s->count; k++) {
-                top |= ((uint32_t)r->points[s->first + k].x | r->points[s->first + k].y) << 8;
+                top |=
+                    ((uint32_t)r->points[s->first + k].x | r->points[s->first + k].y) * 256u + 255u;
             }
         }
     }
@@ -534,18 +535,18 @@ symline_status symline_intersections(const symline_result *lines,
         for (j = a.pts != NULL ? 0u : i + 1u; j < lines->segment_count; j++) {
             const symline_segment *sj = &lines->segments[j];
             /* first the box of its ends (Q8) grown by its largest possible gap */
-            const int32_t gj = (int32_t)((cfg->gap_q8 * ((sj->level < IX_LEVEL_MAX ? sj->level
-                                                                                : IX_LEVEL_MAX) +
-                                                        1u) *
-                                         IX_GAP_GROWTH) >>
-                                        ip.shift);
+            const int32_t gj =
+                (int32_t)((cfg->gap_q8 *
+                           ((sj->level < IX_LEVEL_MAX ? sj->level : IX_LEVEL_MAX) + 1u) *
+                           IX_GAP_GROWTH) >>
+                          ip.shift);
             ix_poly b;
             if (is_curve(sj) || iu_of(sj->x0 < sj->x1 ? sj->x0 : sj->x1, ip.shift) - gj > a.hi.x ||
                 iu_of(sj->x0 > sj->x1 ? sj->x0 : sj->x1, ip.shift) + gj < a.lo.x ||
                 iu_of(sj->y0 < sj->y1 ? sj->y0 : sj->y1, ip.shift) - gj > a.hi.y ||
                 iu_of(sj->y0 > sj->y1 ? sj->y0 : sj->y1, ip.shift) + gj < a.lo.y ||
-                !poly_init(&b, lines, j, cfg, &ip) ||
-                b.lo.x > a.hi.x || a.lo.x > b.hi.x || b.lo.y > a.hi.y || a.lo.y > b.hi.y) {
+                !poly_init(&b, lines, j, cfg, &ip) || b.lo.x > a.hi.x || a.lo.x > b.hi.x ||
+                b.lo.y > a.hi.y || a.lo.y > b.hi.y) {
                 continue;
             }
             for (k = 0; k + 1u < a.n; k++) {

@@ -68,8 +68,9 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
 {
     const uint32_t mean = st->mean, sigma_q4 = st->sigma_q4;
     const int64_t t = (int64_t)mean + (int64_t)cfg->bright_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
-    const uint32_t ridge = (uint32_t)(((uint64_t)cfg->ridge_sigma10 * sigma_q4 +
-                                       SL_SIGMA10_Q4_DIV / 2u) / SL_SIGMA10_Q4_DIV);
+    const uint32_t ridge =
+        (uint32_t)(((uint64_t)cfg->ridge_sigma10 * sigma_q4 + SL_SIGMA10_Q4_DIV / 2u) /
+                   SL_SIGMA10_Q4_DIV);
     const uint32_t bright = t < 0 ? 0u : (t > 255 ? 255u : (uint32_t)t);
     if (bright > f->min_gray) {
         f->min_gray = bright;
@@ -78,7 +79,8 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
         f->ridge_min = ridge;
     }
     if (cfg->side_sigma10 < SL_SIDE_SIGMA10_OFF) {
-        const int64_t sm = (int64_t)mean + (int64_t)cfg->side_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
+        const int64_t sm =
+            (int64_t)mean + (int64_t)cfg->side_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
         f->side_max = sm < 0 ? 0u : (sm > 255 ? 255u : (uint32_t)sm);
     }
 }
@@ -93,27 +95,28 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
  * At most 4096 points are summed, so every product stays in 32 bits.
  */
 #define SL_SIDE_SAMPLES 4096u
-SL_NOINLINE int sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
-                                           symline_axis axis, uint32_t level, uint32_t k,
-                                           const symline_point *q, uint32_t n)
+SL_NOINLINE bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
+                                            symline_axis axis, uint32_t level, uint32_t k,
+                                            const symline_point *q, uint32_t n)
 {
-    const int horiz = axis == SYMLINE_AXIS_HORIZONTAL;
+    const bool horiz = axis == SYMLINE_AXIS_HORIZONTAL;
     const uint32_t half = (1u << level) >> 1, off = k << level;
     const uint32_t step = n / SL_SIDE_SAMPLES + 1u;
     const size_t across = horiz ? img->stride : 1u;
     const uint32_t lim = horiz ? img->height : img->width;
-    uint32_t slo = 0u, shi = 0u, sc = 0u, i, side;
+    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side;
     for (i = 0; i < n; i += step) {
         /* Grid points map inside the frame: (v << level) + half < size. */
         const uint32_t x = ((uint32_t)q[i].x << level) + half;
         const uint32_t y = ((uint32_t)q[i].y << level) + half;
         const uint32_t pos = horiz ? y : x;
         const uint8_t *c = img->data + (size_t)y * img->stride + x;
-        sc += *c;
-        slo += *(c - (size_t)(pos >= off ? off : pos) * across);
-        shi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
+        sum_centre += *c;
+        sum_lo += *(c - (size_t)(pos >= off ? off : pos) * across);
+        sum_hi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
     }
-    side = slo > shi ? slo : shi;
-    return sc <= side ||
-           (slo > shi ? slo - shi : shi - slo) * (2u * f->asym_pct) > (sc - side) * 100u;
+    side = sum_lo > sum_hi ? sum_lo : sum_hi;
+    return sum_centre <= side ||
+           (sum_lo > sum_hi ? sum_lo - sum_hi : sum_hi - sum_lo) * (2u * f->asym_pct) >
+               (sum_centre - side) * 100u;
 }

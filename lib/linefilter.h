@@ -39,20 +39,20 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
 
 /* The gray-value part of the line filter for an S point with centre value c
  * and values lo, hi at k pixels before and after it across the line (clamped
- * at the border). 1 = line point (the paper filter's A-point test is
+ * at the border). True for a line point (the paper filter's A-point test is
  * sl_linefilter_a_near()). Inline: it runs for every S point. */
-static inline int sl_linefilter_gray(const sl_linefilter *f, uint32_t c, uint32_t lo, uint32_t hi)
+static inline bool sl_linefilter_gray(const sl_linefilter *f, uint32_t c, uint32_t lo, uint32_t hi)
 {
     uint32_t side, need;
     if (c < f->min_gray) {
-        return 0;
+        return false;
     }
     if (f->kind == SYMLINE_FILTER_PAPER) {
-        return 1;
+        return true;
     }
     side = lo > hi ? lo : hi;
     if (c <= side || side > f->side_max) {
-        return 0;
+        return false;
     }
     need = (c * f->ridge_pct + 99u) / 100u;
     if (need < f->ridge_min) {
@@ -62,21 +62,18 @@ static inline int sl_linefilter_gray(const sl_linefilter *f, uint32_t c, uint32_
         const uint32_t asym = ((lo > hi ? lo - hi : hi - lo) * f->asym_pct + 99u) / 100u;
         need = asym > need ? asym : need;
     }
-    if (c - side < need) {
-        return 0;
-    }
-    return 1;
+    return c - side >= need;
 }
 
 /*
- * The paper filter's A-point test: 1 when an A point lies within
+ * The paper filter's A-point test: true when an A point lies within
  * f->a_distance entries of entry `at` of a line of n extrema map entries
  * across the line. Entry i is map[(i % ring) * step]: step 1 and ring n for
  * a row, the row length and the ring's row count for a column of a ring of
  * rows. Inline like the gray test: it runs for every S point that passed it.
  */
-static inline int sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *map, uint32_t ring,
-                                       size_t step, uint32_t n, uint32_t at)
+static inline bool sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *map, uint32_t ring,
+                                        size_t step, uint32_t n, uint32_t at)
 {
     const uint32_t d = f->a_distance;
     const uint32_t lo = at >= d ? at - d : 0u;
@@ -84,20 +81,19 @@ static inline int sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *ma
     uint32_t i;
     for (i = lo; i <= hi; i++) {
         if (map[(size_t)(i % ring) * step] == SYMLINE_MAP_A) {
-            return 1;
+            return true;
         }
     }
-    return 0;
+    return false;
 }
 
 /*
  * The contrast filter's "sides alike" test once more, over a whole traced
  * piece q[0..n-1] (grid coordinates at `level`; k: the pass's sample offset
- * across the line in grid px): 1 when its sides differ too much for a line
+ * across the line in grid px): true when its sides differ too much for a line
  * on the carpet. Only for the contrast filter with asym_pct != 0.
  */
-int sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
-                               symline_axis axis, uint32_t level, uint32_t k,
-                               const symline_point *q, uint32_t n);
+bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img, symline_axis axis,
+                                uint32_t level, uint32_t k, const symline_point *q, uint32_t n);
 
 #endif /* SYMLINE_LIB_LINEFILTER_H */

@@ -92,7 +92,7 @@ size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
         n += sl_align_up((size_t)img_width * sizeof(uint16_t)); /* box accumulator */
     }
     if (p->axis == SYMLINE_AXIS_VERTICAL) {
-        n += sl_align_up(w);     /* extrema of the row */
+        n += sl_align_up(w); /* extrema of the row */
         if (p->level > 0u) {
             n += sl_align_up(w); /* the grid row */
         }
@@ -110,10 +110,10 @@ size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
 }
 
 static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x, uint32_t y,
-                       uint8_t *truncated)
+                       bool *truncated)
 {
     if (*n >= cap) {
-        *truncated = 1u;
+        *truncated = true;
         return;
     }
     pts[*n].x = (uint16_t)x;
@@ -123,9 +123,10 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 
 /* ---- vertical axis: along rows ---- */
 
-SL_NOINLINE static symline_status collect_vertical(const symline_image *img, const sl_pass *p, uint8_t *cur,
-                                       uint8_t *end, symline_point *pts, uint32_t cap,
-                                       uint32_t *n, uint32_t *row_start, uint8_t *truncated)
+SL_NOINLINE static symline_status collect_vertical(const symline_image *img, const sl_pass *p,
+                                                   uint8_t *cur, uint8_t *end, symline_point *pts,
+                                                   uint32_t cap, uint32_t *n, uint32_t *row_start,
+                                                   bool *truncated)
 {
     uint32_t *E = (uint32_t *)sl_carve(&cur, end, (size_t)p->w * sizeof(uint32_t));
     uint8_t *map = (uint8_t *)sl_carve(&cur, end, p->w);
@@ -174,7 +175,6 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img, con
 
 /* ---- horizontal axis: down the columns, over rings ---- */
 
-
 static const uint8_t *h_row(const hring *r, uint32_t y)
 {
     if (r->p->level == 0u) {
@@ -189,7 +189,7 @@ static uint8_t *h_map(const hring *r, uint32_t y)
 }
 
 static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap, uint32_t *n,
-                     uint32_t *row_start, uint8_t *truncated)
+                     uint32_t *row_start, bool *truncated)
 {
     const sl_pass *p = r->p;
     const uint8_t *map = h_map(r, y);
@@ -214,9 +214,9 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
 }
 
 SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, const sl_pass *p,
-                                         uint8_t *cur, uint8_t *end, symline_point *pts,
-                                         uint32_t cap, uint32_t *n, uint32_t *row_start,
-                                         uint8_t *truncated)
+                                                     uint8_t *cur, uint8_t *end, symline_point *pts,
+                                                     uint32_t cap, uint32_t *n, uint32_t *row_start,
+                                                     bool *truncated)
 {
     hring *rp = (hring *)sl_carve(&cur, end, sizeof(hring));
     symline_colrun *cr = (symline_colrun *)sl_carve(&cur, end, sizeof(symline_colrun));
@@ -256,7 +256,8 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
         if (p->level > 0u) {
             const uint32_t need = (t + m < h) ? t + m : h - 1u;
             while (produced <= need) {
-                sl_grid_row(img, p, produced, acc, rp->gray + (size_t)(produced % rp->gray_rows) * w);
+                sl_grid_row(img, p, produced, acc,
+                            rp->gray + (size_t)(produced % rp->gray_rows) * w);
                 produced++;
             }
         }
@@ -302,7 +303,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
 
 symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
                           symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
-                          uint8_t *truncated)
+                          bool *truncated)
 {
     uint8_t *cur = (uint8_t *)ws;
     uint8_t *end = cur + ws_size;

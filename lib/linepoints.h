@@ -14,11 +14,11 @@
  * Filled by sl_pass_setup() (pass.c). */
 typedef struct sl_pass {
     symline_axis axis;
-    uint32_t level;  /* grid = frame box-downsampled by 2^level */
-    uint32_t w, h;   /* grid size: width >> level, height >> level */
-    uint32_t m;      /* radius */
-    uint32_t k;      /* contrast sample offset across the line: m + 1 */
-    uint32_t lag;    /* longest accepted plateau: end - marked index <= lag (= m) */
+    uint32_t level; /* grid = frame box-downsampled by 2^level */
+    uint32_t w, h;  /* grid size: width >> level, height >> level */
+    uint32_t m;     /* radius */
+    uint32_t k;     /* contrast sample offset across the line: m + 1 */
+    uint32_t lag;   /* longest accepted plateau: end - marked index <= lag (= m) */
     sl_linefilter filter;
 } sl_pass;
 
@@ -40,6 +40,6 @@ size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width);
  */
 symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
                           symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
-                          uint8_t *truncated);
+                          bool *truncated);
 
 #endif /* SYMLINE_LIB_LINEPOINTS_H */

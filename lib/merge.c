@@ -20,7 +20,6 @@ static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
     return (uint64_t)(dx * dx + dy * dy);
 }
 
-
 /* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
 static void end_of(const symline_segment *a, const symline_segment *b, uint32_t i, int32_t *x,
                    int32_t *y)
@@ -32,8 +31,8 @@ static void end_of(const symline_segment *a, const symline_segment *b, uint32_t 
 
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece). */
-SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment *b,
-                                 uint64_t gap2, uint32_t dev_q8, int32_t ends[4])
+SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b, uint64_t gap2,
+                                  uint32_t dev_q8, int32_t ends[4])
 {
     const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
     const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
@@ -41,7 +40,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
     const int32_t aax = adx < 0 ? -adx : adx, aay = ady < 0 ? -ady : ady;
     const int32_t abx = bdx < 0 ? -bdx : bdx, aby = bdy < 0 ? -bdy : bdy;
     const int32_t al = aax > aay ? aax : aay, bl = abx > aby ? abx : aby;
-    const int a_longer = al >= bl;
+    const bool a_longer = al >= bl;
     const int32_t dx = a_longer ? adx : bdx;
     const int32_t dy = a_longer ? ady : bdy;
     int64_t lo = 0, hi = 0;
@@ -54,7 +53,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
         uint64_t t;
         end_of(a, b, i, &x, &y);
         if (sl_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
-            return 0;
+            return false;
         }
         end_of(a, b, (i ^ 2u) & 2u, &ox, &oy);
         t = dist2(x, y, ox, oy);
@@ -64,7 +63,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
         g = t < g ? t : g;
     }
     if (g > gap2) {
-        return 0;
+        return false;
     }
     /* New ends: the extreme end points along the longer piece. */
     for (i = 0; i < 4u; i++) {
@@ -83,7 +82,7 @@ SL_NOINLINE static int mergeable(const symline_segment *a, const symline_segment
             ends[3] = y;
         }
     }
-    return 1;
+    return true;
 }
 
 /* The joined piece's max_dev, or SL_JOINED_IS_CURVE when it would be a curve. Kept
@@ -118,7 +117,7 @@ static void copy_segment(symline_segment *d, const symline_segment *s)
     d->kind = s->kind;
     d->axis = s->axis;
     d->level = s->level;
-    d->reserved = s->reserved;
+    d->merged = s->merged;
 }
 
 /* Moves segment j's points right behind segment i's (i < j, ranges ordered), removes j. */
@@ -146,9 +145,9 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
 {
     const uint64_t gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
     uint32_t i, j;
-    int changed = 1;
+    bool changed = true;
     while (changed) {
-        changed = 0;
+        changed = false;
         for (i = 0; i < r->segment_count; i++) {
             if (r->segments[i].kind != SYMLINE_KIND_LINE) {
                 continue;
@@ -158,12 +157,12 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 uint32_t dev;
                 symline_segment *a = &r->segments[i];
                 const symline_segment *b = &r->segments[j];
-                const uint32_t lv = a->level > b->level ? a->level : b->level;
-                const uint32_t thr = curve_dev_q8 + sl_block_half_q8(lv);
+                const uint32_t level = a->level > b->level ? a->level : b->level;
+                const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
                 if (b->kind != SYMLINE_KIND_LINE) {
                     continue;
                 }
-                if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(lv), ends)) {
+                if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(level), ends)) {
                     continue;
                 }
                 dev = joined_dev(a, b, r->points, ends, thr);
@@ -172,10 +171,10 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 }
                 set_ends(a, ends[0], ends[1], ends[2], ends[3]);
                 a->max_dev = dev;
-                a->level = (uint8_t)lv;
-                a->reserved = 1u; /* merged: points piece after piece (curvejoin.c) */
+                a->level = (uint8_t)level;
+                a->merged = true; /* points piece after piece (curvejoin.c) */
                 absorb(r, i, j);
-                changed = 1;
+                changed = true;
                 j = i; /* the grown segment may now reach pieces it missed */
             }
         }

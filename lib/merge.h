@@ -11,8 +11,8 @@
  * Merges collinear line segments of r: ends at most gap_px apart, each end
  * within dev_q8 of the other's line, the joined piece no curve by
  * curve_dev_q8 (both thresholds plus half a block of the coarser scale).
- * The joined piece's points are kept contiguous by rotation; a merged
- * segment gets reserved = 1 until sl_curve_join().
+ * The joined piece's points are kept contiguous by rotation (piece after
+ * piece); a merged segment gets merged = true.
  */
 void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8);
 

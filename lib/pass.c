@@ -11,6 +11,7 @@
 
 #include "fixed.h"
 #include "segments.h"
+#include "subpixel.h"
 #include "tracer.h"
 
 /* A point lies on an earlier segment within 2 px, plus the block size of its scale. */
@@ -33,25 +34,23 @@ void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uin
     sl_linefilter_setup(&p->filter, cfg);
 }
 
-
-static int covered(const sl_run *d, const symline_point *q, uint32_t level)
+static bool covered(const sl_run *d, const symline_point *q, uint32_t level)
 {
     const int32_t x = sl_q8(q->x, level), y = sl_q8(q->y, level);
     const int32_t tol = (int32_t)(SL_COVER_TOL_Q8 + sl_block_q8(level));
     uint32_t i;
     for (i = 0; i < d->prev_seg; i++) {
         if (sl_near_segment(&d->r->segments[i], d->r->points, x, y, tol)) {
-            return 1;
+            return true;
         }
     }
-    return 0;
+    return false;
 }
 
 /* One piece of a chain (grid coordinates, absolute storage index `at`). */
 static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
 {
     symline_point *q = d->r->points + at;
-    const uint32_t half = (1u << p->level) >> 1;
     symline_segment *s;
     uint32_t i;
     if ((n << p->level) < d->cfg->min_length || n < 2u) {
@@ -62,10 +61,11 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
         return;
     }
     if (d->nseg >= d->r->segment_cap) {
-        d->truncated = 1u;
+        d->truncated = true;
         return;
     }
     s = &d->r->segments[d->nseg++];
+    sl_subpixel(d->img, p, q, n);
     sl_fit(q, n, p->level, d->cfg->curve_dev_q8, s);
     /* A flat arc stays under the deviation threshold but bends: a curve too. */
     if (s->kind == SYMLINE_KIND_LINE && d->cfg->curve_bend_q8 != 0u &&
@@ -76,8 +76,7 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     s->first = at;
     s->count = n;
     for (i = 0; i < n; i++) {
-        q[i].x = (uint16_t)(((uint32_t)q[i].x << p->level) + half);
-        q[i].y = (uint16_t)(((uint32_t)q[i].y << p->level) + half);
+        sl_pt_to_full(&q[i], p->level);
     }
 }
 
@@ -115,7 +114,7 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     const uint32_t base = d->npts;
     const uint32_t first_seg = d->nseg;
     uint32_t tail = base + n, cnt, k, w;
-    uint8_t cut = 0u;
+    bool cut = false;
     /* Chains go to the storage's free tail after the raster list. */
     sl_tracer_init(t, r->points + base, n, row_start, p->h);
     while (tail < r->point_cap &&
@@ -124,7 +123,7 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
         tail += cnt;
     }
     if (cut || (tail >= r->point_cap && n > 0u)) {
-        d->truncated = 1u;
+        d->truncated = true;
     }
     /* Keep only the points the new segments use, right after the earlier ones. */
     w = base;
@@ -134,6 +133,8 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
         for (i = 0; i < s->count; i++) {
             r->points[w + i].x = r->points[s->first + i].x;
             r->points[w + i].y = r->points[s->first + i].y;
+            r->points[w + i].fx = r->points[s->first + i].fx;
+            r->points[w + i].fy = r->points[s->first + i].fy;
         }
         s->first = w;
         w += s->count;
@@ -143,27 +144,33 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 }
 
 /* The pass's raster list into the free part of the point storage (after
- * d->npts); returns its length. Apart from sl_pass_run() so that the
- * collection's call and the tracing's are never on the stack together. */
-SL_NOINLINE static uint32_t collect(sl_run *d, const sl_pass *p, uint8_t *ws,
-                                    const uint8_t *end, uint32_t *row_start)
+ * d->npts), *n points. Apart from sl_pass_run() so that the collection's
+ * call and the tracing's are never on the stack together. */
+SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
+                                          const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
-    uint32_t n = 0u;
-    (void)sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
-                     d->r->point_cap - d->npts, &n, row_start, &d->truncated);
-    return n;
+    return sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
+                      d->r->point_cap - d->npts, n, row_start, &d->truncated);
 }
 
 symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end)
 {
     uint8_t *rest = ws;
     uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
-    /* The collection's rings are free again once it returns: the tracer's
-     * state takes their place. */
-    const uint32_t n = collect(d, p, rest, end, row_start);
-    sl_tracer *t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
-    if (row_start == NULL || t == NULL) {
-        return SYMLINE_ERR_BUFFER; /* not reached: the workspace size was checked */
+    uint32_t n = 0u;
+    sl_tracer *t;
+    symline_status st;
+    if (row_start == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    st = collect(d, p, rest, end, row_start, &n);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    /* The collection's rings are free again: the tracer's state takes their place. */
+    t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
+    if (t == NULL) {
+        return SYMLINE_ERR_BUFFER;
     }
     trace(d, p, row_start, n, t);
     return SYMLINE_OK;

@@ -18,11 +18,11 @@ typedef struct sl_run {
     const symline_config *cfg;
     const symline_image *img; /* the frame, for the pieces' side test */
     symline_result *r;
-    uint32_t nseg;            /* segments so far */
-    uint32_t prev_seg;        /* segments of earlier passes: [0, prev_seg) */
-    uint32_t npts;            /* points kept so far: [0, npts) */
-    sl_frame_stats stats;     /* for the adaptive thresholds (cfg->adaptive) */
-    uint8_t truncated;
+    uint32_t nseg;        /* segments so far */
+    uint32_t prev_seg;    /* segments of earlier passes: [0, prev_seg) */
+    uint32_t npts;        /* points kept so far: [0, npts) */
+    sl_frame_stats stats; /* for the adaptive thresholds (cfg->adaptive) */
+    bool truncated;
 } sl_run;
 
 /* Fills a pass from the configuration (no range checks; the adaptive
@@ -45,7 +45,8 @@ static inline size_t sl_pass_ws_size(const sl_pass *p, uint32_t width)
  * Runs pass p over d->img: appends its segments to d->r and their points
  * after the first d->npts, and updates d. [ws, end): the pass workspace
  * after p itself (which the caller carved first). Returns SYMLINE_OK, or
- * SYMLINE_ERR_BUFFER when the workspace is smaller than sl_pass_ws_size().
+ * SYMLINE_ERR_BUFFER when the workspace is smaller than sl_pass_ws_size()
+ * (then d is unchanged but for d->truncated).
  */
 symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end);
 

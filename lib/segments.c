@@ -25,7 +25,7 @@ static void turn_at(const symline_point *p, uint32_t i, int64_t *num, int64_t *d
     *den = ((int64_t)ax * ax + (int64_t)ay * ay) * ((int64_t)bx * bx + (int64_t)by * by);
 }
 
-static int is_corner(int64_t num, int64_t den)
+static bool is_corner(int64_t num, int64_t den)
 {
     return num * SL_COS2_DEN < (int64_t)SL_COS2_NUM * den;
 }
@@ -76,7 +76,6 @@ uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t
     return sl_div_q8(cross, len);
 }
 
-
 uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
                     int32_t x1, int32_t y1)
 {
@@ -86,8 +85,8 @@ uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t 
     uint32_t i;
     /* The largest cross product first, one square root and one division at the end. */
     for (i = 0; i < n; i++) {
-        const int64_t wx = (int64_t)sl_q8(p[i].x, level) - x0;
-        const int64_t wy = (int64_t)sl_q8(p[i].y, level) - y0;
+        const int64_t wx = (int64_t)sl_pt_q8x(&p[i], level) - x0;
+        const int64_t wy = (int64_t)sl_pt_q8y(&p[i], level) - y0;
         const int64_t c = len == 0u ? wx * wx + wy * wy : wx * dy - wy * dx;
         const uint64_t a = (uint64_t)(c < 0 ? -c : c);
         best = a > best ? a : best;
@@ -101,8 +100,7 @@ uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t 
 /* A curve bends away from its chord by more than the threshold and by more
  * than 1/32 of the chord: a straight line's pixel steps and noise stay near
  * 1-2 px however long it is, while an arc's sagitta grows with its chord. */
-int sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
-                       uint32_t thr)
+bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr)
 {
     const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
     const uint64_t chord = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
@@ -124,29 +122,29 @@ static void shrink(int64_t *a, int64_t *b, unsigned bits)
  * in integers: the ends become the first and last point projected onto it,
  * which gives sub-pixel ends and removes the one-pixel jitter of traced
  * points. Long chains are sampled (at most 2048 points) so that every sum and
- * every division stays in 32 bits; only products use 64 bits. Returns 0 when
+ * every division stays in 32 bits; only products use 64 bits. Returns false when
  * the scatter has no direction (all points equal).
  */
 #define SL_FIT_SAMPLES 2048u
-SL_NOINLINE static int ls_ends(const symline_point *p, uint32_t n, uint32_t level,
-                               symline_segment *s)
+SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
+                                symline_segment *s)
 {
     /* Coordinates in Q4 full resolution, relative to the first point. */
-    const int32_t ox = sl_q8(p[0].x, level), oy = sl_q8(p[0].y, level);
+    const int32_t ox = sl_pt_q8x(&p[0], level), oy = sl_pt_q8y(&p[0], level);
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
     int32_t sx = 0, sy = 0, mx, my, ux, uy;
     int64_t a = 0, b = 0, c = 0, r, lam, vx, vy, len;
     uint32_t i, cnt = 0u;
     for (i = 0; i < n; i += step) {
-        sx += (sl_q8(p[i].x, level) - ox) / 16;
-        sy += (sl_q8(p[i].y, level) - oy) / 16;
+        sx += (sl_pt_q8x(&p[i], level) - ox) / 16;
+        sy += (sl_pt_q8y(&p[i], level) - oy) / 16;
         cnt++;
     }
     mx = sx / (int32_t)cnt;
     my = sy / (int32_t)cnt;
     for (i = 0; i < n; i += step) {
-        const int64_t dx = (sl_q8(p[i].x, level) - ox) / 16 - mx;
-        const int64_t dy = (sl_q8(p[i].y, level) - oy) / 16 - my;
+        const int64_t dx = (sl_pt_q8x(&p[i], level) - ox) / 16 - mx;
+        const int64_t dy = (sl_pt_q8y(&p[i], level) - oy) / 16 - my;
         a += dx * dx;
         b += dx * dy;
         c += dy * dy;
@@ -164,15 +162,15 @@ SL_NOINLINE static int ls_ends(const symline_point *p, uint32_t n, uint32_t leve
     shrink(&vx, &vy, 15);
     len = (int64_t)sl_isqrt64((uint64_t)(vx * vx + vy * vy));
     if (len == 0) {
-        return 0;
+        return false;
     }
     /* Unit direction in Q15 (32-bit divisions). */
     ux = (int32_t)(vx * 32768) / (int32_t)len;
     uy = (int32_t)(vy * 32768) / (int32_t)len;
     for (i = 0; i < 2u; i++) {
         const symline_point *q = &p[i == 0u ? 0u : n - 1u];
-        const int64_t qx = (sl_q8(q->x, level) - ox) / 16 - mx;
-        const int64_t qy = (sl_q8(q->y, level) - oy) / 16 - my;
+        const int64_t qx = (sl_pt_q8x(q, level) - ox) / 16 - mx;
+        const int64_t qy = (sl_pt_q8y(q, level) - oy) / 16 - my;
         const int64_t t = qx * ux + qy * uy; /* Q4 * Q15 */
         /* Back to Q8 absolute: mean + t*u, Q4*Q15*Q15 -> Q8 is a shift by 26. */
         const int32_t ex = ox + mx * 16 + (int32_t)((t * ux) >> 26);
@@ -185,7 +183,7 @@ SL_NOINLINE static int ls_ends(const symline_point *p, uint32_t n, uint32_t leve
             s->y1 = ey;
         }
     }
-    return 1;
+    return true;
 }
 
 /*
@@ -222,8 +220,8 @@ uint32_t sl_bend_q8(const symline_point *p, uint32_t n)
         return 0u;
     }
     /* Means in Q8 grid pixels: sum * 256 / (count * len). */
-    am = sl_div_q8((uint64_t)(sm < 0 ? -sm : sm) << 8, (uint64_t)nm * len);
-    ao = sl_div_q8((uint64_t)(so < 0 ? -so : so) << 8, (uint64_t)no * len);
+    am = sl_div_q8((uint64_t)(sm < 0 ? -sm : sm) << SL_Q8_SHIFT, (uint64_t)nm * len);
+    ao = sl_div_q8((uint64_t)(so < 0 ? -so : so) << SL_Q8_SHIFT, (uint64_t)no * len);
     mm = sm < 0 ? -(int32_t)(am >> 1) : (int32_t)(am >> 1);
     mo = so < 0 ? -(int32_t)(ao >> 1) : (int32_t)(ao >> 1);
     d = mm - mo; /* in Q7 to keep the difference in range */
@@ -234,38 +232,38 @@ uint32_t sl_bend_q8(const symline_point *p, uint32_t n)
 /* The chord of p[0..n-1]'s first and last point as s's ends. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
-    s->x0 = sl_q8(p[0].x, level);
-    s->y0 = sl_q8(p[0].y, level);
-    s->x1 = sl_q8(p[n - 1u].x, level);
-    s->y1 = sl_q8(p[n - 1u].y, level);
+    s->x0 = sl_pt_q8x(&p[0], level);
+    s->y0 = sl_pt_q8y(&p[0], level);
+    s->x1 = sl_pt_q8x(&p[n - 1u], level);
+    s->y1 = sl_pt_q8y(&p[n - 1u], level);
 }
 
 void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
             symline_segment *s)
 {
     const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
+    bool curve;
     chord_ends(p, n, level, s);
     s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
-    s->kind = (uint8_t)(sl_is_curve(s->x0, s->y0, s->x1, s->y1, s->max_dev, thr)
-                            ? SYMLINE_KIND_CURVE
-                            : SYMLINE_KIND_LINE);
+    curve = sl_is_curve(s->x0, s->y0, s->x1, s->y1, s->max_dev, thr);
+    s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
         s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
     }
     s->level = (uint8_t)level;
-    s->reserved = 0u;
+    s->merged = false;
 }
 
-/* 1 when (px, py) lies within tol of the segment a-b (all Q8). */
-static inline int near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px, int32_t py,
-                             int32_t tol)
+/* True when (px, py) lies within tol of the segment a-b (all Q8). */
+static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px,
+                              int32_t py, int32_t tol)
 {
     /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
     int32_t dx, dy, wx, wy, t2;
     int64_t t, dd, c;
     if ((px < ax - tol && px < bx - tol) || (px > ax + tol && px > bx + tol) ||
         (py < ay - tol && py < by - tol) || (py > ay + tol && py > by + tol)) {
-        return 0;
+        return false;
     }
     dx = bx - ax;
     dy = by - ay;
@@ -284,8 +282,8 @@ static inline int near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int
      * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
      * no square root and no division, so this stays cheap and shallow. */
     t2 = tol;
-    while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 || wx > 32767 ||
-           wx < -32767 || wy > 32767 || wy < -32767 || t2 > 32767) {
+    while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 || wx > 32767 || wx < -32767 ||
+           wy > 32767 || wy < -32767 || t2 > 32767) {
         dx /= 2;
         dy /= 2;
         wx /= 2;
@@ -300,23 +298,24 @@ static inline int near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int
 /* Curves are followed through every SL_POLY_STEP-th point. */
 #define SL_POLY_STEP 4u
 
-int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
-                    int32_t tol_q8)
+bool sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
+                     int32_t tol_q8)
 {
     uint32_t i;
     const symline_point *p = pts + s->first;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
         return near_chord(s->x0, s->y0, s->x1, s->y1, x, y, tol_q8);
     }
+    /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
         if (near_chord((int32_t)p[i].x << SL_Q8_SHIFT, (int32_t)p[i].y << SL_Q8_SHIFT,
                        (int32_t)p[j].x << SL_Q8_SHIFT, (int32_t)p[j].y << SL_Q8_SHIFT, x, y,
                        tol_q8)) {
-            return 1;
+            return true;
         }
     }
-    return 0;
+    return false;
 }
 
 void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,

@@ -37,11 +37,11 @@ uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t 
                     int32_t x1, int32_t y1);
 
 /* Curve test: max_dev above thr and above 1/32 of the chord. */
-int sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr);
+bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr);
 
-/* 1 when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
+/* True when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
  * (its chord for lines, its points for curves). */
-int sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
-                    int32_t tol_q8);
+bool sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
+                     int32_t tol_q8);
 
 #endif /* SYMLINE_LIB_SEGMENTS_H */

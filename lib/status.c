@@ -15,7 +15,6 @@ const char *symline_status_str(symline_status st)
     case SYMLINE_ERR_BUFFER: return "buffer or workspace too small";
     case SYMLINE_ERR_RANGE: return "index or value out of range";
     case SYMLINE_ERR_CONFIG: return "configuration value out of range";
-    case SYMLINE_ERR_OVERFLOW: return "size does not fit this target";
     }
     return "unknown status";
 }

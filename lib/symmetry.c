@@ -37,8 +37,7 @@ static uint32_t border_energy(uint32_t m, uint32_t k)
 }
 
 /* E[x] += w * (a[x] - b[x])^2 over a row; the vectorised hot loop. */
-static void add_pair(const uint8_t *a, const uint8_t *b, uint32_t w, uint32_t count,
-                     uint32_t *E)
+static void add_pair(const uint8_t *a, const uint8_t *b, uint32_t w, uint32_t count, uint32_t *E)
 {
     uint32_t x;
     for (x = 0; x < count; x++) {

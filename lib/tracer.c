@@ -77,7 +77,7 @@ uint32_t sl_neighbours(const sl_tracer *t, uint32_t x, uint32_t y)
     return c;
 }
 
-static int unvisited(const sl_tracer *t, int32_t idx)
+static bool unvisited(const sl_tracer *t, int32_t idx)
 {
     return idx >= 0 && t->pts[idx].y != SL_VISITED;
 }
@@ -103,13 +103,13 @@ static int32_t any_unvisited(const sl_tracer *t, int32_t x, int32_t y, uint32_t 
 
 /* Follows the line from (x, y), last step direction dir; appends to dst from *pos. */
 static void follow(sl_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_point *dst,
-                   uint32_t cap, uint32_t *pos, uint8_t *cut)
+                   uint32_t cap, uint32_t *pos, bool *cut)
 {
     for (;;) {
         uint32_t o;
-        int found = 0;
+        bool found = false;
         if (*pos >= cap) {
-            *cut = 1u;
+            *cut = true;
             return;
         }
         for (o = 0; o < 5u; o++) {
@@ -124,7 +124,7 @@ static void follow(sl_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_poi
                 x = nx;
                 y = ny;
                 dir = d;
-                found = 1;
+                found = true;
                 break;
             }
         }
@@ -140,19 +140,24 @@ void sl_reverse_points(symline_point *p, uint32_t n)
     /* Field by field: a struct swap may become a libc memcpy call. */
     for (i = 0; i < n / 2u; i++) {
         const uint16_t x = p[i].x, y = p[i].y;
+        const int8_t fx = p[i].fx, fy = p[i].fy;
         p[i].x = p[n - 1u - i].x;
         p[i].y = p[n - 1u - i].y;
+        p[i].fx = p[n - 1u - i].fx;
+        p[i].fy = p[n - 1u - i].fy;
         p[n - 1u - i].x = x;
         p[n - 1u - i].y = y;
+        p[n - 1u - i].fx = fx;
+        p[n - 1u - i].fy = fy;
     }
 }
 
 /* Takes the first step to neighbour idx (direction dir) and follows from there. */
 static void step_and_follow(sl_tracer *t, int32_t x, int32_t y, int32_t idx, uint32_t dir,
-                            symline_point *dst, uint32_t cap, uint32_t *pos, uint8_t *cut)
+                            symline_point *dst, uint32_t cap, uint32_t *pos, bool *cut)
 {
     if (*pos >= cap) {
-        *cut = 1u;
+        *cut = true;
         return;
     }
     visit(t, idx);
@@ -162,12 +167,12 @@ static void step_and_follow(sl_tracer *t, int32_t x, int32_t y, int32_t idx, uin
     follow(t, x + DX[dir], y + DY[dir], dir, dst, cap, pos, cut);
 }
 
-int sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count, uint8_t *cut)
+bool sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count, bool *cut)
 {
     *count = 0u;
     if (cap == 0u) {
-        *cut = 1u;
-        return 0;
+        *cut = true;
+        return false;
     }
     while (t->phase < 2u) {
         while (t->scan < t->n) {
@@ -207,10 +212,10 @@ int sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *cou
                 }
             }
             *count = pos;
-            return 1;
+            return true;
         }
         t->phase++;
         t->scan = 0u;
     }
-    return 0;
+    return false;
 }

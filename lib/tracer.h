@@ -32,10 +32,9 @@ void sl_reverse_points(symline_point *p, uint32_t n);
 
 /*
  * Next chain, written to dst[0 .. *count-1] in tracing order (grid
- * coordinates). Returns 1 for a chain, 0 when none is left. A chain longer
+ * coordinates). Returns true for a chain, false when none is left. A chain longer
  * than cap is cut at cap points and *cut is set.
  */
-int sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count,
-                   uint8_t *cut);
+bool sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count, bool *cut);
 
 #endif /* SYMLINE_LIB_TRACER_H */

@@ -27,7 +27,8 @@
  *  4. chains are cut at sharp corners, parts already found by an earlier pass
  *     (other axis, finer scale) are removed, pieces are fitted, classified as
  *     line or curve by their largest distance to the chord, short ones dropped;
- *  5. collinear line pieces interrupted by occluders are merged.
+ *  5. collinear line pieces interrupted by occluders are merged (`merged`);
+ *  6. a line piece that continues a curve smoothly becomes part of it.
  *
  * Coordinates: image pixels, x right, y down, integers at pixel centres.
  * "Q8" values are fixed point with 8 fraction bits (256 = 1 px).
@@ -35,11 +36,22 @@
 #ifndef SYMLINE_DETECT_H
 #define SYMLINE_DETECT_H
 
+#include <stdbool.h>
+
 #include "symline/types.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* Largest detector radius (config.radius), pixels. */
+#define SYMLINE_DETECT_MAX_RADIUS 32u
+/* Largest number of scales (config.levels). */
+#define SYMLINE_DETECT_MAX_LEVELS 5u
+/* Largest A point distance of the paper filter (config.a_distance), pixels. */
+#define SYMLINE_DETECT_MAX_A_DISTANCE 32u
+/* config.merge_gap: the gap follows the frame, width / 8 px. */
+#define SYMLINE_MERGE_GAP_AUTO 0xFFFFFFFFu
 
 /* Which axes a detection runs. */
 typedef enum symline_axes {
@@ -73,12 +85,16 @@ typedef enum symline_kind {
  * Detector settings. Always start from symline_config_default(); the ranges
  * are checked by symline_detect() (SYMLINE_ERR_CONFIG when violated).
  */
+/* (The field comments are laid out by hand.) */
+/* clang-format off */
 typedef struct symline_config {
     symline_axes axes;     /* default SYMLINE_AXES_BOTH */
-    uint32_t radius;       /* symmetry radius m, 1..32; default 3 */
+    uint32_t radius;       /* symmetry radius m, 1..SYMLINE_DETECT_MAX_RADIUS (32);
+                              default 3 */
     uint32_t levels;       /* scales: 1 = full resolution only, L = also 2x, 4x ..
                               2^(L-1)x box-downsampled; 0 = auto (enough scales
-                              for lines width/16 px wide); 0..5, default 0 */
+                              for lines width/16 px wide);
+                              0..SYMLINE_DETECT_MAX_LEVELS (5), default 0 */
     symline_filter filter; /* default SYMLINE_FILTER_CONTRAST */
     uint32_t illumination; /* minimum gray value of a line point, 0..255
                               (0 disables); default 0, the paper used 100 */
@@ -97,7 +113,8 @@ typedef struct symline_config {
                               sigma (a line lies on the darker carpet, not on a
                               bright wall), -100..100; 100 = off; default 15 */
     uint32_t a_distance;   /* paper filter: largest distance (px, at the pass's
-                              scale) of the A point across the line, 1..32;
+                              scale) of the A point across the line,
+                              1..SYMLINE_DETECT_MAX_A_DISTANCE (32);
                               default 0 = the radius */
     uint32_t contrast_pct; /* contrast filter: relative ridge height, % of the
                               centre gray value, 0..100; default 0 */
@@ -118,19 +135,30 @@ typedef struct symline_config {
                               two finest scales; a line continuing a curve is
                               a curve too; 0 disables both; default 80 (0.31 px) */
     uint32_t merge_gap;    /* merge collinear lines whose ends are at most this
-                              far apart, px; 0 disables; default 0xFFFFFFFF =
-                              width / 8 */
+                              far apart, px; 0 disables; default
+                              SYMLINE_MERGE_GAP_AUTO = width / 8 */
     uint32_t merge_dev_q8; /* ... and whose ends lie within this distance of the
                               other's line, Q8 px; default 640 (2.5 px) */
 } symline_config;
+/* clang-format on */
 
 /* Fills *cfg with the defaults documented above (no-op on NULL). */
 void symline_config_default(symline_config *cfg);
 
-/* One traced point, in full-resolution pixels. */
+/*
+ * One traced point, in full-resolution pixels: the pixel (x, y) nearest to the
+ * point and the point's sub-pixel offset from that pixel's centre in 1/128 px,
+ * -64..63 (fx, fy): the point lies at (x + fx/128, y + fy/128). The offset is
+ * taken across the line (the ridge's middle, from the symmetry energies around
+ * the S point), so fy is 0 for points found along rows (vertical axis) and fx
+ * for points found along columns, except at coarse scales, whose grid points
+ * map to block centres between full-resolution pixels.
+ */
 typedef struct symline_point {
     uint16_t x;
     uint16_t y;
+    int8_t fx;
+    int8_t fy;
 } symline_point;
 
 /* One detected segment. */
@@ -142,7 +170,8 @@ typedef struct symline_segment {
     uint8_t kind;           /* symline_kind */
     uint8_t axis;           /* symline_axis of the pass that found it */
     uint8_t level;          /* scale: 0 full resolution, l = 2^l x downsampled */
-    uint8_t reserved;
+    bool merged;            /* joined from collinear pieces by the merge (a line
+                               whose points run piece after piece) */
 } symline_segment;
 
 /*
@@ -162,7 +191,7 @@ typedef struct symline_result {
     symline_point *points;
     uint32_t point_cap;
     uint32_t point_count; /* points referenced by the segments, [0, point_count) */
-    uint8_t truncated;    /* 1 when segments or points did not fit */
+    bool truncated;       /* true when segments or points did not fit */
 } symline_result;
 
 /*

@@ -68,9 +68,8 @@ symline_status symline_colrun_init(symline_colrun *cr, uint32_t width, void *buf
  * suffice; events_cap < width is ERR_BUFFER) in increasing x. Runs still open
  * when the last row has been pushed touch the last row and are never marked.
  */
-symline_status symline_colrun_push(symline_colrun *cr, const uint32_t *E,
-                                   symline_extremum *events, uint32_t events_cap,
-                                   uint32_t *count);
+symline_status symline_colrun_push(symline_colrun *cr, const uint32_t *E, symline_extremum *events,
+                                   uint32_t events_cap, uint32_t *count);
 
 /*
  * Bytes of workspace symline_extrema() needs, or 0 when the arguments are

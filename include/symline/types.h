@@ -10,6 +10,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "symline/version.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -20,9 +22,9 @@ extern "C" {
 #define SYMLINE_MAX_RADIUS 255u
 
 /* Values of an extrema map (in memory and in PGM files written by the tools). */
-#define SYMLINE_MAP_NONE 0u   /* neither extremum */
-#define SYMLINE_MAP_A 128u    /* symmetry minimum: an asymmetry ("A") point */
-#define SYMLINE_MAP_S 255u    /* symmetry maximum: a symmetry axis ("S") point */
+#define SYMLINE_MAP_NONE 0u /* neither extremum */
+#define SYMLINE_MAP_A 128u  /* symmetry minimum: an asymmetry ("A") point */
+#define SYMLINE_MAP_S 255u  /* symmetry maximum: a symmetry axis ("S") point */
 
 /*
  * Status codes. Every entry point returns one; SYMLINE_OK is 0 and every
@@ -31,15 +33,14 @@ extern "C" {
  */
 typedef enum symline_status {
     SYMLINE_OK = 0,
-    SYMLINE_ERR_NULL = -1,          /* a required pointer is NULL */
-    SYMLINE_ERR_SIZE = -2,          /* width or height is 0 or above SYMLINE_MAX_DIM */
-    SYMLINE_ERR_STRIDE = -3,        /* a stride is smaller than the row length */
-    SYMLINE_ERR_RADIUS = -4,        /* radius is 0 or above SYMLINE_MAX_RADIUS */
-    SYMLINE_ERR_AXIS = -5,          /* axis is not one of enum symline_axis */
-    SYMLINE_ERR_BUFFER = -6,        /* an output buffer or workspace is too small */
-    SYMLINE_ERR_RANGE = -7,         /* a row/strip index or count is out of range */
-    SYMLINE_ERR_CONFIG = -8,        /* a configuration field is out of its range */
-    SYMLINE_ERR_OVERFLOW = -9       /* a size does not fit size_t on this target */
+    SYMLINE_ERR_NULL = -1,   /* a required pointer is NULL */
+    SYMLINE_ERR_SIZE = -2,   /* width or height is 0 or above SYMLINE_MAX_DIM */
+    SYMLINE_ERR_STRIDE = -3, /* a stride is smaller than the row length */
+    SYMLINE_ERR_RADIUS = -4, /* radius is 0 or above SYMLINE_MAX_RADIUS */
+    SYMLINE_ERR_AXIS = -5,   /* axis is not one of enum symline_axis */
+    SYMLINE_ERR_BUFFER = -6, /* an output buffer or workspace is too small */
+    SYMLINE_ERR_RANGE = -7,  /* a row/strip index or count is out of range */
+    SYMLINE_ERR_CONFIG = -8  /* a configuration field is out of its range */
 } symline_status;
 
 /* A short, static English name for a status code (never NULL). */

@@ -3,16 +3,20 @@
 
 #include <stdio.h>
 
-/* FNV-1a over the coordinates of a segment's points: one line per segment
+/* FNV-1a over the coordinates (and sub-pixel offsets) of a segment's points: one line per segment
  * instead of thousands of points, still sensitive to every coordinate. */
 static uint32_t points_hash(const symline_point *p, uint32_t n)
 {
     uint32_t h = 2166136261u, i;
     for (i = 0; i < n; i++) {
         const uint32_t v = ((uint32_t)p[i].x << 16) | p[i].y;
+        const uint32_t f = ((uint32_t)(uint8_t)p[i].fx << 8) | (uint8_t)p[i].fy;
         uint32_t b;
         for (b = 0; b < 32u; b += 8u) {
             h = (h ^ ((v >> b) & 0xFFu)) * 16777619u;
+        }
+        for (b = 0; b < 16u; b += 8u) {
+            h = (h ^ ((f >> b) & 0xFFu)) * 16777619u;
         }
     }
     return h;

@@ -7,6 +7,7 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <string.h>
 
 #include <cmocka.h>
@@ -165,12 +166,22 @@ static void test_status_strings(void **state)
 {
     int s;
     (void)state;
-    for (s = SYMLINE_ERR_OVERFLOW; s <= SYMLINE_OK; s++) {
+    for (s = SYMLINE_ERR_CONFIG; s <= SYMLINE_OK; s++) {
         const char *t = symline_status_str((symline_status)s);
         assert_non_null(t);
         assert_string_not_equal(t, "unknown status");
     }
     assert_string_equal(symline_status_str((symline_status)42), "unknown status");
+}
+
+/* The version string spells the three numbers. */
+static void test_version(void **state)
+{
+    char spelled[32];
+    (void)state;
+    snprintf(spelled, sizeof spelled, "%d.%d.%d", SYMLINE_VERSION_MAJOR, SYMLINE_VERSION_MINOR,
+             SYMLINE_VERSION_PATCH);
+    assert_string_equal(spelled, SYMLINE_VERSION_STRING);
 }
 
 /* Largest accepted sizes: 65535 wide (one row) and 65535 high (one column). */
@@ -235,6 +246,7 @@ int main(void)
         cmocka_unit_test(test_workspace_queries),
         cmocka_unit_test(test_row_primitives_errors),
         cmocka_unit_test(test_status_strings),
+        cmocka_unit_test(test_version),
         cmocka_unit_test(test_extreme_sizes),
         cmocka_unit_test(test_symmetry_in_place_vertical),
     };

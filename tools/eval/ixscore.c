@@ -57,7 +57,7 @@ static int32_t q8(double v)
 }
 
 /* Appends the pieces of p as segments of r (lines by their ends, curves through
- * their points rounded to pixels). */
+ * their points, pixel and sub-pixel offset). */
 static void add_pieces(const ev_paths *p, symline_result *r)
 {
     size_t i, k;
@@ -76,8 +76,11 @@ static void add_pieces(const ev_paths *p, symline_result *r)
             s->first = r->point_count;
             for (k = 0; k < n; k++) {
                 symline_point *pt = &r->points[r->point_count++];
-                pt->x = (uint16_t)lround(q[k].x < 0 ? 0 : q[k].x);
-                pt->y = (uint16_t)lround(q[k].y < 0 ? 0 : q[k].y);
+                const double x = q[k].x < 0 ? 0 : q[k].x, y = q[k].y < 0 ? 0 : q[k].y;
+                pt->x = (uint16_t)lround(x);
+                pt->y = (uint16_t)lround(y);
+                pt->fx = (int8_t)fmax(-64.0, fmin(63.0, lround((x - pt->x) * 128.0)));
+                pt->fy = (int8_t)fmax(-64.0, fmin(63.0, lround((y - pt->y) * 128.0)));
             }
             s->count = (uint32_t)n;
         }

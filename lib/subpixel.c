@@ -1,0 +1,173 @@
+/*
+ * Sub-pixel position of line points across the line: see subpixel.h.
+ *
+ * Only the points of reported pieces are refined, each from the gray values
+ * of its grid around it across the line (E at the point and its two
+ * neighbours, recomputed from the frame: the pass keeps no energies, and no
+ * buffer keeps the stack short), so the cost follows the number of points, not
+ * the frame size. Integer only: E values, then one 32-bit division.
+ */
+#include "subpixel.h"
+
+/* 255^2: the squared difference counted for a pair that leaves the grid (SPEC 2). */
+#define SL_SUB_DMAX2 65025u
+
+/* Gray value of the grid pixel whose block starts at src: the rounded box mean
+ * of 2^level x 2^level frame pixels that sl_grid_row() gives. */
+static uint32_t grid_px(const uint8_t *src, size_t stride, uint32_t level)
+{
+    const uint32_t s = 1u << level;
+    uint32_t sum = 0u, i, j;
+    if (level == 0u) {
+        return *src;
+    }
+    if (level == 1u) { /* the most common coarse scale, unrolled */
+        return ((uint32_t)src[0] + src[1] + src[stride] + src[stride + 1u] + 2u) >> 2;
+    }
+    for (j = 0; j < s; j++, src += stride) {
+        for (i = 0; i < s; i++) {
+            sum += src[i];
+        }
+    }
+    return (sum + (1u << (2u * level - 1u))) >> (2u * level);
+}
+
+/* Where the energies of one point are taken: the block of grid pixel i across
+ * the line, the step to the next grid pixel across, n grid pixels across. */
+typedef struct sl_across {
+    const uint8_t *at; /* block of index i */
+    size_t step;       /* bytes from one grid pixel to the next across the line */
+    size_t stride;     /* frame stride */
+    uint32_t level, i, n, m;
+    uint32_t lag; /* a marked run ends at most lag past its marked index */
+} sl_across;
+
+/* Gray value at index i + k across the line (inside the grid). */
+static uint32_t gray_at(const sl_across *a, int32_t k)
+{
+    return grid_px(a->at + (ptrdiff_t)k * (ptrdiff_t)a->step, a->stride, a->level);
+}
+
+/* 1 when index i + k is inside the grid. */
+static int inside(const sl_across *a, int32_t k)
+{
+    return (int32_t)a->i + k >= 0 && (int32_t)a->i + k < (int32_t)a->n;
+}
+
+/* E at index i + k alone (the rare walk along a run of equal E). */
+static uint32_t energy_at(const sl_across *a, int32_t k)
+{
+    uint32_t e = 0u, j;
+    for (j = 1u; j <= a->m; j++) {
+        const int32_t sj = (int32_t)j;
+        uint32_t d2 = SL_SUB_DMAX2;
+        if (inside(a, k - sj) && inside(a, k + sj)) {
+            const int32_t d = (int32_t)gray_at(a, k - sj) - (int32_t)gray_at(a, k + sj);
+            d2 = (uint32_t)(d * d);
+        }
+        e += (a->m + 1u - j) * d2;
+    }
+    return e;
+}
+
+/* E (SPEC section 2) at i-1, i and i+1. Inside the grid (the common case) in
+ * one sweep out from i that reads each gray value once (2m+3 of them, no
+ * buffer): l0, l1, l2 hold the values at i-(j-1), i-j, i-(j+1), r0, r1, r2
+ * those at i+(j-1), i+j, i+(j+1). Near the border term by term. */
+static void energies3(const sl_across *a, uint32_t e[3])
+{
+    if (a->i < a->m + 1u || a->i + a->m + 1u >= a->n) {
+        e[0] = energy_at(a, -1);
+        e[1] = energy_at(a, 0);
+        e[2] = energy_at(a, 1);
+        return;
+    }
+    {
+        /* Pointers walk out from i: pl to i-(j+1), pr to i+(j+1). */
+        const uint8_t *pl = a->at - a->step, *pr = a->at + a->step;
+        uint32_t l0 = grid_px(a->at, a->stride, a->level), l1 = grid_px(pl, a->stride, a->level);
+        uint32_t r0 = l0, r1 = grid_px(pr, a->stride, a->level), j;
+        e[0] = e[1] = e[2] = 0u;
+        for (j = 1u; j <= a->m; j++) {
+            uint32_t l2, r2, w;
+            int32_t d0, d1, d2;
+            pl -= a->step;
+            pr += a->step;
+            l2 = grid_px(pl, a->stride, a->level);
+            r2 = grid_px(pr, a->stride, a->level);
+            w = a->m + 1u - j;
+            d0 = (int32_t)l2 - (int32_t)r0; /* centre i-1: i-1-j, i-1+j */
+            d1 = (int32_t)l1 - (int32_t)r1; /* centre i:   i-j,   i+j */
+            d2 = (int32_t)l0 - (int32_t)r2; /* centre i+1: i+1-j, i+1+j */
+            e[0] += w * (uint32_t)(d0 * d0);
+            e[1] += w * (uint32_t)(d1 * d1);
+            e[2] += w * (uint32_t)(d2 * d2);
+            l0 = l1;
+            l1 = l2;
+            r0 = r1;
+            r1 = r2;
+        }
+    }
+}
+
+/* Offset (1/128 grid px) of the ridge's middle from index i across the line. */
+static int32_t offset_at(const sl_across *a)
+{
+    uint32_t e[3];
+    int32_t num, den;
+    if (a->i == 0u || a->i + 1u >= a->n) {
+        return 0;
+    }
+    energies3(a, e);
+    if (e[0] == e[1] || e[2] == e[1]) {
+        /* A run of equal E: its exact middle (the S point is its lower middle). */
+        const int32_t longest = 2 * (int32_t)a->lag + 1, last = (int32_t)a->n - 1 - (int32_t)a->i;
+        int32_t lo = 0, hi = 0;
+        while ((int32_t)a->i + lo > 1 && hi - lo + 1 < longest && energy_at(a, lo - 1) == e[1]) {
+            lo--;
+        }
+        while (hi + 1 < last && hi - lo + 1 < longest && energy_at(a, hi + 1) == e[1]) {
+            hi++;
+        }
+        /* i is the run's (a+b) div 2, so this is 0 or half a pixel. */
+        return lo + hi > 0 ? 64 : 0;
+    }
+    if (e[0] < e[1] || e[2] < e[1]) {
+        return 0; /* not a minimum of E (not an S point) */
+    }
+    /* Parabola vertex: (E(i-1) - E(i+1)) / (2 (E(i-1) - 2 E(i) + E(i+1))) px,
+     * |num| < den; both halved until num * 64 fits 32 bits. */
+    {
+        uint32_t de = e[0] + e[2] - 2u * e[1];
+        uint32_t dn = e[0] > e[2] ? e[0] - e[2] : e[2] - e[0];
+        while (de >= (1u << 24)) {
+            de >>= 1;
+            dn >>= 1;
+        }
+        den = (int32_t)de;
+        num = e[0] > e[2] ? (int32_t)dn : -(int32_t)dn;
+    }
+    return den > 0 ? num * 64 / den : 0;
+}
+
+void sl_subpixel(const symline_image *img, const sl_pass *p, symline_point *q, uint32_t n)
+{
+    const int vert = p->axis == SYMLINE_AXIS_VERTICAL;
+    sl_across a;
+    uint32_t k;
+    a.stride = img->stride;
+    a.step = vert ? ((size_t)1u << p->level) : (size_t)img->stride << p->level;
+    a.level = p->level;
+    a.n = vert ? p->w : p->h;
+    a.m = p->m;
+    a.lag = p->lag;
+    for (k = 0; k < n; k++) {
+        int32_t off;
+        a.i = vert ? q[k].x : q[k].y;
+        a.at =
+            img->data + ((size_t)q[k].y << p->level) * img->stride + ((size_t)q[k].x << p->level);
+        off = offset_at(&a);
+        q[k].fx = (int8_t)(vert ? off : 0);
+        q[k].fy = (int8_t)(vert ? 0 : off);
+    }
+}

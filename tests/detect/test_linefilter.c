@@ -1,0 +1,185 @@
+/*
+ * The line filter (lib/linefilter.c): thresholds from the configuration,
+ * frame statistics and the adaptive thresholds, the gray-value and A-point
+ * tests per point, and the whole-piece side test.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "linefilter.h"
+
+static void setup_from_config(void **state)
+{
+    symline_config cfg;
+    sl_linefilter f;
+    (void)state;
+    symline_config_default(&cfg);
+    sl_linefilter_setup(&f, &cfg);
+    assert_int_equal(f.kind, SYMLINE_FILTER_CONTRAST);
+    assert_int_equal(f.a_distance, 0);
+    assert_int_equal(f.min_gray, cfg.illumination);
+    assert_int_equal(f.ridge_pct, cfg.contrast_pct);
+    assert_int_equal(f.ridge_min, cfg.contrast_min);
+    assert_int_equal(f.asym_pct, cfg.contrast_asym_pct);
+    assert_int_equal(f.side_max, 255);
+    /* The paper filter searches its A point within a_distance, or the radius. */
+    cfg.filter = SYMLINE_FILTER_PAPER;
+    cfg.radius = 4;
+    sl_linefilter_setup(&f, &cfg);
+    assert_int_equal(f.a_distance, 4);
+    cfg.a_distance = 7;
+    sl_linefilter_setup(&f, &cfg);
+    assert_int_equal(f.a_distance, 7);
+}
+
+static void gray_test(void **state)
+{
+    symline_config cfg;
+    sl_linefilter f;
+    (void)state;
+    symline_config_default(&cfg);
+    sl_linefilter_setup(&f, &cfg);
+    assert_true(sl_linefilter_gray(&f, 100, 60, 60));   /* a ridge 40 high */
+    assert_false(sl_linefilter_gray(&f, 62, 60, 60));   /* 2 < contrast_min 3 */
+    assert_true(sl_linefilter_gray(&f, 63, 60, 60));    /* exactly 3 */
+    assert_false(sl_linefilter_gray(&f, 60, 60, 60));   /* no ridge */
+    assert_false(sl_linefilter_gray(&f, 100, 60, 90));  /* sides differ: needs 45 > 10 */
+    assert_true(sl_linefilter_gray(&f, 140, 60, 90));   /* 50 >= 45 */
+    f.side_max = 80u;
+    assert_false(sl_linefilter_gray(&f, 140, 60, 90));  /* a side above side_max */
+    f.side_max = 255u;
+    f.ridge_pct = 50u;
+    assert_false(sl_linefilter_gray(&f, 100, 60, 60));  /* needs 50 % of 100 */
+    f.ridge_pct = 0u;
+    f.min_gray = 120u;
+    assert_false(sl_linefilter_gray(&f, 100, 60, 60));  /* darker than min_gray */
+    /* The paper filter asks only for the gray value. */
+    cfg.filter = SYMLINE_FILTER_PAPER;
+    cfg.illumination = 100u;
+    sl_linefilter_setup(&f, &cfg);
+    assert_true(sl_linefilter_gray(&f, 100, 200, 10));
+    assert_false(sl_linefilter_gray(&f, 99, 0, 0));
+}
+
+static void a_point_near(void **state)
+{
+    sl_linefilter f;
+    uint8_t row[12];
+    uint8_t ring[4 * 3];
+    (void)state;
+    memset(&f, 0, sizeof f);
+    f.kind = SYMLINE_FILTER_PAPER;
+    f.a_distance = 2u;
+    /* Along a row: an A point at 5 and an S point at 9. */
+    memset(row, SYMLINE_MAP_NONE, sizeof row);
+    row[5] = SYMLINE_MAP_A;
+    row[9] = SYMLINE_MAP_S;
+    assert_true(sl_linefilter_a_near(&f, row, 12, 1, 12, 3));
+    assert_true(sl_linefilter_a_near(&f, row, 12, 1, 12, 7));
+    assert_false(sl_linefilter_a_near(&f, row, 12, 1, 12, 8)); /* 6..10: the S point only */
+    assert_false(sl_linefilter_a_near(&f, row, 12, 1, 12, 0));
+    assert_false(sl_linefilter_a_near(&f, row, 12, 1, 12, 11)); /* clipped at the end */
+    /* Down column 1 of a ring of 4 rows of 3: row y sits in slot y % 4. */
+    memset(ring, SYMLINE_MAP_NONE, sizeof ring);
+    ring[(6 % 4) * 3 + 1] = SYMLINE_MAP_A; /* row 6 */
+    assert_true(sl_linefilter_a_near(&f, ring + 1, 4, 3, 10, 4));
+    assert_true(sl_linefilter_a_near(&f, ring + 1, 4, 3, 10, 8));
+    assert_false(sl_linefilter_a_near(&f, ring + 1, 4, 3, 10, 9)); /* rows 7..9 */
+    assert_false(sl_linefilter_a_near(&f, ring, 4, 3, 10, 4));     /* column 0 */
+}
+
+static void statistics_and_adaptive_thresholds(void **state)
+{
+    static uint8_t px[20 * 10];
+    symline_image img;
+    sl_frame_stats st;
+    symline_config cfg;
+    sl_linefilter f;
+    (void)state;
+    /* Half 0, half 200: mean 100, sigma 100. */
+    memset(px, 0, sizeof px);
+    memset(px, 200, sizeof px / 2u);
+    img.width = 20;
+    img.height = 10;
+    img.stride = 20;
+    img.data = px;
+    sl_frame_stats_measure(&img, &st);
+    assert_int_equal(st.mean, 100);
+    assert_int_equal(st.sigma_q4, 1600);
+    symline_config_default(&cfg);
+    sl_linefilter_setup(&f, &cfg);
+    sl_linefilter_adapt(&f, &cfg, &st);
+    assert_int_equal(f.min_gray, 100);  /* mean + 0 sigma */
+    assert_int_equal(f.ridge_min, 100); /* 1.0 sigma */
+    assert_int_equal(f.side_max, 250);  /* mean + 1.5 sigma */
+    /* Configured thresholds above the adaptive ones stay; side_sigma10 100 is off. */
+    cfg.illumination = 150u;
+    cfg.contrast_min = 120u;
+    cfg.side_sigma10 = 100;
+    sl_linefilter_setup(&f, &cfg);
+    sl_linefilter_adapt(&f, &cfg, &st);
+    assert_int_equal(f.min_gray, 150);
+    assert_int_equal(f.ridge_min, 120);
+    assert_int_equal(f.side_max, 255);
+    /* Clipped to gray levels. */
+    cfg.bright_sigma10 = -100;
+    cfg.illumination = 0u;
+    cfg.side_sigma10 = 99;
+    sl_linefilter_setup(&f, &cfg);
+    sl_linefilter_adapt(&f, &cfg, &st);
+    assert_int_equal(f.min_gray, 0);
+    assert_int_equal(f.side_max, 255);
+}
+
+/* A horizontal band of gray `line` on row 20 of a 40x40 frame, `above` and
+ * `below` it; the piece: its points x = 5..30. */
+static bool band_sides_differ(uint8_t line, uint8_t above, uint8_t below)
+{
+    static uint8_t px[40 * 40];
+    symline_point q[26];
+    symline_image img;
+    symline_config cfg;
+    sl_linefilter f;
+    uint32_t i;
+    memset(px, above, 20 * 40);
+    memset(px + 20 * 40, line, 40);
+    memset(px + 21 * 40, below, 19 * 40);
+    for (i = 0; i < 26u; i++) {
+        q[i].x = (uint16_t)(5u + i);
+        q[i].y = 20;
+    }
+    img.width = 40;
+    img.height = 40;
+    img.stride = 40;
+    img.data = px;
+    symline_config_default(&cfg);
+    sl_linefilter_setup(&f, &cfg);
+    return sl_linefilter_sides_differ(&f, &img, SYMLINE_AXIS_HORIZONTAL, 0, 4, q, 26);
+}
+
+static void whole_piece_side_test(void **state)
+{
+    (void)state;
+    assert_false(band_sides_differ(200, 60, 60));  /* a line on the carpet */
+    assert_false(band_sides_differ(200, 60, 75));  /* 15 apart: 4500 <= 12500 */
+    assert_true(band_sides_differ(200, 60, 140));  /* a wall's foot: 24000 > 6000 */
+    assert_true(band_sides_differ(100, 100, 100)); /* no ridge at all */
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(setup_from_config),
+        cmocka_unit_test(gray_test),
+        cmocka_unit_test(a_point_near),
+        cmocka_unit_test(statistics_and_adaptive_thresholds),
+        cmocka_unit_test(whole_piece_side_test),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
