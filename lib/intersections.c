@@ -295,9 +295,11 @@ SL_NOINLINE static int cross(const ix_poly *a, uint32_t ka, const ix_poly *b, ix
     x.y = p0.y + q16_mul(ry, h->ta);
     h->x = x.x;
     h->y = x.y;
-    /* sin of the angle between the chords, Q8: den / (|r| |s|) */
-    lrs = (approx_len(rx, ry) * approx_len(sx, sy)) >> 8;
-    sin_q8 = (uint32_t)den / (lrs > 0u ? lrs : 1u);
+    /* sin of the angle between the chords, Q8: den / (|r| |s|), at most 1 (the
+     * lengths are approximate) */
+    lrs = approx_len(rx, ry) * approx_len(sx, sy);
+    sin_q8 = lrs > 1u ? (uint32_t)q16_div(den, (int32_t)(lrs >> 1)) >> 9 : 256u;
+    sin_q8 = sin_q8 < 256u ? sin_q8 : 256u;
     /* a crossing on a vertex between two chords of a curve counts once */
     return near_chord(a, h->ta, x, p0, p1, ka == 0u, ka + 2u == a->n, sin_q8) &&
            near_chord(b, h->tb, x, q0, q1, 1, 1, sin_q8);
@@ -480,12 +482,13 @@ SL_NOINLINE static symline_status check_args(const symline_result *r,
     }
     for (i = 0; i < r->segment_count; i++) {
         const symline_segment *s = &r->segments[i];
-        const uint32_t m = abs_of(s->x0) | abs_of(s->y0) | abs_of(s->x1) | abs_of(s->y1);
+        const uint32_t ax = abs_of(s->x0) > abs_of(s->x1) ? abs_of(s->x0) : abs_of(s->x1);
+        const uint32_t ay = abs_of(s->y0) > abs_of(s->y1) ? abs_of(s->y0) : abs_of(s->y1);
         if ((s->kind != SYMLINE_KIND_LINE && s->kind != SYMLINE_KIND_CURVE) ||
-            m > (uint32_t)IX_COORD_MAX) {
+            ax > (uint32_t)IX_COORD_MAX || ay > (uint32_t)IX_COORD_MAX) {
             return SYMLINE_ERR_RANGE;
         }
-        top |= m;
+        top |= ax | ay; /* the bit length is what counts */
         if (is_curve(s)) {
             if (r->points == NULL) {
                 return SYMLINE_ERR_NULL;

@@ -264,6 +264,27 @@ static void test_none_far(void **state)
     assert_int_equal(run(&s), 0);
 }
 
+static void test_large_frame(void **state)
+{
+    /* coordinates up to 65535 px: the stage works in 4 px units there */
+    static const double rays[3] = {0.0, 90.0, 180.0};
+    scene s;
+    (void)state;
+    scene_init(&s);
+    add_line(&s, 65006.0, 60000.0, 65535.0, 60000.0);
+    add_line(&s, 64800.0, 60000.0, 64994.0, 60000.0);
+    add_line(&s, 65000.0, 60008.0, 65000.0, 60300.0);
+    assert_int_equal(run(&s), 1);
+    expect_ix(&s, 0, SYMLINE_INTERSECTION_T, 65000.0, 60000.0, 4.0, rays, 3, 1.0);
+    /* the largest coordinates are accepted, one beyond is not */
+    scene_init(&s);
+    add_line(&s, 0.0, 65535.0, 65535.0, 0.0);
+    s.seg[0].x0 = -65535 * 256;
+    assert_int_equal(run(&s), 0);
+    s.seg[0].x0 = -65535 * 256 - 1;
+    assert_int_equal(symline_intersections(&s.res, &s.cfg, &s.ix), SYMLINE_ERR_RANGE);
+}
+
 static void test_degenerate(void **state)
 {
     scene s;
@@ -526,6 +547,7 @@ int main(void)
         cmocka_unit_test(test_none_parallel),
         cmocka_unit_test(test_none_collinear),
         cmocka_unit_test(test_none_far),
+        cmocka_unit_test(test_large_frame),
         cmocka_unit_test(test_degenerate),
         cmocka_unit_test(test_truncated),
         cmocka_unit_test(test_errors),
