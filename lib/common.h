@@ -22,6 +22,14 @@
 #define SL_NOINLINE
 #endif
 
+/* Copies a small routine into each caller even at -Os, where a constant
+ * argument then folds away (extrema.c). */
+#if defined(__GNUC__)
+#define SL_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define SL_ALWAYS_INLINE inline
+#endif
+
 /* Alignment every workspace carve-out is rounded to. */
 #define SL_ALIGN 8u
 

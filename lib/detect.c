@@ -22,7 +22,7 @@ void symline_config_default(symline_config *cfg)
     cfg->levels = 0u;
     cfg->filter = SYMLINE_FILTER_CONTRAST;
     cfg->illumination = 0u;
-    cfg->adaptive = 1u;
+    cfg->adaptive = true;
     cfg->bright_sigma10 = 0;
     cfg->ridge_sigma10 = 10u;
     cfg->side_sigma10 = 15;
@@ -53,12 +53,12 @@ static symline_status check_config(const symline_config *c)
     if (c->filter != SYMLINE_FILTER_CONTRAST && c->filter != SYMLINE_FILTER_PAPER) {
         return SYMLINE_ERR_CONFIG;
     }
-    if (c->illumination > 255u || c->adaptive > 1u || c->bright_sigma10 < -100 ||
-        c->bright_sigma10 > 100 || c->ridge_sigma10 > 100u || c->side_sigma10 < -100 ||
-        c->side_sigma10 > 100 || c->a_distance > SYMLINE_DETECT_MAX_A_DISTANCE ||
-        c->contrast_pct > 100u || c->contrast_min > 255u || c->contrast_asym_pct > 1000u ||
-        c->min_length > SYMLINE_MAX_DIM || c->curve_dev_q8 > SL_MAX_LENGTH_Q8 ||
-        c->curve_bend_q8 > SL_MAX_LENGTH_Q8 || c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
+    if (c->illumination > 255u || c->bright_sigma10 < -100 || c->bright_sigma10 > 100 ||
+        c->ridge_sigma10 > 100u || c->side_sigma10 < -100 || c->side_sigma10 > 100 ||
+        c->a_distance > SYMLINE_DETECT_MAX_A_DISTANCE || c->contrast_pct > 100u ||
+        c->contrast_min > 255u || c->contrast_asym_pct > 1000u || c->min_length > SYMLINE_MAX_DIM ||
+        c->curve_dev_q8 > SL_MAX_LENGTH_Q8 || c->curve_bend_q8 > SL_MAX_LENGTH_Q8 ||
+        c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
         return SYMLINE_ERR_CONFIG;
     }
     return SYMLINE_OK;

@@ -10,35 +10,20 @@
 
 #include "symmetry.h"
 
-/*
- * First a branch-free pass over strict extrema (runs of one, the common case,
- * vectorised), then the longer runs, if the row has any. Run [a, i-1] ends
- * where E changes; the last run touches n-1 and is never marked.
- */
-void sl_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
+/* The run rule over a row. Run [a, i-1] ends where E changes; the last run
+ * touches n-1 and is never marked. Inlined into both callers: with
+ * SL_RUN_ANY_LENGTH the plateau test folds away in the public row call. */
+static SL_ALWAYS_INLINE void mark_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
 {
-    uint32_t a, i, eq = 0u;
-    map[0] = SYMLINE_MAP_NONE;
-    map[n - 1u] = SYMLINE_MAP_NONE;
-    for (i = 1u; i + 1u < n; i++) {
-        const uint32_t l = E[i - 1u], c = E[i], r = E[i + 1u];
-        const uint32_t s = (uint32_t)(l > c) & (uint32_t)(r > c);
-        const uint32_t am = (uint32_t)(l < c) & (uint32_t)(r < c);
-        eq |= (uint32_t)(l == c);
-        map[i] = (uint8_t)(s * SYMLINE_MAP_S + am * SYMLINE_MAP_A);
+    uint32_t a = 0u, i;
+    for (i = 0; i < n; i++) {
+        map[i] = SYMLINE_MAP_NONE;
     }
-    if (n >= 2u) {
-        eq |= (uint32_t)(E[n - 2u] == E[n - 1u]);
-    }
-    if (!eq) {
-        return;
-    }
-    for (a = 0u, i = 1u; i < n; i++) {
+    for (i = 1u; i < n; i++) {
         if (E[i] == E[a]) {
             continue;
         }
-        /* Run [a, i-1]; runs of one were handled above. */
-        if (a >= 1u && i - 1u > a) {
+        if (a >= 1u) {
             const uint32_t mid = (a + i - 1u) / 2u;
             if (i - 1u - mid <= lag) {
                 if (E[a - 1u] > E[a] && E[i] > E[i - 1u]) {
@@ -52,6 +37,11 @@ void sl_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
     }
 }
 
+void sl_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
+{
+    mark_runs(E, n, lag, map);
+}
+
 symline_status symline_extrema_row(const uint32_t *E, uint32_t n, uint8_t *map)
 {
     if (E == NULL || map == NULL) {
@@ -60,7 +50,7 @@ symline_status symline_extrema_row(const uint32_t *E, uint32_t n, uint8_t *map)
     if (n == 0u || n > SYMLINE_MAX_DIM) {
         return SYMLINE_ERR_SIZE;
     }
-    sl_extrema_runs(E, n, SL_RUN_ANY_LENGTH, map);
+    mark_runs(E, n, SL_RUN_ANY_LENGTH, map);
     return SYMLINE_OK;
 }
 

@@ -9,8 +9,8 @@
  * when row b+1 arrives, at row (a+b) div 2. Extrema of plateaus longer than
  * 2*lag+1 rows are not line points (no thin line has them), so every
  * extremum of row y is known once row y+lag+1 has been pushed, and the
- * decision for row y (which looks a_dist rows of extrema and k rows of gray
- * values up and down) is taken delta = a_dist+lag+1 rows later. The ring holds
+ * decision for row y (which looks a_distance rows of extrema and k rows of gray
+ * values up and down) is taken delta = a_distance+lag+1 rows later. The ring holds
  * just those rows: working memory grows with width * radius, not with height.
  *
  * Output: points appended in raster order, so the list is its own spatial

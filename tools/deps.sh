@@ -6,7 +6,7 @@ need=""
 add() { dpkg -s "$1" >/dev/null 2>&1 || need="$need $1"; }
 for p in cmake make gcc libc6-dev pkg-config libpng-dev; do add "$p"; done
 case "${1:-build}" in
-test) for p in libcmocka-dev binutils; do add "$p"; done ;;
+test) for p in libcmocka-dev binutils clang-format; do add "$p"; done ;;
 build) ;;
 *) echo "usage: tools/deps.sh build|test" >&2; exit 2 ;;
 esac

@@ -13,25 +13,27 @@ typedef struct num_opt {
     uint32_t lo, hi;
     size_t offset;
     int32_t bias; /* signed fields are given as value + bias, so 0..200 stands for -100..100 */
+    bool flag;    /* a bool field, given as 0 or 1 */
 } num_opt;
 
 static const num_opt num_opts[] = {
-    {"--radius", 1, 32, offsetof(symline_config, radius), 0},
-    {"--levels", 1, 5, offsetof(symline_config, levels), 0},
-    {"--illumination", 0, 255, offsetof(symline_config, illumination), 0},
-    {"--adaptive", 0, 1, offsetof(symline_config, adaptive), 0},
-    {"--bright-sigma", 0, 200, offsetof(symline_config, bright_sigma10), 100},
-    {"--side-sigma", 0, 200, offsetof(symline_config, side_sigma10), 100},
-    {"--ridge-sigma", 0, 100, offsetof(symline_config, ridge_sigma10), 0},
-    {"--a-distance", 1, 32, offsetof(symline_config, a_distance), 0},
-    {"--contrast", 0, 100, offsetof(symline_config, contrast_pct), 0},
-    {"--contrast-min", 0, 255, offsetof(symline_config, contrast_min), 0},
-    {"--contrast-asym", 0, 1000, offsetof(symline_config, contrast_asym_pct), 0},
-    {"--min-length", 0, 65535, offsetof(symline_config, min_length), 0},
-    {"--curve-dev", 0, 65535u << 8, offsetof(symline_config, curve_dev_q8), 0},
-    {"--curve-bend", 0, 65535u << 8, offsetof(symline_config, curve_bend_q8), 0},
-    {"--merge-gap", 0, 65535, offsetof(symline_config, merge_gap), 0},
-    {"--merge-dev", 0, 65535u << 8, offsetof(symline_config, merge_dev_q8), 0},
+    {"--radius", 1, SYMLINE_DETECT_MAX_RADIUS, offsetof(symline_config, radius), 0, false},
+    {"--levels", 1, SYMLINE_DETECT_MAX_LEVELS, offsetof(symline_config, levels), 0, false},
+    {"--illumination", 0, 255, offsetof(symline_config, illumination), 0, false},
+    {"--adaptive", 0, 1, offsetof(symline_config, adaptive), 0, true},
+    {"--bright-sigma", 0, 200, offsetof(symline_config, bright_sigma10), 100, false},
+    {"--side-sigma", 0, 200, offsetof(symline_config, side_sigma10), 100, false},
+    {"--ridge-sigma", 0, 100, offsetof(symline_config, ridge_sigma10), 0, false},
+    {"--a-distance", 1, SYMLINE_DETECT_MAX_A_DISTANCE, offsetof(symline_config, a_distance), 0,
+     false},
+    {"--contrast", 0, 100, offsetof(symline_config, contrast_pct), 0, false},
+    {"--contrast-min", 0, 255, offsetof(symline_config, contrast_min), 0, false},
+    {"--contrast-asym", 0, 1000, offsetof(symline_config, contrast_asym_pct), 0, false},
+    {"--min-length", 0, 65535, offsetof(symline_config, min_length), 0, false},
+    {"--curve-dev", 0, 65535u << 8, offsetof(symline_config, curve_dev_q8), 0, false},
+    {"--curve-bend", 0, 65535u << 8, offsetof(symline_config, curve_bend_q8), 0, false},
+    {"--merge-gap", 0, 65535, offsetof(symline_config, merge_gap), 0, false},
+    {"--merge-dev", 0, 65535u << 8, offsetof(symline_config, merge_dev_q8), 0, false},
 };
 #define NUM_OPTS (sizeof num_opts / sizeof num_opts[0])
 
@@ -101,7 +103,10 @@ int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t e
             snprintf(err, errlen, "%s needs an integer %u..%u", name, o->lo, o->hi);
             return -1;
         }
-        if (o->bias != 0) {
+        if (o->flag) {
+            const bool b = v != 0u;
+            memcpy(field, &b, sizeof b);
+        } else if (o->bias != 0) {
             const int32_t sv = (int32_t)v - o->bias;
             memcpy(field, &sv, sizeof sv);
         } else {
@@ -123,7 +128,7 @@ void detopts_finish(detopts *d)
             d->cfg.illumination = 100u;
         }
         if (!(d->seen & (1u << opt_index("--adaptive")))) {
-            d->cfg.adaptive = 0u;
+            d->cfg.adaptive = false;
         }
     }
 }
@@ -162,7 +167,7 @@ void detopts_help(FILE *f)
             "  --merge-gap PX      merge collinear lines up to PX apart (default width/8,\n"
             "                      0 = no merging)\n"
             "  --merge-dev Q8      merge tolerance across the line, 1/256 px (%u)\n",
-            c.radius, c.illumination, c.adaptive, (int)c.bright_sigma10 + 100, c.ridge_sigma10,
-            (int)c.side_sigma10 + 100, c.contrast_pct, c.contrast_min, c.contrast_asym_pct,
-            c.min_length, c.curve_dev_q8, c.curve_bend_q8, c.merge_dev_q8);
+            c.radius, c.illumination, c.adaptive ? 1u : 0u, (int)c.bright_sigma10 + 100,
+            c.ridge_sigma10, (int)c.side_sigma10 + 100, c.contrast_pct, c.contrast_min,
+            c.contrast_asym_pct, c.min_length, c.curve_dev_q8, c.curve_bend_q8, c.merge_dev_q8);
 }

@@ -119,11 +119,17 @@ int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray
     }
     switch (buf[1]) {
     case '5': break;
-    case '2': return fail(err, errlen, "%s: ASCII PGM (P2) is not supported; use binary PGM (P5)", name);
+    case '2':
+        return fail(err, errlen, "%s: ASCII PGM (P2) is not supported; use binary PGM (P5)", name);
     case '6':
-    case '3': return fail(err, errlen, "%s: colour PPM (P%c) is not supported; use 8-bit gray PGM (P5) or PNG", name, buf[1]);
+    case '3':
+        return fail(err, errlen,
+                    "%s: colour PPM (P%c) is not supported; use 8-bit gray PGM (P5) or PNG", name,
+                    buf[1]);
     case '1':
-    case '4': return fail(err, errlen, "%s: bitmap PBM (P%c) is not supported; use 8-bit gray PGM (P5)", name, buf[1]);
+    case '4':
+        return fail(err, errlen, "%s: bitmap PBM (P%c) is not supported; use 8-bit gray PGM (P5)",
+                    name, buf[1]);
     default: return fail(err, errlen, "%s: not a PGM file (magic P%c)", name, buf[1]);
     }
     if (read_uint(buf, len, &pos, &w) != 0 || read_uint(buf, len, &pos, &h) != 0 ||
@@ -138,15 +144,15 @@ int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray
         return fail(err, errlen, "%s: image size %lux%lu outside 1..65535", name, w, h);
     }
     /* Exactly one white-space byte separates the header from the pixels. */
-    if (pos >= len || !(buf[pos] == ' ' || buf[pos] == '\t' || buf[pos] == '\n' ||
-                        buf[pos] == '\r')) {
+    if (pos >= len ||
+        !(buf[pos] == ' ' || buf[pos] == '\t' || buf[pos] == '\n' || buf[pos] == '\r')) {
         return fail(err, errlen, "%s: malformed PGM header", name);
     }
     pos++;
     need = (size_t)w * (size_t)h;
     if (len - pos < need) {
-        return fail(err, errlen, "%s: truncated PGM data (%zu of %zu pixel bytes)", name,
-                    len - pos, need);
+        return fail(err, errlen, "%s: truncated PGM data (%zu of %zu pixel bytes)", name, len - pos,
+                    need);
     }
     img->px = (uint8_t *)malloc(need);
     if (img->px == NULL) {

@@ -121,8 +121,8 @@ int overlay_write_ix(const char *path, const uint8_t *gray, uint32_t width, uint
         const symline_segment *s = &r->segments[i];
         uint32_t phase = 0u;
         if (s->kind == SYMLINE_KIND_LINE) {
-            draw_line(&o, q8_round(s->x0), q8_round(s->y0), q8_round(s->x1), q8_round(s->y1),
-                      RED, 0, &phase);
+            draw_line(&o, q8_round(s->x0), q8_round(s->y0), q8_round(s->x1), q8_round(s->y1), RED,
+                      0, &phase);
         } else {
             const symline_point *p = r->points + s->first;
             for (k = 1; k < s->count; k++) {

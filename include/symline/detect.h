@@ -98,11 +98,11 @@ typedef struct symline_config {
     symline_filter filter; /* default SYMLINE_FILTER_CONTRAST */
     uint32_t illumination; /* minimum gray value of a line point, 0..255
                               (0 disables); default 0, the paper used 100 */
-    uint32_t adaptive;     /* 1: the two thresholds below follow the frame's
+    bool adaptive;         /* true: the two thresholds below follow the frame's
                               mean gray value and its standard deviation sigma,
                               so a brighter, darker or lower-contrast exposure
-                              of the same scene gives the same lines; 0: off.
-                              Default 1 */
+                              of the same scene gives the same lines; false:
+                              off. Default true */
     int32_t bright_sigma10; /* adaptive: a line point's gray value must reach
                               mean + bright_sigma10/10 * sigma, -100..100;
                               default 0 (the mean) */

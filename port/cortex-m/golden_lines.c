@@ -43,7 +43,7 @@ static int run(const char *name, const fw_frame *f, int paper)
     if (paper) { /* what `symline lines --filter paper` sets */
         cfg.filter = SYMLINE_FILTER_PAPER;
         cfg.illumination = 100u;
-        cfg.adaptive = 0u;
+        cfg.adaptive = false;
     }
     need = symline_detect_workspace_size(f->width, f->height, &cfg);
     printf("=== %s%s\n", name, paper ? ".paper" : "");

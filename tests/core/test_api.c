@@ -49,37 +49,68 @@ static void check_errors(frame_fn fn, ws_fn wsq)
     memset(out_static, 0x5a, sizeof out_static);
     assert_true(ws > 0 && ws <= sizeof ws_static);
 
-    assert_int_equal(fn(NULL, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_NULL);
+    assert_int_equal(
+        fn(NULL, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_NULL);
     bad = img;
     bad.data = NULL;
-    assert_int_equal(fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_NULL);
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, NULL, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_NULL);
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, NULL, ws), SYMLINE_ERR_NULL);
+    assert_int_equal(
+        fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_NULL);
+    assert_int_equal(
+        fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, NULL, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_NULL);
+    assert_int_equal(
+        fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, NULL, ws),
+        SYMLINE_ERR_NULL);
     bad = img;
     bad.width = 0;
-    assert_int_equal(fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_SIZE);
+    assert_int_equal(
+        fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_SIZE);
     bad = img;
     bad.height = 0;
-    assert_int_equal(fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_SIZE);
+    assert_int_equal(
+        fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_SIZE);
     bad = img;
     bad.width = 65536;
     bad.stride = 65536;
-    assert_int_equal(fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_SIZE);
+    assert_int_equal(
+        fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_SIZE);
     bad = img;
     bad.height = 65536;
-    assert_int_equal(fn(&bad, SYMLINE_AXIS_VERTICAL, 3, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_SIZE);
+    assert_int_equal(
+        fn(&bad, SYMLINE_AXIS_VERTICAL, 3, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_SIZE);
     bad = img;
     bad.stride = W - 1;
-    assert_int_equal(fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_STRIDE);
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W - 1, sizeof out_static, ws_static, ws), SYMLINE_ERR_STRIDE);
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 0, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_RADIUS);
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 256, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_RADIUS);
-    assert_int_equal(fn(&img, (symline_axis)7, 3, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_ERR_AXIS);
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, W * H - 1, ws_static, ws), SYMLINE_ERR_BUFFER);
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W + 1, W * H, ws_static, ws), SYMLINE_ERR_BUFFER);
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, 16), SYMLINE_ERR_BUFFER);
+    assert_int_equal(
+        fn(&bad, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_STRIDE);
+    assert_int_equal(
+        fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W - 1, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_STRIDE);
+    assert_int_equal(
+        fn(&img, SYMLINE_AXIS_HORIZONTAL, 0, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_RADIUS);
+    assert_int_equal(
+        fn(&img, SYMLINE_AXIS_HORIZONTAL, 256, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_ERR_RADIUS);
+    assert_int_equal(fn(&img, (symline_axis)7, 3, out_static, W, sizeof out_static, ws_static, ws),
+                     SYMLINE_ERR_AXIS);
+    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, W * H - 1, ws_static, ws),
+                     SYMLINE_ERR_BUFFER);
+    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W + 1, W * H, ws_static, ws),
+                     SYMLINE_ERR_BUFFER);
+    assert_int_equal(
+        fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, 16),
+        SYMLINE_ERR_BUFFER);
     /* a huge stride whose plane size would wrap 32 bits is a too-small buffer, not a wrap */
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, 0xFFFFFFFFu, sizeof out_static, ws_static, ws), SYMLINE_ERR_BUFFER);
+    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, 0xFFFFFFFFu,
+                        sizeof out_static, ws_static, ws),
+                     SYMLINE_ERR_BUFFER);
     /* no failing call wrote anything */
     {
         size_t i;
@@ -88,9 +119,13 @@ static void check_errors(frame_fn fn, ws_fn wsq)
         }
     }
     /* and the static buffers are enough, for both axes, at any workspace alignment */
-    assert_int_equal(fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws), SYMLINE_OK);
+    assert_int_equal(
+        fn(&img, SYMLINE_AXIS_HORIZONTAL, 3, out_static, W, sizeof out_static, ws_static, ws),
+        SYMLINE_OK);
     assert_true(wsq(W, H, SYMLINE_AXIS_VERTICAL, 3) + 1 <= sizeof ws_static);
-    assert_int_equal(fn(&img, SYMLINE_AXIS_VERTICAL, 3, out_static, W, sizeof out_static, ws_static + 1, wsq(W, H, SYMLINE_AXIS_VERTICAL, 3)), SYMLINE_OK);
+    assert_int_equal(fn(&img, SYMLINE_AXIS_VERTICAL, 3, out_static, W, sizeof out_static,
+                        ws_static + 1, wsq(W, H, SYMLINE_AXIS_VERTICAL, 3)),
+                     SYMLINE_OK);
 }
 
 static void test_symmetry_errors(void **state)
@@ -203,7 +238,9 @@ static void test_extreme_sizes(void **state)
     img.data = line;
     need = symline_extrema_workspace_size(65535, 1, SYMLINE_AXIS_HORIZONTAL, 255);
     assert_true(need > 0 && need <= sizeof ws);
-    assert_int_equal(symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 255, out, 65535, sizeof out, ws, need), SYMLINE_OK);
+    assert_int_equal(
+        symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 255, out, 65535, sizeof out, ws, need),
+        SYMLINE_OK);
     for (i = 0; i < 65535; i++) {
         assert_int_equal(out[i], 0); /* a one-row image has only border runs along columns */
     }
@@ -211,9 +248,13 @@ static void test_extreme_sizes(void **state)
     img.height = 65535;
     img.stride = 1;
     need = symline_extrema_workspace_size(1, 65535, SYMLINE_AXIS_HORIZONTAL, 255);
-    assert_int_equal(symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 255, out, 1, sizeof out, ws, need), SYMLINE_OK);
+    assert_int_equal(
+        symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 255, out, 1, sizeof out, ws, need),
+        SYMLINE_OK);
     need = symline_symmetry_workspace_size(1, 65535, SYMLINE_AXIS_HORIZONTAL, 255);
-    assert_int_equal(symline_symmetry(&img, SYMLINE_AXIS_HORIZONTAL, 255, out, 1, sizeof out, ws, need), SYMLINE_OK);
+    assert_int_equal(
+        symline_symmetry(&img, SYMLINE_AXIS_HORIZONTAL, 255, out, 1, sizeof out, ws, need),
+        SYMLINE_OK);
     /* spot-check against the formula at the centre and at the border */
     {
         uint32_t e0 = tu_energy_direct(line, 1, 65535, 0, 255);
@@ -231,24 +272,24 @@ static void test_symmetry_in_place_vertical(void **state)
     symline_image img = make_image();
     const size_t ws = symline_symmetry_workspace_size(W, H, SYMLINE_AXIS_VERTICAL, 5);
     (void)state;
-    assert_int_equal(symline_symmetry(&img, SYMLINE_AXIS_VERTICAL, 5, ref, W, sizeof ref, ws_static, ws), SYMLINE_OK);
+    assert_int_equal(
+        symline_symmetry(&img, SYMLINE_AXIS_VERTICAL, 5, ref, W, sizeof ref, ws_static, ws),
+        SYMLINE_OK);
     memcpy(buf, pixels, sizeof buf);
     img.data = buf;
-    assert_int_equal(symline_symmetry(&img, SYMLINE_AXIS_VERTICAL, 5, buf, W, sizeof buf, ws_static, ws), SYMLINE_OK);
+    assert_int_equal(
+        symline_symmetry(&img, SYMLINE_AXIS_VERTICAL, 5, buf, W, sizeof buf, ws_static, ws),
+        SYMLINE_OK);
     assert_memory_equal(buf, ref, sizeof buf);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_symmetry_errors),
-        cmocka_unit_test(test_extrema_errors),
-        cmocka_unit_test(test_workspace_queries),
-        cmocka_unit_test(test_row_primitives_errors),
-        cmocka_unit_test(test_status_strings),
-        cmocka_unit_test(test_version),
-        cmocka_unit_test(test_extreme_sizes),
-        cmocka_unit_test(test_symmetry_in_place_vertical),
+        cmocka_unit_test(test_symmetry_errors),   cmocka_unit_test(test_extrema_errors),
+        cmocka_unit_test(test_workspace_queries), cmocka_unit_test(test_row_primitives_errors),
+        cmocka_unit_test(test_status_strings),    cmocka_unit_test(test_version),
+        cmocka_unit_test(test_extreme_sizes),     cmocka_unit_test(test_symmetry_in_place_vertical),
     };
     return cmocka_run_group_tests_name("core_api", tests, NULL, NULL);
 }

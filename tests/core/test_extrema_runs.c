@@ -24,7 +24,7 @@ static void runs_by_hand(void **state)
     (void)state;
     sl_extrema_runs(E, n, SL_RUN_ANY_LENGTH, map);
     for (i = 0; i < n; i++) {
-        const uint8_t want = (i == 1u || i == 5u) ? SYMLINE_MAP_S
+        const uint8_t want = (i == 1u || i == 5u)   ? SYMLINE_MAP_S
                              : (i == 2u || i == 9u) ? SYMLINE_MAP_A
                                                     : SYMLINE_MAP_NONE;
         assert_int_equal(map[i], want);
@@ -34,8 +34,8 @@ static void runs_by_hand(void **state)
     assert_int_equal(map[5], SYMLINE_MAP_S);
     sl_extrema_runs(E, n, 1, map);
     assert_int_equal(map[5], SYMLINE_MAP_NONE);
-    assert_int_equal(map[1], SYMLINE_MAP_S);  /* runs of one always count */
-    assert_int_equal(map[9], SYMLINE_MAP_A);  /* [9, 10]: middle 9, 1 before the end */
+    assert_int_equal(map[1], SYMLINE_MAP_S); /* runs of one always count */
+    assert_int_equal(map[9], SYMLINE_MAP_A); /* [9, 10]: middle 9, 1 before the end */
     sl_extrema_runs(E, n, 0, map);
     assert_int_equal(map[9], SYMLINE_MAP_NONE);
     assert_int_equal(map[2], SYMLINE_MAP_A);

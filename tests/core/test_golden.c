@@ -87,8 +87,7 @@ static void run_and_compare(const golden_case *c, const imgio_gray *in, const im
     for (y = 0; y < h; y++) {
         for (x = 0; x < is && (size_t)y * is + x < in_len; x++) {
             /* pixels, and junk in the padding that must never be read into results */
-            src[(size_t)y * is + x] =
-                x < w ? in->px[(size_t)y * w + x] : (uint8_t)tu_rand(&seed);
+            src[(size_t)y * is + x] = x < w ? in->px[(size_t)y * w + x] : (uint8_t)tu_rand(&seed);
         }
     }
     img.width = w;

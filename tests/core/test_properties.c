@@ -254,7 +254,8 @@ static void test_differential_against_formulas(void **state)
                     const uint32_t want = tu_energy_direct(f.px + first, step, n, i, m);
                     seq[i] = want;
                     assert_int_equal(E[first + i * step], want);
-                    assert_int_equal(s8[first + i * step], (uint8_t)((510 * (emax - want) + emax) / (2 * emax)));
+                    assert_int_equal(s8[first + i * step],
+                                     (uint8_t)((510 * (emax - want) + emax) / (2 * emax)));
                 }
                 /* runs of equal E, straight from SPEC §3 */
                 while (r0 < n) {

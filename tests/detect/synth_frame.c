@@ -7,8 +7,8 @@
 
 #include "testutil.h"
 
-static void draw_disc(uint8_t *px, uint32_t w, uint32_t h, uint32_t stride, int32_t cx,
-                      int32_t cy, int32_t r2_in, int32_t r2_out, uint8_t v)
+static void draw_disc(uint8_t *px, uint32_t w, uint32_t h, uint32_t stride, int32_t cx, int32_t cy,
+                      int32_t r2_in, int32_t r2_out, uint8_t v)
 {
     uint32_t x, y;
     for (y = 0; y < h; y++) {

@@ -135,8 +135,8 @@ static void finds_lines(void **state)
             vert++;
         }
     }
-    assert_true(horiz >= 1u); /* the thin horizontal line */
-    assert_true(vert >= 1u);  /* the vertical line, found once (not also by the other axis) */
+    assert_true(horiz >= 1u);  /* the thin horizontal line */
+    assert_true(vert >= 1u);   /* the vertical line, found once (not also by the other axis) */
     assert_true(curves >= 1u); /* the ring */
     teardown_fixture();
 }

@@ -54,7 +54,7 @@ static void check_frame(const char *name, int paper)
     if (paper) { /* what `symline lines --filter paper` sets */
         cfg.filter = SYMLINE_FILTER_PAPER;
         cfg.illumination = 100u;
-        cfg.adaptive = 0u;
+        cfg.adaptive = false;
     }
     wsn = symline_detect_workspace_size(g.width, g.height, &cfg);
     ws = malloc(wsn);

@@ -45,20 +45,20 @@ static void gray_test(void **state)
     (void)state;
     symline_config_default(&cfg);
     sl_linefilter_setup(&f, &cfg);
-    assert_true(sl_linefilter_gray(&f, 100, 60, 60));   /* a ridge 40 high */
-    assert_false(sl_linefilter_gray(&f, 62, 60, 60));   /* 2 < contrast_min 3 */
-    assert_true(sl_linefilter_gray(&f, 63, 60, 60));    /* exactly 3 */
-    assert_false(sl_linefilter_gray(&f, 60, 60, 60));   /* no ridge */
-    assert_false(sl_linefilter_gray(&f, 100, 60, 90));  /* sides differ: needs 45 > 10 */
-    assert_true(sl_linefilter_gray(&f, 140, 60, 90));   /* 50 >= 45 */
+    assert_true(sl_linefilter_gray(&f, 100, 60, 60));  /* a ridge 40 high */
+    assert_false(sl_linefilter_gray(&f, 62, 60, 60));  /* 2 < contrast_min 3 */
+    assert_true(sl_linefilter_gray(&f, 63, 60, 60));   /* exactly 3 */
+    assert_false(sl_linefilter_gray(&f, 60, 60, 60));  /* no ridge */
+    assert_false(sl_linefilter_gray(&f, 100, 60, 90)); /* sides differ: needs 45 > 10 */
+    assert_true(sl_linefilter_gray(&f, 140, 60, 90));  /* 50 >= 45 */
     f.side_max = 80u;
-    assert_false(sl_linefilter_gray(&f, 140, 60, 90));  /* a side above side_max */
+    assert_false(sl_linefilter_gray(&f, 140, 60, 90)); /* a side above side_max */
     f.side_max = 255u;
     f.ridge_pct = 50u;
-    assert_false(sl_linefilter_gray(&f, 100, 60, 60));  /* needs 50 % of 100 */
+    assert_false(sl_linefilter_gray(&f, 100, 60, 60)); /* needs 50 % of 100 */
     f.ridge_pct = 0u;
     f.min_gray = 120u;
-    assert_false(sl_linefilter_gray(&f, 100, 60, 60));  /* darker than min_gray */
+    assert_false(sl_linefilter_gray(&f, 100, 60, 60)); /* darker than min_gray */
     /* The paper filter asks only for the gray value. */
     cfg.filter = SYMLINE_FILTER_PAPER;
     cfg.illumination = 100u;

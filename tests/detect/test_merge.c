@@ -105,7 +105,8 @@ static void merge_keeps_bent_joins_apart(void **state)
     r.truncated = false;
     sl_merge(&r, 12, 640, 512); /* 3 px off > 2.5 px */
     assert_int_equal(r.segment_count, 2);
-    sl_merge(&r, 12, 1024, 5120); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
+    sl_merge(&r, 12, 1024,
+             5120); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
     assert_int_equal(r.segment_count, 1);
     assert_true(segs[0].merged);
 }

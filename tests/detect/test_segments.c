@@ -72,10 +72,10 @@ static void fit_line_and_curve(void **state)
     assert_true(s.max_dev < 128u);
     /* A half circle of radius 12 around (30, 30). */
     {
-        static const int8_t c[][2] = {{12, 0}, {12, 2}, {11, 4}, {11, 5}, {10, 7}, {8, 9},
-                                      {7, 10}, {5, 11}, {4, 11}, {2, 12}, {0, 12}, {-2, 12},
-                                      {-4, 11}, {-5, 11}, {-7, 10}, {-8, 9}, {-10, 7},
-                                      {-11, 5}, {-11, 4}, {-12, 2}, {-12, 0}};
+        static const int8_t c[][2] = {{12, 0},  {12, 2},  {11, 4},  {11, 5}, {10, 7},  {8, 9},
+                                      {7, 10},  {5, 11},  {4, 11},  {2, 12}, {0, 12},  {-2, 12},
+                                      {-4, 11}, {-5, 11}, {-7, 10}, {-8, 9}, {-10, 7}, {-11, 5},
+                                      {-11, 4}, {-12, 2}, {-12, 0}};
         for (i = 0; i < 21u; i++) {
             p[i].x = (uint16_t)(30 + c[i][0]);
             p[i].y = (uint16_t)(30 + c[i][1]);
@@ -115,7 +115,7 @@ static void bend_tells_flat_arc_from_line(void **state)
     }
     sl_fit(p, 60, 0, 512, &s);
     assert_int_equal(s.kind, SYMLINE_KIND_LINE); /* under the max_dev threshold ... */
-    assert_true(sl_bend_q8(p, 60) >= 80u);        /* ... but it bends */
+    assert_true(sl_bend_q8(p, 60) >= 80u);       /* ... but it bends */
 }
 
 static void distances(void **state)
@@ -138,7 +138,7 @@ static void distances(void **state)
     assert_int_equal(sl_max_dev(p, 3, 1, 128, 128, 20 * 256 + 128, 128), 4u * 256u);
     /* Curve test: above the threshold and above 1/32 of the chord. */
     assert_true(sl_is_curve(0, 0, 64 * 256, 0, 3u * 256u, 512u));
-    assert_false(sl_is_curve(0, 0, 64 * 256, 0, 512u, 512u));   /* not above the threshold */
+    assert_false(sl_is_curve(0, 0, 64 * 256, 0, 512u, 512u));       /* not above the threshold */
     assert_false(sl_is_curve(0, 0, 200 * 256, 0, 6u * 256u, 512u)); /* under 1/32 of 200 px */
 }
 

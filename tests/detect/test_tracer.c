@@ -58,7 +58,8 @@ static uint32_t trace_all(map *m, uint32_t *len, symline_point (*ends)[2], uint3
     return c;
 }
 
-#define ROWS(...) static const char *const rows[] = {__VA_ARGS__}; \
+#define ROWS(...)                                                                                  \
+    static const char *const rows[] = {__VA_ARGS__};                                               \
     load(&m, rows, (uint32_t)(sizeof rows / sizeof rows[0]))
 
 static void assert_pt(symline_point p, unsigned x, unsigned y)
@@ -148,9 +149,8 @@ static void x_crossing(void **state)
     (void)state;
     /* The vertical line starts first and runs straight through the crossing; the
      * horizontal one comes out as two halves that stop beside it. */
-    ROWS(".....#.....", ".....#.....", ".....#.....", ".....#.....", ".....#.....",
-         "###########", ".....#.....", ".....#.....", ".....#.....", ".....#.....",
-         ".....#.....");
+    ROWS(".....#.....", ".....#.....", ".....#.....", ".....#.....", ".....#.....", "###########",
+         ".....#.....", ".....#.....", ".....#.....", ".....#.....", ".....#.....");
     assert_int_equal(trace_all(&m, len, ends, 8), 3);
     assert_int_equal(len[0], 11);
     assert_pt(ends[0][0], 5, 0);
@@ -238,11 +238,11 @@ static void storage_exhaustion(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(straight),        cmocka_unit_test(diagonal),
-        cmocka_unit_test(staircase),       cmocka_unit_test(l_corner),
-        cmocka_unit_test(t_junction),      cmocka_unit_test(x_crossing),
-        cmocka_unit_test(closed_loop),     cmocka_unit_test(isolated_and_pairs),
-        cmocka_unit_test(classification),  cmocka_unit_test(storage_exhaustion),
+        cmocka_unit_test(straight),       cmocka_unit_test(diagonal),
+        cmocka_unit_test(staircase),      cmocka_unit_test(l_corner),
+        cmocka_unit_test(t_junction),     cmocka_unit_test(x_crossing),
+        cmocka_unit_test(closed_loop),    cmocka_unit_test(isolated_and_pairs),
+        cmocka_unit_test(classification), cmocka_unit_test(storage_exhaustion),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

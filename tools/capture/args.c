@@ -54,7 +54,8 @@ static void usage(FILE *f)
     detopts_help(f);
     fputs("\n"
           "Output:\n"
-          "  --summary-every S      rate and latency summary on stderr every S seconds (default 5, 0 = off)\n"
+          "  --summary-every S      rate and latency summary on stderr every S seconds (default 5, "
+          "0 = off)\n"
 
           "  --record K DIR         write the luma of every K-th frame as PGM (replayable)\n"
           "  --snapshot-every K DIR write every K-th frame with its detections drawn over it\n"
@@ -200,4 +201,3 @@ int app_parse_args(int argc, char **argv, app_options *o)
 #endif
     return 0;
 }
-

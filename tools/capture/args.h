@@ -18,8 +18,8 @@ typedef struct app_options {
     const char *format;
     uint32_t fps_num, fps_den; /* 0 = the source's default */
     uint32_t buffers;
-    int all_frames;         /* 1 = process every frame instead of the freshest */
-    int32_t exposure_us;    /* < 0 = leave the device's exposure alone */
+    int all_frames;      /* 1 = process every frame instead of the freshest */
+    int32_t exposure_us; /* < 0 = leave the device's exposure alone */
     int timeout_ms;
     int loop;
     uint32_t summary_s;
@@ -27,7 +27,7 @@ typedef struct app_options {
     const char *snapshot_dir;
     uint32_t record_every;
     const char *record_dir;
-    symline_config cfg;     /* detector settings, options as in `symline lines` */
+    symline_config cfg; /* detector settings, options as in `symline lines` */
 } app_options;
 
 #define APP_EXIT_OK 0
