@@ -109,7 +109,7 @@ typedef struct ix_vec {
 } ix_vec;
 
 typedef struct ix_params {
-    uint32_t shift;     /* internal unit = 2^shift Q8 units: Q2 up to 8191 px (6) .. */
+    uint32_t shift;     /* internal unit = 2^shift Q8 units (6: quarter pixels) */
     uint32_t min_angle; /* Q8 degrees */
     int32_t arm;        /* internal units, >= 1 */
     uint32_t merge;     /* Q8 px */
@@ -124,10 +124,10 @@ typedef struct ix_poly {
     uint32_t step;    /* points from one vertex to the next */
     uint32_t index;   /* in the result's segments */
     ix_vec lo, hi;    /* box of the vertices grown by the gap */
-    int32_t gap_base; /* how far a free end may stop short of a crossing
-                                 met at a right angle */
-    int32_t gap;      /* ... at any angle: min(IX_GAP_GROWTH gap_base,
-                                 gap_pct of its size) */
+    int32_t gap_base; /* how far a free end may stop short of a crossing met
+                         at a right angle */
+    int32_t gap;      /* ... at any angle: min(IX_GAP_GROWTH gap_base, gap_pct
+                         of its size) */
 } ix_poly;
 
 typedef struct ix_hit {
