@@ -7,10 +7,12 @@
 
 #include "common.h"
 #include "curvejoin.h"
+#include "fieldboundary.h"
 #include "fixed.h"
 #include "linefilter.h"
 #include "merge.h"
 #include "pass.h"
+#include "passplan.h"
 
 void symline_config_default(symline_config *cfg)
 {
@@ -24,8 +26,8 @@ void symline_config_default(symline_config *cfg)
     cfg->illumination = 0u;
     cfg->adaptive = true;
     cfg->bright_sigma10 = 0;
-    cfg->ridge_sigma10 = 10u;
-    cfg->side_sigma10 = 15;
+    cfg->ridge_sigma10 = 9u;
+    cfg->side_sigma10 = 30;
     cfg->a_distance = 0u;
     cfg->contrast_pct = 0u;
     cfg->contrast_min = 3u;
@@ -35,12 +37,15 @@ void symline_config_default(symline_config *cfg)
     cfg->curve_bend_q8 = 80u; /* 0.31 px */
     cfg->merge_gap = SYMLINE_MERGE_GAP_AUTO;
     cfg->merge_dev_q8 = SL_PX_Q8(5u) / 2u; /* 2.5 px */
+    cfg->field_boundary = SYMLINE_FIELD_DROP;
+    cfg->field_margin = 4u;
+    symline_field_config_default(&cfg->field);
 }
 
 /* Largest value of the Q8 length settings: the largest frame dimension. */
 #define SL_MAX_LENGTH_Q8 (SYMLINE_MAX_DIM << SL_Q8_SHIFT)
 
-static symline_status check_config(const symline_config *c)
+symline_status sl_config_check(const symline_config *c)
 {
     if (c->axes != SYMLINE_AXES_HORIZONTAL && c->axes != SYMLINE_AXES_VERTICAL &&
         c->axes != SYMLINE_AXES_BOTH) {
@@ -61,13 +66,18 @@ static symline_status check_config(const symline_config *c)
         c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
         return SYMLINE_ERR_CONFIG;
     }
+    if ((c->field_boundary != SYMLINE_FIELD_OFF && c->field_boundary != SYMLINE_FIELD_DROP &&
+         c->field_boundary != SYMLINE_FIELD_KEEP) ||
+        c->field_margin > SYMLINE_MAX_DIM || !sl_field_config_ok(&c->field)) {
+        return SYMLINE_ERR_CONFIG;
+    }
     return SYMLINE_OK;
 }
 
 /* Number of scales (levels): as configured, or enough that the coarsest one reaches
  * lines width/16 px wide (radius m spans lines up to about 2m+1 px); never
  * a grid smaller than the operator's window. */
-static uint32_t level_count(const symline_config *c, uint32_t width, uint32_t height)
+uint32_t sl_level_count(const symline_config *c, uint32_t width, uint32_t height)
 {
     uint32_t levels = c->levels;
     const uint32_t span = 2u * c->radius + 1u;
@@ -85,17 +95,23 @@ static uint32_t level_count(const symline_config *c, uint32_t width, uint32_t he
 }
 
 /* The axes of a detection: how many, and the index-th (horizontal first). */
-static uint32_t axis_count(const symline_config *c)
+uint32_t sl_axis_count(const symline_config *c)
 {
     return c->axes == SYMLINE_AXES_BOTH ? 2u : 1u;
 }
 
-static symline_axis axis_of(const symline_config *c, uint32_t index)
+symline_axis sl_axis_of(const symline_config *c, uint32_t index)
 {
     if (c->axes == SYMLINE_AXES_BOTH) {
         return index == 0u ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL;
     }
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
+}
+
+/* Workspace of the per-column rows of the field boundary (sl_run.field_rows). */
+static size_t field_rows_size(uint32_t width)
+{
+    return sl_align_up((size_t)width * sizeof(uint16_t)) + SL_ALIGN;
 }
 
 SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height,
@@ -104,20 +120,55 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
     uint32_t levels, level, axis;
     size_t best = 0u;
     if (cfg == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
-        height > SYMLINE_MAX_DIM || check_config(cfg) != SYMLINE_OK) {
+        height > SYMLINE_MAX_DIM || sl_config_check(cfg) != SYMLINE_OK) {
         return 0u;
     }
-    levels = level_count(cfg, width, height);
+    levels = sl_level_count(cfg, width, height);
     for (level = 0; level < levels; level++) {
-        for (axis = 0; axis < axis_count(cfg); axis++) {
+        for (axis = 0; axis < sl_axis_count(cfg); axis++) {
             sl_pass p;
             size_t n;
-            sl_pass_setup(&p, cfg, axis_of(cfg, axis), level, width, height);
+            sl_pass_setup(&p, cfg, sl_axis_of(cfg, axis), level, width, height);
             n = sl_pass_ws_size(&p, width);
             best = n > best ? n : best;
         }
     }
+    if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
+        /* The boundary is found first, in the same workspace. */
+        const size_t f = symline_field_workspace_size(width, height, &cfg->field);
+        best += field_rows_size(width); /* kept through the passes */
+        best = f > best ? f : best;
+    }
+    if (cfg->adaptive) {
+        /* Then the statistics: the field's rows and the histogram. */
+        const size_t st = field_rows_size(width) + sl_align_up(SL_STATS_HIST_BYTES) + SL_ALIGN;
+        best = st > best ? st : best;
+    }
     return best;
+}
+
+/* The adaptive thresholds' statistics: of the field where a boundary was
+ * found (lights, walls and people above it would set the thresholds for lines
+ * on the carpet), else (field NULL or empty) of the whole frame. */
+SL_NOINLINE static void field_stats(const symline_image *img, const symline_field_boundary *field,
+                                    uint8_t *ws, size_t ws_size, sl_frame_stats *st)
+{
+    uint8_t *cur = ws;
+    uint16_t *top =
+        field != NULL && field->count != 0u
+            ? (uint16_t *)sl_carve(&cur, ws + ws_size, (size_t)img->width * sizeof(uint16_t))
+            : NULL;
+    uint32_t *hist = (uint32_t *)sl_carve(&cur, ws + ws_size, SL_STATS_HIST_BYTES);
+    if (hist == NULL) {
+        return; /* not reached: the workspace size holds both */
+    }
+    if (top != NULL) {
+        sl_field_rows(field, 0u, img->width, img->width, 0u, top);
+    }
+    sl_frame_stats_measure(img, top, hist, st);
+    if (st->mean == 0u && st->sigma_q4 == 0u && top != NULL) {
+        sl_frame_stats_measure(img, NULL, hist, st); /* no field in view */
+    }
 }
 
 /* Every pass, fine scale first, horizontal before vertical. Kept apart from
@@ -128,11 +179,17 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
 {
     uint32_t levels, level, axis;
     uint8_t *cur = ws, *const end = ws + ws_size;
-    sl_pass *p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
-    levels = level_count(cfg, d->img->width, d->img->height);
+    sl_pass *p;
+    /* The field boundary's rows stay through the passes (the boundary's own
+     * workspace is free again). */
+    d->field_rows = cfg->field_boundary == SYMLINE_FIELD_DROP
+                        ? (uint16_t *)sl_carve(&cur, end, (size_t)d->img->width * sizeof(uint16_t))
+                        : NULL;
+    p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
+    levels = sl_level_count(cfg, d->img->width, d->img->height);
     for (level = 0; level < levels && p != NULL; level++) {
-        for (axis = 0; axis < axis_count(cfg); axis++) {
-            sl_pass_setup(p, cfg, axis_of(cfg, axis), level, d->img->width, d->img->height);
+        for (axis = 0; axis < sl_axis_count(cfg); axis++) {
+            sl_pass_setup(p, cfg, sl_axis_of(cfg, axis), level, d->img->width, d->img->height);
             if (cfg->adaptive) {
                 sl_linefilter_adapt(&p->filter, cfg, &d->stats);
             }
@@ -158,7 +215,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
         (out->points == NULL && out->point_cap != 0u)) {
         return SYMLINE_ERR_NULL;
     }
-    st = check_config(cfg);
+    st = sl_config_check(cfg);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -174,8 +231,14 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.truncated = false;
     d.stats.mean = 0u;
     d.stats.sigma_q4 = 0u;
+    out->field.count = 0u;
+    if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
+        sl_field_run(img, &cfg->field, (uint8_t *)ws, ws_size, &out->field);
+    }
     if (cfg->adaptive) {
-        sl_frame_stats_measure(img, &d.stats);
+        /* Detections kept above the field are measured against the whole frame. */
+        field_stats(img, cfg->field_boundary == SYMLINE_FIELD_DROP ? &out->field : NULL,
+                    (uint8_t *)ws, ws_size, &d.stats);
     }
     run_passes(cfg, (uint8_t *)ws, ws_size, &d);
     out->point_count = d.npts;

@@ -16,6 +16,9 @@
 
 #include "fixed.h"
 
+/* The statistics read every SL_STATS_STEP-th pixel of every SL_STATS_STEP-th row. */
+#define SL_STATS_STEP 2u
+
 void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg)
 {
     f->kind = cfg->filter;
@@ -31,32 +34,41 @@ void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg)
 }
 
 /* Summed per row so a row's sums stay in 32 bits. */
-SL_NOINLINE void sl_frame_stats_measure(const symline_image *img, sl_frame_stats *st)
+SL_NOINLINE void sl_frame_stats_measure(const symline_image *img, const uint16_t *top,
+                                        uint32_t *hist, sl_frame_stats *st)
 {
-    uint64_t sum = 0u, sq = 0u;
-    const uint64_t n = (uint64_t)img->width * img->height;
-    int64_t var_q8;
-    uint32_t x, y;
+    uint32_t x, y, i, n = 0u, half, acc, med, mad;
+    for (i = 0; i < 256u; i++) {
+        hist[i] = 0u;
+    }
+    for (y = 0; y < img->height; y += SL_STATS_STEP) {
+        const uint8_t *row = img->data + (size_t)y * img->stride;
+        for (x = 0; x < img->width; x += SL_STATS_STEP) {
+            if (top == NULL || y >= top[x]) {
+                hist[row[x]]++;
+                n++;
+            }
+        }
+    }
     st->mean = 0u;
     st->sigma_q4 = 0u;
     if (n == 0u) {
         return;
     }
-    for (y = 0; y < img->height; y++) {
-        const uint8_t *row = img->data + (size_t)y * img->stride;
-        uint32_t rs = 0u, rq = 0u; /* 255^2 * 65535 < 2^32 */
-        for (x = 0; x < img->width; x++) {
-            const uint32_t v = row[x];
-            rs += v;
-            rq += v * v;
-        }
-        sum += rs;
-        sq += rq;
+    half = (n + 1u) / 2u;
+    for (med = 0u, acc = 0u; med < 255u && acc + hist[med] < half; med++) {
+        acc += hist[med];
     }
-    st->mean = (uint32_t)((sum + n / 2u) / n);
-    /* var = sq/n - (sum/n)^2, in Q8 (rounding may make it slightly negative). */
-    var_q8 = (int64_t)((sq << 8) / n) - (int64_t)(((sum << 4) / n) * ((sum << 4) / n));
-    st->sigma_q4 = var_q8 > 0 ? (uint32_t)sl_isqrt64((uint64_t)var_q8) : 0u;
+    /* Median absolute deviation: widen a window around the median until it
+     * holds half of the samples. */
+    acc = hist[med];
+    for (mad = 0u; mad < 255u && acc < half;) {
+        mad++;
+        acc += (med >= mad ? hist[med - mad] : 0u) + (med + mad <= 255u ? hist[med + mad] : 0u);
+    }
+    st->mean = med;
+    /* sigma = 1.4826 MAD for normal noise, Q4: MAD * 23.7. */
+    st->sigma_q4 = (mad * 2372u + 50u) / 100u;
 }
 
 /* A sigma10 / 10 * sigma_q4 / 16 multiple of sigma: the divisor 160. */
@@ -95,17 +107,23 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
  * At most 4096 points are summed, so every product stays in 32 bits.
  */
 #define SL_SIDE_SAMPLES 4096u
-SL_NOINLINE bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img,
-                                            symline_axis axis, uint32_t level, uint32_t k,
-                                            const symline_point *q, uint32_t n)
+/* Length (px) at which a piece's mean ridge must reach twice the per-point
+ * threshold (docs/detector.md: measured on the annotated real frames and the
+ * synthetic sets). */
+#define SL_SHORT_PX 16u
+
+SL_NOINLINE bool sl_linefilter_piece_fails(const sl_linefilter *f, const symline_image *img,
+                                           symline_axis axis, uint32_t level, uint32_t k,
+                                           const symline_point *q, uint32_t n)
 {
     const bool horiz = axis == SYMLINE_AXIS_HORIZONTAL;
     const uint32_t half = (1u << level) >> 1, off = k << level;
     const uint32_t step = n / SL_SIDE_SAMPLES + 1u;
     const size_t across = horiz ? img->stride : 1u;
     const uint32_t lim = horiz ? img->height : img->width;
-    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side;
-    for (i = 0; i < n; i += step) {
+    const uint32_t len = n << level;
+    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side, cnt = 0u;
+    for (i = 0; i < n; i += step, cnt++) {
         /* Grid points map inside the frame: (v << level) + half < size. */
         const uint32_t x = ((uint32_t)q[i].x << level) + half;
         const uint32_t y = ((uint32_t)q[i].y << level) + half;
@@ -116,6 +134,13 @@ SL_NOINLINE bool sl_linefilter_sides_differ(const sl_linefilter *f, const symlin
         sum_hi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
     }
     side = sum_lo > sum_hi ? sum_lo : sum_hi;
+    /* A short piece must stand out more than a long one: the carpet's grain
+     * forms short ridges just over the per-point threshold, a faint painted
+     * line runs on. Mean ridge >= ridge_min * (len + SL_SHORT_PX) / len. */
+    if (sum_centre > side &&
+        (uint64_t)(sum_centre - side) * len < (uint64_t)f->ridge_min * cnt * (len + SL_SHORT_PX)) {
+        return true;
+    }
     return sum_centre <= side ||
            (sum_lo > sum_hi ? sum_lo - sum_hi : sum_hi - sum_lo) * (2u * f->asym_pct) >
                (sum_centre - side) * 100u;

@@ -21,17 +21,25 @@ typedef struct sl_linefilter {
     uint32_t a_distance; /* paper: A point search distance across the line, grid px; 0 otherwise */
 } sl_linefilter;
 
-/* Mean and standard deviation of a frame's gray values. */
+/* Level and spread of the gray values the thresholds adapt to, robust to the
+ * lines, robots and lights among them. */
 typedef struct sl_frame_stats {
-    uint32_t mean;     /* gray levels, rounded */
-    uint32_t sigma_q4; /* gray levels, Q4 */
+    uint32_t mean;     /* the median, gray levels */
+    uint32_t sigma_q4; /* 1.4826 x the median absolute deviation (the standard
+                          deviation of normal noise), gray levels, Q4 */
 } sl_frame_stats;
 
 /* The thresholds as configured (no range checks). */
 void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg);
 
-/* One read of the frame: its mean and standard deviation. */
-void sl_frame_stats_measure(const symline_image *img, sl_frame_stats *st);
+/* Scratch of sl_frame_stats_measure(): a histogram of the gray values. */
+#define SL_STATS_HIST_BYTES (256u * sizeof(uint32_t))
+
+/* The statistics of the field (rows y >= top[x] of each column x; top NULL:
+ * the whole frame) on every 2nd pixel of every 2nd row. hist:
+ * SL_STATS_HIST_BYTES of scratch. Both 0 when no pixel is measured. */
+void sl_frame_stats_measure(const symline_image *img, const uint16_t *top, uint32_t *hist,
+                            sl_frame_stats *st);
 
 /* The adaptive thresholds (cfg->adaptive) folded into f: each only raises
  * the configured one (side_max: replaces it unless side_sigma10 is 100). */
@@ -88,12 +96,15 @@ static inline bool sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *m
 }
 
 /*
- * The contrast filter's "sides alike" test once more, over a whole traced
- * piece q[0..n-1] (grid coordinates at `level`; k: the pass's sample offset
- * across the line in grid px): true when its sides differ too much for a line
- * on the carpet. Only for the contrast filter with asym_pct != 0.
+ * The contrast filter once more, over a whole traced piece q[0..n-1] (grid
+ * coordinates at `level`; k: the pass's sample offset across the line in grid
+ * px), on the gray values summed along it: true when its sides differ too
+ * much for a line on the carpet ("sides alike" with 2 x asym_pct), or when
+ * its mean ridge stays under ridge_min * (len + 16) / len for its length len
+ * in px (the carpet's grain makes short ridges). Only for the contrast filter
+ * with asym_pct != 0.
  */
-bool sl_linefilter_sides_differ(const sl_linefilter *f, const symline_image *img, symline_axis axis,
-                                uint32_t level, uint32_t k, const symline_point *q, uint32_t n);
+bool sl_linefilter_piece_fails(const sl_linefilter *f, const symline_image *img, symline_axis axis,
+                               uint32_t level, uint32_t k, const symline_point *q, uint32_t n);
 
 #endif /* SYMLINE_LIB_LINEFILTER_H */

@@ -92,10 +92,23 @@ SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_s
                                        uint32_t curve_q8)
 {
     uint32_t d = sl_max_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    uint32_t sm = sl_smooth_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     const uint32_t d2 =
         sl_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    const uint32_t sm2 =
+        sl_smooth_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     d = d2 > d ? d2 : d;
-    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], d, curve_q8) ? SL_JOINED_IS_CURVE : d;
+    sm = sm2 > sm ? sm2 : sm;
+    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_JOINED_IS_CURVE : d;
+}
+
+/* A line may join; so may a piece taken for a curve whose points, smoothed,
+ * stay within half the curve threshold of its chord: a straight piece whose
+ * ridge jitters on the turf, not an arc of the circle. */
+static bool joinable(const symline_segment *s, const symline_point *pts, uint32_t curve_q8)
+{
+    return s->kind == SYMLINE_KIND_LINE ||
+           sl_smooth_dev(pts + s->first, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <= curve_q8 / 2u;
 }
 
 /* A segment's ends, Q8. */
@@ -149,9 +162,6 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
     while (changed) {
         changed = false;
         for (i = 0; i < r->segment_count; i++) {
-            if (r->segments[i].kind != SYMLINE_KIND_LINE) {
-                continue;
-            }
             for (j = i + 1u; j < r->segment_count; j++) {
                 int32_t ends[4];
                 uint32_t dev;
@@ -159,7 +169,8 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 const symline_segment *b = &r->segments[j];
                 const uint32_t level = a->level > b->level ? a->level : b->level;
                 const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
-                if (b->kind != SYMLINE_KIND_LINE) {
+                if (!joinable(a, r->points, curve_dev_q8) ||
+                    !joinable(b, r->points, curve_dev_q8)) {
                     continue;
                 }
                 if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(level), ends)) {
@@ -171,6 +182,7 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 }
                 set_ends(a, ends[0], ends[1], ends[2], ends[3]);
                 a->max_dev = dev;
+                a->kind = SYMLINE_KIND_LINE;
                 a->level = (uint8_t)level;
                 a->merged = true; /* points piece after piece (curvejoin.c) */
                 absorb(r, i, j);

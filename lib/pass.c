@@ -9,10 +9,13 @@
  */
 #include "pass.h"
 
+#include "fieldboundary.h"
+
 #include "fixed.h"
 #include "segments.h"
 #include "subpixel.h"
 #include "tracer.h"
+#include "linecheck.h"
 
 /* A point lies on an earlier segment within 2 px, plus the block size of its scale. */
 #define SL_COVER_TOL_Q8 SL_PX_Q8(2u)
@@ -20,6 +23,9 @@
  * the finest scales only: coarser grids step by 4 px and more. */
 #define SL_BEND_MIN_PX 16u
 #define SL_BEND_MAX_LEVEL 1u
+/* Fewest points of a reported piece at any scale: three coarse blocks in a row
+ * are a blob's rim as often as a line. */
+#define SL_MIN_PIECE_POINTS 4u
 
 void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
                    uint32_t width, uint32_t height)
@@ -53,11 +59,14 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     symline_point *q = d->r->points + at;
     symline_segment *s;
     uint32_t i;
-    if ((n << p->level) < d->cfg->min_length || n < 2u) {
+    if ((n << p->level) < d->cfg->min_length || n < SL_MIN_PIECE_POINTS) {
+        return;
+    }
+    if (d->field_rows != NULL && sl_linecheck_too_wide(d->field_rows, p->level, p->h, q, n)) {
         return;
     }
     if (p->filter.kind == SYMLINE_FILTER_CONTRAST && p->filter.asym_pct != 0u &&
-        sl_linefilter_sides_differ(&p->filter, d->img, p->axis, p->level, p->k, q, n)) {
+        sl_linefilter_piece_fails(&p->filter, d->img, p->axis, p->level, p->k, q, n)) {
         return;
     }
     if (d->nseg >= d->r->segment_cap) {
@@ -149,8 +158,15 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
                                           const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
-    return sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
-                      d->r->point_cap - d->npts, n, row_start, &d->truncated);
+    symline_status st = sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
+                                   d->r->point_cap - d->npts, n, row_start, &d->truncated);
+    if (st == SYMLINE_OK && d->field_rows != NULL) {
+        /* Above the field: nothing to trace. */
+        sl_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
+                      d->field_rows);
+        *n = sl_field_drop(d->field_rows, d->r->points + d->npts, row_start, p->h);
+    }
+    return st;
 }
 
 symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end)

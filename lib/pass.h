@@ -23,6 +23,8 @@ typedef struct sl_run {
     uint32_t npts;        /* points kept so far: [0, npts) */
     sl_frame_stats stats; /* for the adaptive thresholds (cfg->adaptive) */
     bool truncated;
+    uint16_t *field_rows; /* NULL, or width entries: line points above the field
+                             boundary (d->r->field) are dropped before tracing */
 } sl_run;
 
 /* Fills a pass from the configuration (no range checks; the adaptive

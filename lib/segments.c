@@ -76,25 +76,59 @@ uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t
     return sl_div_q8(cross, len);
 }
 
-uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
-                    int32_t x1, int32_t y1)
+/* Cross product of point q's offset from (x0, y0) with the chord direction
+ * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
+ * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
+ * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
+static inline int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0, int32_t y0,
+                                  int32_t dx, int32_t dy)
 {
-    const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
-    const uint64_t len = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
+    const int32_t wx = sl_pt_q8x(q, level) - x0, wy = sl_pt_q8y(q, level) - y0;
+    return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
+                          : (int64_t)wx * dy - (int64_t)wy * dx;
+}
+
+/* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]. */
+static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
+                           int32_t y0, int32_t dx, int32_t dy, uint32_t win)
+{
+    int64_t sum = 0;
     uint64_t best = 0u;
     uint32_t i;
-    /* The largest cross product first, one square root and one division at the end. */
     for (i = 0; i < n; i++) {
-        const int64_t wx = (int64_t)sl_pt_q8x(&p[i], level) - x0;
-        const int64_t wy = (int64_t)sl_pt_q8y(&p[i], level) - y0;
-        const int64_t c = len == 0u ? wx * wx + wy * wy : wx * dy - wy * dx;
-        const uint64_t a = (uint64_t)(c < 0 ? -c : c);
-        best = a > best ? a : best;
+        sum += chord_cross(&p[i], level, x0, y0, dx, dy);
+        if (i >= win) {
+            sum -= chord_cross(&p[i - win], level, x0, y0, dx, dy);
+        }
+        if (i + 1u >= win) {
+            const uint64_t m = (uint64_t)(sum < 0 ? -sum : sum);
+            best = m > best ? m : best;
+        }
     }
-    if (len == 0u) {
+    return best;
+}
+
+SL_NOINLINE uint32_t sl_chord_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
+                                  int32_t y0, int32_t x1, int32_t y1, uint32_t win)
+{
+    const int32_t dx = x1 - x0, dy = y1 - y0;
+    uint64_t best, len;
+    if (n == 0u) {
+        return 0u;
+    }
+    /* The cross product is linear in the point: a window's mean point lies
+     * sum / win from the chord. The largest one first, one square root and
+     * one division at the end. With no direction: the distance to the end
+     * itself, point by point. */
+    win = (dx | dy) == 0 || win < 1u ? 1u : (win > n ? n : win);
+    best = window_max(p, n, level, x0, y0, dx, dy, win);
+    if ((dx | dy) == 0) {
         return (uint32_t)sl_isqrt64(best);
     }
-    return sl_div_q8(best, len);
+    len = sl_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    /* floor(floor(best / win) / len) = floor(best / (win len)): no 64-bit
+     * division (its library helper's frame would deepen the stack). */
+    return sl_div_q8(best, len * win);
 }
 
 /* A curve bends away from its chord by more than the threshold and by more
@@ -245,7 +279,8 @@ void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_d
     bool curve;
     chord_ends(p, n, level, s);
     s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
-    curve = sl_is_curve(s->x0, s->y0, s->x1, s->y1, s->max_dev, thr);
+    curve = sl_is_curve(s->x0, s->y0, s->x1, s->y1,
+                        sl_smooth_dev(p, n, level, s->x0, s->y0, s->x1, s->y1), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
         s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);

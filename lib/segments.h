@@ -31,10 +31,31 @@ void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
 /* Distance (Q8) of (px, py) to the line through a with direction (dx, dy), all Q8. */
 uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py);
 
-/* Largest distance (Q8) of points p[0..n-1] (grid coordinates at `level`;
- * level 0 for full-resolution points) to the chord (x0,y0)-(x1,y1) (Q8). */
-uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
-                    int32_t x1, int32_t y1);
+/* Largest distance (Q8) to the chord (x0,y0)-(x1,y1) (Q8) of the mean of
+ * every `win` consecutive points of p[0..n-1] (grid coordinates at `level`;
+ * level 0 for full-resolution points); win 1: of every point. With equal
+ * chord ends: the distance to that end. 0 for no points. */
+uint32_t sl_chord_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
+                      int32_t x1, int32_t y1, uint32_t win);
+
+/* Points per window of the smoothed deviation: a traced ridge on turf jitters
+ * by a pixel or two from point to point, an arc's sagitta does not average out. */
+#define SL_SMOOTH_WIN 5u
+
+/* Largest distance (Q8) of the points to the chord: a segment's max_dev. */
+static inline uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
+                                  int32_t y0, int32_t x1, int32_t y1)
+{
+    return sl_chord_dev(p, n, level, x0, y0, x1, y1, 1u);
+}
+
+/* The same for the mean of every SL_SMOOTH_WIN consecutive points: the bend
+ * of the piece without the point-to-point jitter of its ridge. */
+static inline uint32_t sl_smooth_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
+                                     int32_t y0, int32_t x1, int32_t y1)
+{
+    return sl_chord_dev(p, n, level, x0, y0, x1, y1, SL_SMOOTH_WIN);
+}
 
 /* Curve test: max_dev above thr and above 1/32 of the chord. */
 bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr);

@@ -34,6 +34,7 @@ static const num_opt num_opts[] = {
     {"--curve-bend", 0, 65535u << 8, offsetof(symline_config, curve_bend_q8), 0, false},
     {"--merge-gap", 0, 65535, offsetof(symline_config, merge_gap), 0, false},
     {"--merge-dev", 0, 65535u << 8, offsetof(symline_config, merge_dev_q8), 0, false},
+    {"--field-margin", 0, 65535, offsetof(symline_config, field_margin), 0, false},
 };
 #define NUM_OPTS (sizeof num_opts / sizeof num_opts[0])
 
@@ -93,6 +94,17 @@ int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t e
             d->cfg.filter = SYMLINE_FILTER_PAPER;
         } else {
             snprintf(err, errlen, "--filter needs contrast or paper");
+            return -1;
+        }
+    } else if (strcmp(name, "--field") == 0) {
+        if (value != NULL && strcmp(value, "drop") == 0) {
+            d->cfg.field_boundary = SYMLINE_FIELD_DROP;
+        } else if (value != NULL && strcmp(value, "keep") == 0) {
+            d->cfg.field_boundary = SYMLINE_FIELD_KEEP;
+        } else if (value != NULL && strcmp(value, "off") == 0) {
+            d->cfg.field_boundary = SYMLINE_FIELD_OFF;
+        } else {
+            snprintf(err, errlen, "--field needs drop, keep or off");
             return -1;
         }
     } else if ((k = opt_index(name)) >= 0) {
@@ -166,8 +178,14 @@ void detopts_help(FILE *f)
             "                      scale, 0 = off (%u)\n"
             "  --merge-gap PX      merge collinear lines up to PX apart (default width/8,\n"
             "                      0 = no merging)\n"
-            "  --merge-dev Q8      merge tolerance across the line, 1/256 px (%u)\n",
+            "  --merge-dev Q8      merge tolerance across the line, 1/256 px (%u)\n"
+            "  --field drop|keep|off   field boundary (symline boundary): reported as\n"
+            "                      field_boundary; drop: line points above it are not\n"
+            "                      traced (default); keep: nothing dropped; off: not\n"
+            "                      computed\n"
+            "  --field-margin PX   drop keeps points up to PX above the boundary (%u)\n",
             c.radius, c.illumination, c.adaptive ? 1u : 0u, (int)c.bright_sigma10 + 100,
             c.ridge_sigma10, (int)c.side_sigma10 + 100, c.contrast_pct, c.contrast_min,
-            c.contrast_asym_pct, c.min_length, c.curve_dev_q8, c.curve_bend_q8, c.merge_dev_q8);
+            c.contrast_asym_pct, c.min_length, c.curve_dev_q8, c.curve_bend_q8, c.merge_dev_q8,
+            c.field_margin);
 }

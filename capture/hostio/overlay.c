@@ -99,6 +99,7 @@ int overlay_write_ix(const char *path, const uint8_t *gray, uint32_t width, uint
 {
     static const uint8_t RED[3] = {255, 40, 40};
     static const uint8_t CYAN[3] = {0, 230, 255};
+    static const uint8_t YELLOW[3] = {255, 220, 0};
     imgio_rgb o;
     uint32_t i, k, x, y;
     int rc;
@@ -129,6 +130,11 @@ int overlay_write_ix(const char *path, const uint8_t *gray, uint32_t width, uint
                 draw_line(&o, p[k - 1].x, p[k - 1].y, p[k].x, p[k].y, CYAN, 1, &phase);
             }
         }
+    }
+    for (k = 1; k < r->field.count && k < SYMLINE_FIELD_MAX_VERTICES; k++) {
+        uint32_t phase = 0u;
+        const symline_field_vertex *a = &r->field.v[k - 1u], *b = &r->field.v[k];
+        draw_line(&o, a->x, a->y, b->x, b->y, YELLOW, 0, &phase);
     }
     for (i = 0; ix != NULL && i < ix->count; i++) {
         draw_intersection(&o, &ix->items[i]);

@@ -15,7 +15,8 @@
  * Writes the gray frame (width x height, `stride` bytes per row), dimmed to
  * 3/4, in colour with the segments of r drawn over it: lines solid red along
  * their chord, curves dotted cyan along their points; a 3-pixel pen on
- * frames 480 px wide or more. PNG when path ends in ".png", else PPM.
+ * frames 480 px wide or more; the field boundary (r->field, when computed)
+ * solid yellow. PNG when path ends in ".png", else PPM.
  * Returns 0, or -1 with a message naming the file in err.
  */
 int overlay_write(const char *path, const uint8_t *gray, uint32_t width, uint32_t height,

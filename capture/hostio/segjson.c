@@ -119,6 +119,14 @@ int segjson_write_ix(FILE *f, uint32_t width, uint32_t height, const symline_res
         fputc('}', f);
     }
     fputs(r->segment_count ? "\n ]" : "]", f);
+    if (r->field.count > 0u) {
+        fputs(",\n \"field_boundary\": [", f);
+        for (k = 0; k < r->field.count && k < SYMLINE_FIELD_MAX_VERTICES; k++) {
+            fprintf(f, "%s[%ld, %ld]", k == 0u ? "" : ", ", (long)r->field.v[k].x,
+                    (long)r->field.v[k].y);
+        }
+        fputc(']', f);
+    }
     if (ix != NULL) {
         put_intersections(f, ix);
     }

@@ -16,9 +16,12 @@
  *   {"width": W, "height": H, "truncated": false,
  *    "segments": [{"x0":..,"y0":..,"x1":..,"y1":..,"points":N,"max_dev":..,
  *                  "kind":"line"|"curve","axis":"horizontal"|"vertical","level":L
- *                  [, "polyline": [[x,y],...]]}, ...]}
+ *                  [, "polyline": [[x,y],...]]}, ...]
+ *    [, "field_boundary": [[x,y],...]]}
  * Coordinates and max_dev in pixels (Q8 values printed with 2 decimals).
  * Curves carry a polyline through every 4th of their points and the last one.
+ * "field_boundary" (integer pixels, x increasing from 0 to W-1; rows at and
+ * below the polyline are field) is written when r->field.count > 0.
  * Ends with a newline. Returns 0, or -1 when writing failed.
  */
 int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r);

@@ -56,8 +56,8 @@ static void report(const fw_frame *f, const char *what, const char *axis, uint64
     const uint64_t px = (uint64_t)f->width * f->height;
     const uint64_t ipp100 = (insn * 100u + px / 2u) / px;
     printf("icount %lux%lu m=%u %-10s %-9s %9lu instructions %4lu.%02lu per pixel%s\n",
-           (unsigned long)f->width, (unsigned long)f->height, M, axis, what,
-           (unsigned long)insn, (unsigned long)(ipp100 / 100u), (unsigned long)(ipp100 % 100u),
+           (unsigned long)f->width, (unsigned long)f->height, M, axis, what, (unsigned long)insn,
+           (unsigned long)(ipp100 / 100u), (unsigned long)(ipp100 % 100u),
            st == SYMLINE_OK ? "" : "  (call FAILED)");
 }
 
@@ -92,7 +92,7 @@ static symline_point pts[16384];
 static int run_detect(const fw_frame *f, const symline_config *cfg, const char *what)
 {
     const symline_image img = {f->width, f->height, f->width, f->px};
-    symline_result res = {segs, 256u, 0u, pts, 16384u, 0u, 0u};
+    symline_result res = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}};
     const size_t need = symline_detect_workspace_size(f->width, f->height, cfg);
     uint64_t t0;
     symline_status st = SYMLINE_ERR_BUFFER;
@@ -114,7 +114,7 @@ static void point_storage(const fw_frame *f, const symline_config *cfg, const ch
     uint32_t lo = 0u, hi = 16384u, used = 0u;
     while (lo < hi) {
         const uint32_t mid = (lo + hi) / 2u;
-        symline_result res = {segs, 256u, 0u, pts, mid, 0u, 0u};
+        symline_result res = {segs, 256u, 0u, pts, mid, 0u, 0u, {0}};
         if (symline_detect(&img, cfg, det_ws, need, &res) == SYMLINE_OK && !res.truncated) {
             hi = mid;
             used = res.point_count;
@@ -141,7 +141,8 @@ static void workspace_sizes(void)
             one = def;
             one.axes = SYMLINE_AXES_HORIZONTAL;
             one.levels = 1u;
-            printf("workspace %lux%lu m=%lu: one axis, one scale %lu bytes; default config %lu bytes\n",
+            printf("workspace %lux%lu m=%lu: one axis, one scale %lu bytes; default config %lu "
+                   "bytes\n",
                    (unsigned long)dims[d][0], (unsigned long)dims[d][1], (unsigned long)radii[r],
                    (unsigned long)symline_detect_workspace_size(dims[d][0], dims[d][1], &one),
                    (unsigned long)symline_detect_workspace_size(dims[d][0], dims[d][1], &def));

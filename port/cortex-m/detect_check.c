@@ -27,7 +27,7 @@ static symline_point pts[PT_CAP];
 static int detect(const char *name, const fw_frame *f, const symline_config *cfg)
 {
     const symline_image img = {f->width, f->height, f->width, f->px};
-    symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u};
+    symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u, {0}};
     const size_t need = symline_detect_workspace_size(f->width, f->height, cfg);
     symline_status st;
     if (need == 0u || need > sizeof ws) {
@@ -46,10 +46,8 @@ int main(void)
         const char *name;
         const fw_frame *f;
     } frames[] = {
-        {"crop centreline 96x72", &in_crops_centreline},
-        {"crop circle 96x72", &in_crops_circle},
-        {"crop goalarea 96x72", &in_crops_goalarea},
-        {"msl window 160x120", &fw_bench_160x120},
+        {"crop centreline 96x72", &in_crops_centreline}, {"crop circle 96x72", &in_crops_circle},
+        {"crop goalarea 96x72", &in_crops_goalarea},     {"msl window 160x120", &fw_bench_160x120},
         {"msl window 320x240", &fw_bench_320x240},
     };
     symline_config def, paper;

@@ -36,21 +36,21 @@ static inline uintptr_t stack_pointer(void)
     return sp;
 }
 
-#define MEASURE(name, call)                                                              \
-    do {                                                                                 \
-        volatile uint32_t *lo = (volatile uint32_t *)(stack_pointer() - REGION);         \
-        volatile uint32_t *p;                                                            \
-        uintptr_t sp = stack_pointer();                                                  \
-        symline_status st;                                                               \
-        for (p = lo; (uintptr_t)p < sp - 16u; p++) {                                     \
-            *p = PATTERN;                                                                \
-        }                                                                                \
-        st = (call);                                                                     \
-        for (p = lo; (uintptr_t)p < sp && *p == PATTERN; p++) {                          \
-        }                                                                                \
-        printf("stack %-21s %4lu B used%s\n", name, (unsigned long)(sp - (uintptr_t)p),  \
-               st == SYMLINE_OK ? "" : " (call FAILED)");                                \
-        bad |= st != SYMLINE_OK;                                                         \
+#define MEASURE(name, call)                                                                        \
+    do {                                                                                           \
+        volatile uint32_t *lo = (volatile uint32_t *)(stack_pointer() - REGION);                   \
+        volatile uint32_t *p;                                                                      \
+        uintptr_t sp = stack_pointer();                                                            \
+        symline_status st;                                                                         \
+        for (p = lo; (uintptr_t)p < sp - 16u; p++) {                                               \
+            *p = PATTERN;                                                                          \
+        }                                                                                          \
+        st = (call);                                                                               \
+        for (p = lo; (uintptr_t)p < sp && *p == PATTERN; p++) {                                    \
+        }                                                                                          \
+        printf("stack %-14s %4lu B used%s\n", name, (unsigned long)(sp - (uintptr_t)p),            \
+               st == SYMLINE_OK ? "" : " (call FAILED)");                                          \
+        bad |= st != SYMLINE_OK;                                                                   \
     } while (0)
 
 int main(void)
@@ -68,10 +68,10 @@ int main(void)
     paper = def;
     paper.filter = SYMLINE_FILTER_PAPER;
     paper.illumination = 100u;
-    MEASURE("symline_symmetry", symline_symmetry(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, f->width,
-                                                 n, ws, sizeof ws));
-    MEASURE("symline_extrema", symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, f->width,
-                                               n, ws, sizeof ws));
+    MEASURE("symline_symmetry",
+            symline_symmetry(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, f->width, n, ws, sizeof ws));
+    MEASURE("symline_extrema",
+            symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, f->width, n, ws, sizeof ws));
     MEASURE("symline_detect", symline_detect(&img, &def, ws, sizeof ws, &r1));
     MEASURE("symline_detect", symline_detect(&img, &paper, ws, sizeof ws, &r2));
     symline_intersection_config_default(&icfg);

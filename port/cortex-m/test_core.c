@@ -90,30 +90,41 @@ static void check_errors(uint8_t *ws)
         small[i] = 0xA5u;
     }
     FW_CHECK(symline_symmetry(NULL, SYMLINE_AXIS_VERTICAL, 3u, small, 4u, 12u, ws, WS_BYTES) ==
-                 SYMLINE_ERR_NULL, "NULL image");
-    FW_CHECK(symline_symmetry(&no_data, SYMLINE_AXIS_VERTICAL, 3u, small, 4u, 12u, ws,
-                              WS_BYTES) == SYMLINE_ERR_NULL, "NULL pixels");
+                 SYMLINE_ERR_NULL,
+             "NULL image");
+    FW_CHECK(symline_symmetry(&no_data, SYMLINE_AXIS_VERTICAL, 3u, small, 4u, 12u, ws, WS_BYTES) ==
+                 SYMLINE_ERR_NULL,
+             "NULL pixels");
     FW_CHECK(symline_symmetry(&bad_stride, SYMLINE_AXIS_VERTICAL, 3u, small, 4u, 12u, ws,
-                              WS_BYTES) == SYMLINE_ERR_STRIDE, "image stride < width");
+                              WS_BYTES) == SYMLINE_ERR_STRIDE,
+             "image stride < width");
     FW_CHECK(symline_symmetry(&img, SYMLINE_AXIS_VERTICAL, 0u, small, 4u, 12u, ws, WS_BYTES) ==
-                 SYMLINE_ERR_RADIUS, "m = 0");
+                 SYMLINE_ERR_RADIUS,
+             "m = 0");
     FW_CHECK(symline_symmetry(&img, SYMLINE_AXIS_VERTICAL, 256u, small, 4u, 12u, ws, WS_BYTES) ==
-                 SYMLINE_ERR_RADIUS, "m = 256");
+                 SYMLINE_ERR_RADIUS,
+             "m = 256");
     FW_CHECK(symline_symmetry(&img, (symline_axis)7, 3u, small, 4u, 12u, ws, WS_BYTES) ==
-                 SYMLINE_ERR_AXIS, "bad axis");
+                 SYMLINE_ERR_AXIS,
+             "bad axis");
     FW_CHECK(symline_symmetry(&img, SYMLINE_AXIS_VERTICAL, 3u, small, 4u, 11u, ws, WS_BYTES) ==
-                 SYMLINE_ERR_BUFFER, "output one byte short");
+                 SYMLINE_ERR_BUFFER,
+             "output one byte short");
     /* Far too small whatever the alignment of ws (the size includes alignment slack). */
     FW_CHECK(symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, small, 4u, 12u, ws, 8u) ==
-                 SYMLINE_ERR_BUFFER, "workspace of 8 bytes");
+                 SYMLINE_ERR_BUFFER,
+             "workspace of 8 bytes");
     FW_CHECK(symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, small, 4u, 12u, NULL, need) ==
-                 SYMLINE_ERR_NULL, "NULL workspace");
+                 SYMLINE_ERR_NULL,
+             "NULL workspace");
     FW_CHECK(symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, small, 3u, 12u, ws, need) ==
-                 SYMLINE_ERR_STRIDE, "map stride < width");
+                 SYMLINE_ERR_STRIDE,
+             "map stride < width");
     FW_CHECK(symline_energy_row(px, 0u, 3u, E) == SYMLINE_ERR_SIZE, "empty row");
     FW_CHECK(symline_s8_row(E, 4u, 0u, small) == SYMLINE_ERR_RADIUS, "s8 radius 0");
     FW_CHECK(first_diff(small, (const uint8_t *)"\xA5\xA5\xA5\xA5\xA5\xA5\xA5\xA5\xA5\xA5\xA5\xA5",
-                        12u) == 12u, "an output was written by a failing call");
+                        12u) == 12u,
+             "an output was written by a failing call");
 }
 
 int main(void)

@@ -50,5 +50,18 @@ expect 0 "" -- symmetry --axis horizontal --radius 3 "$tmp/o.png" "$tmp/o2.pgm"
 
 expect 0 "" -- convert "$good" "$tmp/c.png"
 expect 2 "convert" -- convert "$good"
+
+# Feature points and histograms (SPEC §6), the line method option.
+expect 0 "--radius" -- features --help
+expect 0 "--plot" -- histogram --help
+expect 2 "usage" -- features "$good"
+expect 2 "--radius" -- histogram --radius 0 "$good"
+expect 2 "unknown option" -- features --radius 3 --plot "$tmp/p.png" "$good"
+expect 2 "missing.pgm: cannot open" -- features --radius 3 "$tmp/missing.pgm"
+expect 0 "\"points\": \[" -- features --radius 3 "$good"
+expect 0 "\"counts\": \[" -- histogram --radius 3 --plot "$tmp/h.pgm" "$good"
+expect 1 "cannot create" -- histogram --radius 3 --plot "$tmp/no/such/dir/h.pgm" "$good"
+expect 2 "--method" -- lines --method hough "$good"
+expect 0 "\"segments\"" -- lines --method muff "$good"
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

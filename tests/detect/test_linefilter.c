@@ -101,23 +101,46 @@ static void statistics_and_adaptive_thresholds(void **state)
     sl_frame_stats st;
     symline_config cfg;
     sl_linefilter f;
+    uint16_t top[20];
+    uint32_t hist[256];
+    uint32_t i;
     (void)state;
-    /* Half 0, half 200: mean 100, sigma 100. */
-    memset(px, 0, sizeof px);
-    memset(px, 200, sizeof px / 2u);
+    /* Rows 0-3: a bright wall (250); rows 4-9: carpet whose sampled columns
+     * (every 2nd) read 90 (3), 100 (4) and 110 (3). */
+    for (i = 0; i < 20u * 10u; i++) {
+        const uint32_t x = i % 20u;
+        px[i] = (uint8_t)(i < 4u * 20u ? 250u : (x < 6u ? 90u : (x < 14u ? 100u : 110u)));
+    }
     img.width = 20;
     img.height = 10;
     img.stride = 20;
     img.data = px;
-    sl_frame_stats_measure(&img, &st);
+    /* The whole frame: the wall's 20 of 50 samples pull the median to 110. */
+    sl_frame_stats_measure(&img, NULL, hist, &st);
+    assert_int_equal(st.mean, 110);
+    /* The field from row 4: median 100, MAD 10, sigma 1.4826 * 10 = 14.8 (Q4 237). */
+    for (i = 0; i < 20u; i++) {
+        top[i] = 4u;
+    }
+    sl_frame_stats_measure(&img, top, hist, &st);
     assert_int_equal(st.mean, 100);
-    assert_int_equal(st.sigma_q4, 1600);
+    assert_int_equal(st.sigma_q4, 237);
+    /* No field in the frame: nothing measured. */
+    for (i = 0; i < 20u; i++) {
+        top[i] = 10u;
+    }
+    sl_frame_stats_measure(&img, top, hist, &st);
+    assert_int_equal(st.mean, 0);
+    assert_int_equal(st.sigma_q4, 0);
+    /* Thresholds from a spread of 40 about a level of 100. */
+    st.mean = 100u;
+    st.sigma_q4 = 640u;
     symline_config_default(&cfg);
     sl_linefilter_setup(&f, &cfg);
     sl_linefilter_adapt(&f, &cfg, &st);
-    assert_int_equal(f.min_gray, 100);  /* mean + 0 sigma */
-    assert_int_equal(f.ridge_min, 100); /* 1.0 sigma */
-    assert_int_equal(f.side_max, 250);  /* mean + 1.5 sigma */
+    assert_int_equal(f.min_gray, 100); /* mean + 0 sigma */
+    assert_int_equal(f.ridge_min, 36); /* 0.9 sigma */
+    assert_int_equal(f.side_max, 220); /* mean + 3.0 sigma */
     /* Configured thresholds above the adaptive ones stay; side_sigma10 100 is off. */
     cfg.illumination = 150u;
     cfg.contrast_min = 120u;
@@ -138,8 +161,9 @@ static void statistics_and_adaptive_thresholds(void **state)
 }
 
 /* A horizontal band of gray `line` on row 20 of a 40x40 frame, `above` and
- * `below` it; the piece: its points x = 5..30. */
-static bool band_sides_differ(uint8_t line, uint8_t above, uint8_t below)
+ * `below` it; the piece: its points x = 5..30; the whole-piece test with
+ * this ridge_min. */
+static bool band_fails(uint8_t line, uint8_t above, uint8_t below, uint32_t ridge_min)
 {
     static uint8_t px[40 * 40];
     symline_point q[26];
@@ -160,16 +184,20 @@ static bool band_sides_differ(uint8_t line, uint8_t above, uint8_t below)
     img.data = px;
     symline_config_default(&cfg);
     sl_linefilter_setup(&f, &cfg);
-    return sl_linefilter_sides_differ(&f, &img, SYMLINE_AXIS_HORIZONTAL, 0, 4, q, 26);
+    f.ridge_min = ridge_min;
+    return sl_linefilter_piece_fails(&f, &img, SYMLINE_AXIS_HORIZONTAL, 0, 4, q, 26);
 }
 
 static void whole_piece_side_test(void **state)
 {
     (void)state;
-    assert_false(band_sides_differ(200, 60, 60));  /* a line on the carpet */
-    assert_false(band_sides_differ(200, 60, 75));  /* 15 apart: 4500 <= 12500 */
-    assert_true(band_sides_differ(200, 60, 140));  /* a wall's foot: 24000 > 6000 */
-    assert_true(band_sides_differ(100, 100, 100)); /* no ridge at all */
+    assert_false(band_fails(200, 60, 60, 3u));  /* a line on the carpet */
+    assert_false(band_fails(200, 60, 75, 3u));  /* 15 apart: 4500 <= 12500 */
+    assert_true(band_fails(200, 60, 140, 3u));  /* a wall's foot: 24000 > 6000 */
+    assert_true(band_fails(100, 100, 100, 3u)); /* no ridge at all */
+    /* A 26 px piece's mean ridge must reach ridge_min * (26 + 16) / 26. */
+    assert_false(band_fails(200, 60, 60, 86u)); /* 140 >= 138.9 */
+    assert_true(band_fails(200, 60, 60, 87u));  /* 140 < 140.5 */
 }
 
 int main(void)

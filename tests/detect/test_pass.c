@@ -61,6 +61,7 @@ static void one_pass(void **state)
     sl_pass p;
     uint8_t *ws;
     uint32_t i, total = 0u;
+    uint32_t hist[256];
     (void)state;
     bar_frame(px);
     img.width = W;
@@ -77,7 +78,7 @@ static void one_pass(void **state)
     d.cfg = &cfg;
     d.img = &img;
     d.r = &r;
-    sl_frame_stats_measure(&img, &d.stats);
+    sl_frame_stats_measure(&img, NULL, hist, &d.stats);
     sl_pass_setup(&p, &cfg, SYMLINE_AXIS_HORIZONTAL, 0, W, H);
     sl_linefilter_adapt(&p.filter, &cfg, &d.stats);
     ws = (uint8_t *)malloc(sl_pass_ws_size(&p, W));

@@ -1,5 +1,6 @@
 #!/bin/sh
-# Regenerates the golden operator and extrema images from the plain reference
+# Regenerates the golden operator and extrema images, feature points and
+# histograms (tests/golden/features/) from the plain reference
 # (tools/reference/symref.c). Usage: tests/golden/regenerate.sh [BUILD_DIR]
 # (also: cmake --build BUILD_DIR --target golden). Review the diff before committing:
 # a change here means the contract's outputs changed.
@@ -24,3 +25,20 @@ for src in "$here"/../data/cases/*.pgm "$here"/../data/crops/*.pgm; do
     done
 done
 echo "wrote $n golden images to $out"
+
+# Symmetry feature points and vertical symmetry histograms (SPEC §6), radii 1, 3, 10.
+fout="$here/features"
+rm -rf "$fout"
+mkdir -p "$fout"
+n=0
+for src in "$here"/../data/cases/*.pgm "$here"/../data/crops/*.pgm; do
+    base=$(basename "$src" .pgm)
+    set_name=$(basename "$(dirname "$src")")
+    for m in 1 3 10; do
+        for cmd in features histogram; do
+            "$ref" $cmd "$m" "$src" "$fout/${set_name}_$base.m$m.$cmd.json"
+            n=$((n + 1))
+        done
+    done
+done
+echo "wrote $n golden JSON files to $fout"

@@ -28,5 +28,8 @@ int cmd_extrema(int argc, char **argv);
 int cmd_lines(int argc, char **argv);   /* symline lines */
 int cmd_overlay(int argc, char **argv); /* symline overlay */
 int cmd_convert(int argc, char **argv);
+int cmd_features(int argc, char **argv);  /* symline features */
+int cmd_histogram(int argc, char **argv); /* symline histogram */
+int cmd_boundary(int argc, char **argv); /* symline boundary */
 
 #endif

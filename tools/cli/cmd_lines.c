@@ -11,12 +11,14 @@
 #include "overlay.h"
 #include "segjson.h"
 #include "cli.h"
+#include "muffopts.h"
 #include "symline/detect.h"
 #include "symline/intersections.h"
 
 typedef struct lines_args {
     symline_config cfg;
     symline_intersection_config icfg;
+    muffopts method;
     const char *in;
     const char *out;
     int intersections; /* 0 with --no-intersections */
@@ -62,6 +64,7 @@ static void lines_usage(FILE *f, const char *cmd)
     const int ov = strcmp(cmd, "overlay") == 0;
     fprintf(f, "usage: symline %s [options] IN%s\n", cmd, ov ? " OUT.png" : "");
     detopts_help(f);
+    muffopts_help(f);
     fprintf(f,
             "  --no-intersections  leave out where lines meet (JSON key \"intersections\")\n"
             "  --ix-min-angle Q8DEG, --ix-gap Q8PX, --ix-gap-pct PCT, --ix-arm Q8PX,\n"
@@ -89,6 +92,7 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     detopts_init(&d);
     a->intersections = 1;
     symline_intersection_config_default(&a->icfg);
+    muffopts_init(&a->method);
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
         int rc;
@@ -107,7 +111,10 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
         if (rc == 1) {
             continue;
         }
-        rc = detopts_parse(&d, argc, argv, &i, err, sizeof err);
+        rc = muffopts_parse(&a->method, argc, argv, &i, err, sizeof err);
+        if (rc == 0) {
+            rc = detopts_parse(&d, argc, argv, &i, err, sizeof err);
+        }
         if (rc < 0) {
             return cli_error("%s: %s", argv[0], err);
         }
@@ -133,6 +140,26 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     return 0;
 }
 
+/* The tracer (symline_detect) or the Muff-space finder with its accumulator. */
+static symline_status run_method(const lines_args *a, const symline_image *view, void *ws,
+                                 size_t ws_size, symline_result *res)
+{
+    size_t acc_size;
+    uint16_t *acc;
+    symline_status st;
+    if (!a->method.muff) {
+        return symline_detect(view, &a->cfg, ws, ws_size, res);
+    }
+    acc_size = symline_muff_accumulator_size(view->width, view->height, &a->method.mc);
+    acc = (uint16_t *)malloc(acc_size > 0u ? acc_size : 1u);
+    if (acc == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    st = symline_detect_muff(view, &a->cfg, &a->method.mc, acc, acc_size, ws, ws_size, res);
+    free(acc);
+    return st;
+}
+
 static int run_lines(int argc, char **argv, int overlay)
 {
     lines_args a;
@@ -156,7 +183,10 @@ static int run_lines(int argc, char **argv, int overlay)
     view.height = in.height;
     view.stride = in.width;
     view.data = in.px;
-    ws_size = symline_detect_workspace_size(in.width, in.height, &a.cfg);
+    a.method.mc.min_length = a.cfg.min_length;
+    ws_size = a.method.muff ? symline_detect_muff_workspace_size(in.width, in.height, &a.cfg,
+                                                                 &a.method.mc)
+                            : symline_detect_workspace_size(in.width, in.height, &a.cfg);
     if (ws_size == 0u) {
         imgio_free(&in);
         return cli_error("%s: image size or configuration not supported", argv[0]);
@@ -173,7 +203,7 @@ static int run_lines(int argc, char **argv, int overlay)
         const symline_intersection_result *ixp = a.intersections ? &ix : NULL;
         ix.items = items;
         ix.cap = sizeof items / sizeof items[0];
-        st = symline_detect(&view, &a.cfg, ws, ws_size, &res);
+        st = run_method(&a, &view, ws, ws_size, &res);
         if (st == SYMLINE_OK && a.intersections) {
             st = symline_intersections(&res, &a.icfg, &ix);
         }

@@ -28,9 +28,8 @@ static void op_usage(FILE *f, const char *cmd)
             "  IN        binary PGM (P5, maxval 255) or PNG\n"
             "  OUT       %s; PNG if the name ends in .png, else PGM\n",
             cmd,
-            strcmp(cmd, "symmetry") == 0
-                ? "8-bit symmetry image (255 = perfect mirror symmetry)"
-                : "extrema map (0 nothing, 128 A point, 255 S point)");
+            strcmp(cmd, "symmetry") == 0 ? "8-bit symmetry image (255 = perfect mirror symmetry)"
+                                         : "extrema map (0 nothing, 128 A point, 255 S point)");
 }
 
 /* 0 ok, 1 --help shown, CLI_USAGE on error. */

@@ -48,11 +48,17 @@ static void usage(FILE *f)
           "      write the extrema map: 0 nothing, 128 A point (asymmetry), 255 S point\n"
           "  convert  IN OUT\n"
           "      convert between PGM and PNG (8-bit gray; colour input becomes luma)\n"
+          "  features --radius M IN\n"
+          "      print the symmetry feature points (S points of both axes) as JSON\n"
+          "  histogram --radius M IN [--plot OUT.png]\n"
+          "      print the vertical symmetry histogram (S points per column) as JSON\n"
 #ifdef SYMLINE_CLI_LINES
           "  lines    [--axis horizontal|vertical|both] [--radius M] [options] IN\n"
           "      print the detected line segments as JSON on stdout\n"
           "  overlay  [same options as lines] IN OUT.png\n"
           "      draw lines (solid) and curves (dotted) over the frame\n"
+          "  boundary [--cell N] IN [OUT.png]\n"
+          "      print the field boundary as JSON (and draw it)\n"
 #endif
           "\n"
           "Axis: 'horizontal' = symmetry about a horizontal axis, computed along columns\n"
@@ -86,12 +92,21 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "convert") == 0) {
         return cmd_convert(argc - 1, argv + 1);
     }
+    if (strcmp(argv[1], "features") == 0) {
+        return cmd_features(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "histogram") == 0) {
+        return cmd_histogram(argc - 1, argv + 1);
+    }
 #ifdef SYMLINE_CLI_LINES
     if (strcmp(argv[1], "lines") == 0) {
         return cmd_lines(argc - 1, argv + 1);
     }
     if (strcmp(argv[1], "overlay") == 0) {
         return cmd_overlay(argc - 1, argv + 1);
+    }
+    if (strcmp(argv[1], "boundary") == 0) {
+        return cmd_boundary(argc - 1, argv + 1);
     }
 #endif
     cli_error("unknown command '%s' (try 'symline --help')", argv[1]);

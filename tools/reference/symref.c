@@ -5,9 +5,12 @@
  * against it bit for bit.
  *
  *   symline-ref symmetry|extrema|energy horizontal|vertical M IN.pgm OUT
+ *   symline-ref features|histogram M IN.pgm OUT.json
  *
  * OUT is a P5 PGM for symmetry and extrema; for energy it is a text file with
- * one line per image row of decimal E values.
+ * one line per image row of decimal E values. features and histogram (SPEC
+ * §6) write the JSON of `symline features` / `symline histogram`, taken from
+ * the two whole extrema maps.
  * It shares no code with lib/: even the PGM reader is its own.
  */
 #include <stdint.h>
@@ -109,12 +112,98 @@ static void put(unsigned char *out, const gray *g, int vertical, int line, int i
     }
 }
 
+/* The whole extrema map of one axis (0, 128, 255 per pixel), straight from SPEC §3. */
+static unsigned char *extrema_map(const gray *g, int vertical, int m)
+{
+    int n = seq_len(g, vertical), lines = vertical ? g->h : g->w;
+    uint64_t *E = malloc(sizeof(uint64_t) * (size_t)n);
+    unsigned char *out = calloc((size_t)g->w * g->h, 1);
+    for (int line = 0; line < lines; line++) {
+        for (int i = 0; i < n; i++) {
+            E[i] = energy(g, vertical, line, i, m);
+        }
+        int a = 0;
+        while (a < n) {
+            int b = a;
+            while (b + 1 < n && E[b + 1] == E[a]) {
+                b++;
+            }
+            if (a >= 1 && b <= n - 2) {
+                if (E[a - 1] > E[a] && E[b + 1] > E[b]) {
+                    put(out, g, vertical, line, (a + b) / 2, 255);
+                } else if (E[a - 1] < E[a] && E[b + 1] < E[b]) {
+                    put(out, g, vertical, line, (a + b) / 2, 128);
+                }
+            }
+            a = b + 1;
+        }
+    }
+    free(E);
+    return out;
+}
+
+/* SPEC §6: feature points (S in both maps, raster order) or the vertical histogram. */
+static int paper_features(const char *cmd, int m, const char *in, const char *outpath)
+{
+    gray g;
+    if (read_pgm(in, &g) != 0) {
+        fprintf(stderr, "symline-ref: cannot read %s\n", in);
+        return 2;
+    }
+    FILE *f = fopen(outpath, "w");
+    if (!f) {
+        fprintf(stderr, "symline-ref: cannot write %s\n", outpath);
+        return 2;
+    }
+    unsigned char *v = extrema_map(&g, 1, m);
+    fprintf(f, "{\"width\": %d, \"height\": %d, \"radius\": %d, ", g.w, g.h, m);
+    if (strcmp(cmd, "features") == 0) {
+        unsigned char *h = extrema_map(&g, 0, m);
+        int first = 1;
+        fprintf(f, "\"points\": [");
+        for (int y = 0; y < g.h; y++) {
+            for (int x = 0; x < g.w; x++) {
+                size_t i = (size_t)y * g.w + x;
+                if (v[i] == 255 && h[i] == 255) {
+                    fprintf(f, first ? "[%d, %d]" : ", [%d, %d]", x, y);
+                    first = 0;
+                }
+            }
+        }
+        free(h);
+    } else {
+        fprintf(f, "\"counts\": [");
+        for (int x = 0; x < g.w; x++) {
+            int c = 0;
+            for (int y = 0; y < g.h; y++) {
+                c += v[(size_t)y * g.w + x] == 255;
+            }
+            fprintf(f, x ? ", %d" : "%d", c);
+        }
+    }
+    fprintf(f, "]}\n");
+    fclose(f);
+    free(v);
+    free(g.px);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc == 5 && (strcmp(argv[1], "features") == 0 || strcmp(argv[1], "histogram") == 0)) {
+        int r = atoi(argv[2]);
+        if (r < 1 || r > 255) {
+            fprintf(stderr, "symline-ref: bad radius %s\n", argv[2]);
+            return 2;
+        }
+        return paper_features(argv[1], r, argv[3], argv[4]);
+    }
+
     gray g;
     int vertical, m, lines, n;
     if (argc != 6) {
-        fprintf(stderr, "usage: symline-ref symmetry|extrema|energy horizontal|vertical M IN.pgm OUT\n");
+        fprintf(stderr, "usage: symline-ref symmetry|extrema|energy horizontal|vertical M IN.pgm OUT\n"
+                        "       symline-ref features|histogram M IN.pgm OUT.json\n");
         return 2;
     }
     vertical = strcmp(argv[2], "vertical") == 0;

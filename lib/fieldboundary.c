@@ -1,0 +1,572 @@
+/*
+ * The field boundary from gray alone (include/symline/field.h).
+ *
+ * 1. Grid: cells of s x s pixels counted from the bottom of the frame; a cell
+ *    is described by one row through its middle: its mean gray value and its
+ *    texture (mean |difference| of horizontal neighbours over the mean, Q8,
+ *    which a carpet's grain keeps in sunlight and in shadow). Reading one row
+ *    in s keeps the stage at a fraction of an instruction per pixel.
+ * 2. Carpet model: the median cell mean and the median texture over the
+ *    lowest band of rows. Medians ignore what stands on the carpet there
+ *    (lines, feet, the robot's own body) as long as the carpet is most of the
+ *    band; a lens's black corners are left out.
+ * 3. Column scan, bottom to top: a cell with carpet texture whose brightness
+ *    fits the model or continues the column's carpet (a running mean follows
+ *    the drift with distance) scores +1; a brighter cell (a line) 0; a
+ *    carpet-textured cell of another brightness (a shadow's or a sunlit
+ *    patch's edge; the running mean follows the step), or one of the
+ *    carpet's brightness without its grain, -1; any other -miss_cost. The top
+ *    of the best-scoring run is the column's top. A long run of cells that
+ *    are neither carpet nor bright (the boards' dark foot, people, a wall
+ *    band) ends the column's scan for good, so a ceiling that looks like
+ *    carpet is never reached.
+ * 4. Support: a column's top counts as high as the k-th highest top within k
+ *    columns either side (a net or a banner that looks like carpet over a few
+ *    columns does not lift the boundary); the upper convex hull of these tops
+ *    is the boundary (what cuts into the carpet from above stays under it; a
+ *    field seen from inside is convex, so is its image through a barrel-
+ *    distorting lens), thinned to SYMLINE_FIELD_MAX_VERTICES by dropping the
+ *    vertices that move it least, level to the image edges past the last
+ *    columns with carpet.
+ */
+#include "fieldboundary.h"
+
+#define SL_FIELD_BINS 64u
+/* Cells darker than this stay out of the carpet model: a lens's black
+ * corners (a carpet, even a dark one, is brighter and has grain). */
+#define SL_FIELD_BLACK 12u
+/* Largest support (symline_field_config.support). */
+#define SL_FIELD_MAX_SUPPORT 8u
+
+void symline_field_config_default(symline_field_config *fc)
+{
+    if (fc == NULL) {
+        return;
+    }
+    fc->cell = 0u;
+    fc->band_pct = 40u;
+    fc->mean_tol = 16u;
+    fc->tex_lo_pct = 25u;
+    fc->tex_hi_pct = 150u;
+    fc->miss_cost = 2u;
+    fc->local_tol = 16u;
+    fc->gap_pct = 12u;
+    fc->support = 3u;
+    fc->restore_cells = 1u;
+    fc->col_cells = 2u;
+    fc->edge_slope_pct = 50u;
+}
+
+bool sl_field_config_ok(const symline_field_config *fc)
+{
+    const uint32_t c = fc->cell;
+    return (c == 0u || (c >= 2u && c <= 64u && (c & (c - 1u)) == 0u)) && fc->band_pct >= 1u &&
+           fc->band_pct <= 100u && fc->mean_tol <= 255u && fc->local_tol <= 255u &&
+           fc->tex_lo_pct <= 100u && fc->tex_hi_pct >= 100u && fc->tex_hi_pct <= 10000u &&
+           fc->miss_cost >= 1u && fc->miss_cost <= 16u && fc->gap_pct <= 100u &&
+           fc->support >= 1u && fc->support <= SL_FIELD_MAX_SUPPORT && fc->restore_cells <= 64u &&
+           fc->col_cells >= 1u && fc->col_cells <= 4u && fc->edge_slope_pct <= 10000u;
+}
+
+uint32_t sl_field_cell(uint32_t width, const symline_field_config *fc)
+{
+    /* A cell's texture needs a few neighbour differences to be stable: at
+     * least 8 px, 16 px from 1024 px wide on. */
+    if (fc->cell != 0u) {
+        return fc->cell;
+    }
+    return width >= 1024u ? 16u : 8u;
+}
+
+/* Per grid column: scan state, then the column top (pixels), then the hull. */
+typedef struct sl_fcol {
+    int32_t cur;  /* score of the run ending at the current row */
+    int32_t best; /* best score seen */
+    int32_t top;  /* its top row (grid rows from the bottom), -1 = none */
+    int32_t ema;  /* running mean of the column's carpet cells, Q4 */
+    uint32_t gap; /* non-carpet cells since the last carpet cell */
+} sl_fcol;
+
+typedef struct sl_fstate {
+    uint32_t s, k, nc, nr;
+    uint32_t sx;             /* column spacing: s * col_cells */
+    uint32_t lo, hi;         /* accepted cell means */
+    uint32_t mid;            /* the carpet's median */
+    uint32_t tex_lo, tex_hi; /* accepted cell textures, Q1 */
+    uint32_t hm[SL_FIELD_BINS], ht[SL_FIELD_BINS];
+    uint32_t nb;   /* grid rows of the model's band */
+    uint8_t *band; /* their cells' means and textures, read once */
+} sl_fstate;
+
+static size_t cols_bytes(uint32_t nc)
+{
+    return sl_align_up((size_t)nc * sizeof(sl_fcol));
+}
+
+/* Grid rows of the carpet model's band. */
+static uint32_t band_rows(uint32_t nr, const symline_field_config *fc)
+{
+    const uint32_t nb = (uint32_t)(((uint64_t)nr * fc->band_pct + 99u) / 100u);
+    return nb < 1u ? 1u : nb;
+}
+
+size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symline_field_config *fc)
+{
+    uint32_t s, nc, nb;
+    if (fc == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
+        height > SYMLINE_MAX_DIM || !sl_field_config_ok(fc)) {
+        return 0u;
+    }
+    s = sl_field_cell(width, fc);
+    nc = (width + s * fc->col_cells - 1u) / (s * fc->col_cells); /* <= 65535 */
+    nb = band_rows((height + s - 1u) / s, fc);
+    return sl_align_up(sizeof(sl_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
+           (size_t)3u * SL_ALIGN;
+}
+
+/* Middle row of grid row r (0 = the lowest). */
+static uint32_t sample_row(const sl_fstate *f, uint32_t h, uint32_t r)
+{
+    const uint32_t bottom = h - r * f->s; /* exclusive */
+    const uint32_t top = bottom > f->s ? bottom - f->s : 0u;
+    return (top + bottom - 1u) / 2u;
+}
+
+/* Relative texture, Q8, clamped to 255: d / sum over the same pixels. */
+static uint8_t rel_tex(uint32_t d, uint32_t sum, uint32_t n)
+{
+    const uint32_t t = (d << 8) / (sum + n);
+    return (uint8_t)(t < 255u ? t : 255u);
+}
+
+static uint32_t absdiff(uint32_t a, uint32_t b)
+{
+    return a > b ? a - b : b - a;
+}
+
+/* Mean gray value and relative texture of cell c of a sample row: its
+ * pixels, and the differences of neighbours among them. This is the stage's
+ * cost. */
+static inline void cell_stats(const sl_fstate *f, const uint8_t *row, uint32_t w, uint32_t c,
+                              uint32_t *mean, uint32_t *tex)
+{
+    const uint32_t x0 = c * f->sx;
+    const uint8_t *p = row + x0;
+    uint32_t i, n, sum = 0u, d = 0u;
+    if (f->s == 8u && x0 + 8u <= w) {
+        /* Written out: all 8 pixels, and 4 of the differences (every other
+         * pair measures the grain as well at half the cost). */
+        const uint32_t a0 = p[0], a1 = p[1], a2 = p[2], a3 = p[3], a4 = p[4], a5 = p[5], a6 = p[6],
+                       a7 = p[7];
+        sum = a0 + a1 + a2 + a3 + a4 + a5 + a6 + a7;
+        *mean = sum >> 3;
+        *tex = rel_tex(2u * (absdiff(a0, a1) + absdiff(a2, a3) + absdiff(a4, a5) + absdiff(a6, a7)),
+                       sum, 8u);
+        return;
+    }
+    n = w - x0 < f->s ? w - x0 : f->s; /* >= 1: cells start inside the row */
+    if (n == 0u) {
+        *mean = 0u;
+        *tex = 0u;
+        return;
+    }
+    for (i = 0; i < n; i++) {
+        sum += p[i];
+        if (i + 1u < w - x0) {
+            d += absdiff(p[i], p[i + 1u]);
+        }
+    }
+    *mean = sum / n;
+    *tex = (x0 + 1u < w) ? rel_tex(d, sum, n) : 0u;
+}
+
+/* Smallest bin value v with at least half the count at or below it. */
+static uint32_t hist_median(const uint32_t *hist, uint32_t total)
+{
+    uint32_t i, acc = 0u;
+    for (i = 0; i < SL_FIELD_BINS; i++) {
+        acc += hist[i];
+        if (2u * acc >= total) {
+            return i;
+        }
+    }
+    return SL_FIELD_BINS - 1u;
+}
+
+/* The carpet model from the lowest band of grid rows. */
+SL_NOINLINE static void carpet_model(const symline_image *img, const symline_field_config *fc,
+                                     sl_fstate *f, symline_field_boundary *out)
+{
+    uint32_t r, c, i, total = 0u, tb;
+    uint8_t *keep = f->band;
+    for (i = 0; i < SL_FIELD_BINS; i++) {
+        f->hm[i] = 0u;
+        f->ht[i] = 0u;
+    }
+    for (r = 0; r < f->nb; r++) {
+        const uint8_t *row = img->data + (size_t)sample_row(f, img->height, r) * img->stride;
+        for (c = 0; c < f->nc; c++) {
+            uint32_t m, t;
+            cell_stats(f, row, img->width, c, &m, &t);
+            *keep++ = (uint8_t)m; /* kept for the column scan */
+            *keep++ = (uint8_t)t;
+            if (m >= SL_FIELD_BLACK) {
+                f->hm[m >> 2]++;
+                f->ht[t < 2u * SL_FIELD_BINS ? t >> 1 : SL_FIELD_BINS - 1u]++;
+                total++;
+            }
+        }
+    }
+    if (total == 0u) {
+        /* Only black at the bottom: take it as the carpet (a dark frame). */
+        f->hm[0] = 1u;
+        f->ht[0] = 1u;
+        total = 1u;
+    }
+    tb = 2u * hist_median(f->ht, total) + 1u;
+    f->mid = 4u * hist_median(f->hm, total) + 2u;
+    f->lo = f->mid > fc->mean_tol ? f->mid - fc->mean_tol : 0u;
+    f->hi = f->mid + fc->mean_tol;
+    out->carpet_mean = (uint8_t)f->mid;
+    f->tex_lo = tb * fc->tex_lo_pct / 100u;
+    f->tex_hi = tb * fc->tex_hi_pct / 100u + 4u;
+    out->carpet_tex = (uint8_t)(tb > 255u ? 255u : tb);
+}
+
+/* Upward scan of every column: the best-scoring run of carpet. */
+SL_NOINLINE static void scan_columns(const symline_image *img, const symline_field_config *fc,
+                                     const sl_fstate *f, sl_fcol *col)
+{
+    uint32_t r, c;
+    const int32_t miss = -(int32_t)fc->miss_cost;
+    const int32_t lt = (int32_t)(fc->local_tol << 4);
+    const uint32_t gmax = fc->gap_pct == 0u ? 0xFFFFFFFFu : f->nr * fc->gap_pct / 100u;
+    for (c = 0; c < f->nc; c++) {
+        col[c].cur = 0;
+        col[c].best = 0;
+        col[c].top = -1;
+        col[c].ema = (int32_t)(f->mid << 4);
+        col[c].gap = 0u;
+    }
+    for (r = 0; r < f->nr; r++) {
+        const uint8_t *row = img->data + (size_t)sample_row(f, img->height, r) * img->stride;
+        for (c = 0; c < f->nc; c++) {
+            uint32_t m, t;
+            int32_t v, dm;
+            int tex_ok;
+            sl_fcol *q = &col[c];
+            if (q->gap > gmax) {
+                continue; /* behind a barrier: this column is done */
+            }
+            if (r < f->nb) {
+                const size_t at = 2u * ((size_t)r * f->nc + c);
+                m = f->band[at];
+                t = f->band[at + 1u];
+            } else {
+                cell_stats(f, row, img->width, c, &m, &t);
+            }
+            tex_ok = t >= f->tex_lo && t <= f->tex_hi;
+            dm = (int32_t)(m << 4) - q->ema;
+            if (tex_ok && ((dm <= lt && dm >= -lt) || (m >= f->lo && m <= f->hi))) {
+                /* Carpet: its grain, and a brightness that continues the column's
+                 * carpet or fits the model. */
+                v = 1;
+                q->ema += dm / 4;
+                q->gap = 0u;
+            } else {
+                /* Brighter than the carpet below: a line, mostly: free, and no
+                 * part of a barrier. Carpet grain at another brightness (a
+                 * shadow's or a sunlit patch's edge; the running mean follows
+                 * the step), or the carpet's brightness without its grain: -1.
+                 * Anything else: -miss_cost. */
+                if (dm > lt) {
+                    v = 0;
+                } else {
+                    v = (tex_ok || dm >= -lt) ? -1 : miss; /* dm <= lt here */
+                    q->gap++;
+                }
+                if (tex_ok) {
+                    q->ema += dm / 2;
+                }
+            }
+            q->cur = (q->cur > 0 ? q->cur : 0) + v;
+            if (q->cur > q->best) {
+                q->best = q->cur;
+                q->top = (int32_t)r;
+            }
+        }
+    }
+}
+
+/* Support filter: a column's top becomes the k-th highest (k = support) of
+ * the tops within k columns either side, so a top that fewer than k nearby
+ * columns reach (a wall patch that looks like carpet) is not a hull vertex.
+ * Reads col[].top, writes col[].ema. */
+SL_NOINLINE static void support_filter(const sl_fstate *f, uint32_t k, sl_fcol *col)
+{
+    int32_t best[SL_FIELD_MAX_SUPPORT]; /* the k smallest rows so far, ascending */
+    uint32_t c, i, j;
+    for (c = 0; c < f->nc; c++) {
+        const uint32_t lo = c >= k ? c - k : 0u;
+        const uint32_t hi = c + k < f->nc ? c + k : f->nc - 1u;
+        for (i = 0; i < k; i++) {
+            best[i] = 0x7FFFFFFF;
+        }
+        for (j = lo; j <= hi; j++) {
+            const int32_t y = col[j].top;
+            if (y < best[k - 1u]) {
+                for (i = k - 1u; i > 0u && best[i - 1u] > y; i--) {
+                    best[i] = best[i - 1u];
+                }
+                best[i] = y;
+            }
+        }
+        /* A window cut by the image edge asks for proportionally fewer:
+         * 1 <= j <= the window's columns, j <= k. */
+        j = (k * (hi - lo + 1u) + 2u * k) / (2u * k + 1u);
+        col[c].ema = best[j - 1u];
+    }
+}
+
+static int32_t col_x(const sl_fstate *f, uint32_t c, uint32_t w)
+{
+    uint32_t x = c * f->sx + f->sx / 2u;
+    if (c == 0u) {
+        return 0;
+    }
+    if (c + 1u == f->nc || x > w - 1u) {
+        x = w - 1u;
+    }
+    return (int32_t)x;
+}
+
+/* Row of the chord a-b at column x (a.x < x < b.x), rounded toward the top. */
+static int32_t chord_y(const symline_field_vertex *a, const symline_field_vertex *b, int32_t x)
+{
+    const int64_t num = (int64_t)(b->y - a->y) * (x - a->x);
+    const int64_t den = b->x - a->x;
+    int64_t q = num / den;
+    if (num % den != 0 && num < 0) {
+        q--;
+    }
+    return a->y + (int32_t)q;
+}
+
+/* Column tops -> boundary polyline (upper hull, thinned). col[c].ema holds
+ * the filtered top row in pixels. The hull is built in place over col[].cur
+ * (x) and col[].best (y). */
+SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, uint32_t edge_pct,
+                             sl_fcol *col, symline_field_boundary *out)
+{
+    const int32_t h = (int32_t)img->height, xr = (int32_t)img->width - 1;
+    uint32_t c, n = 0u, i, k = 0u;
+    for (c = 0; c < f->nc; c++) {
+        const int32_t y = col[c].ema;
+        const int32_t x = col_x(f, c, img->width);
+        if (y >= h) {
+            continue; /* no field in this column (a lens's black corner, say) */
+        }
+        if (n > 0u && x == col[n - 1u].cur) {
+            if (y >= col[n - 1u].best) {
+                continue; /* the same column again (a frame narrower than the grid) */
+            }
+            n--;
+        }
+        /* Andrew's monotone chain, upper part (smaller y is higher): pop while
+         * the last vertex lies on or below the chord from its predecessor. */
+        while (n >= 2u) {
+            const int64_t x1 = col[n - 2u].cur, y1 = col[n - 2u].best;
+            const int64_t x2 = col[n - 1u].cur, y2 = col[n - 1u].best;
+            if ((x2 - x1) * ((int64_t)y - y1) - (y2 - y1) * ((int64_t)x - x1) > 0) {
+                break;
+            }
+            n--;
+        }
+        col[n].cur = x;
+        col[n].best = y;
+        n++;
+    }
+    if (n == 0u) {
+        /* No field anywhere: the boundary lies at the bottom. */
+        col[0].cur = 0;
+        col[0].best = h;
+        n = 1u;
+    }
+    /* Thin (leaving room for the two edge vertices): drop the interior vertex
+     * whose removal lowers the boundary least. */
+    while (n > SYMLINE_FIELD_MAX_VERTICES - 2u) {
+        uint32_t drop = 1u;
+        int32_t least = 0x7FFFFFFF;
+        for (i = 1u; i + 1u < n; i++) {
+            symline_field_vertex a, b;
+            int32_t d;
+            a.x = col[i - 1u].cur;
+            a.y = col[i - 1u].best;
+            b.x = col[i + 1u].cur;
+            b.y = col[i + 1u].best;
+            d = chord_y(&a, &b, col[i].cur) - col[i].best;
+            if (d < least) {
+                least = d;
+                drop = i;
+            }
+        }
+        for (i = drop; i + 1u < n; i++) {
+            col[i].cur = col[i + 1u].cur; /* field by field: no memcpy call */
+            col[i].best = col[i + 1u].best;
+        }
+        n--;
+    }
+    if (edge_pct != 0u && n >= 2u) {
+        /* Near an image edge the columns have neighbours on one side only: a
+         * robot or a person standing there holds the last columns down and
+         * nothing beyond them can bridge it. The end segments fall toward
+         * the edges no steeper than edge_pct % (too high only keeps clutter). */
+        const int64_t l = col[1].best + (int64_t)(col[1].cur - col[0].cur) * edge_pct / 100u;
+        const int64_t r =
+            col[n - 2u].best + (int64_t)(col[n - 1u].cur - col[n - 2u].cur) * edge_pct / 100u;
+        col[0].best = col[0].best > l ? (int32_t)l : col[0].best;
+        col[n - 1u].best = col[n - 1u].best > r ? (int32_t)r : col[n - 1u].best;
+    }
+    /* Columns without field at the sides: the boundary continues level to
+     * the image edges. */
+    if (col[0].cur > 0) {
+        out->v[k].x = 0;
+        out->v[k++].y = col[0].best;
+    }
+    for (i = 0; i < n; i++) {
+        out->v[k].x = col[i].cur;
+        out->v[k++].y = col[i].best;
+    }
+    if (out->v[k - 1u].x < xr) {
+        out->v[k].x = xr;
+        out->v[k].y = out->v[k - 1u].y;
+        k++;
+    }
+    out->count = k;
+}
+
+void sl_field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,
+                  size_t ws_size, symline_field_boundary *out)
+{
+    uint8_t *cur = ws, *const end = ws + ws_size;
+    sl_fstate *f = (sl_fstate *)sl_carve(&cur, end, sizeof(sl_fstate));
+    sl_fcol *col;
+    uint32_t c;
+    if (f == NULL) {
+        return; /* not reached: the workspace size was checked */
+    }
+    f->s = sl_field_cell(img->width, fc);
+    for (f->k = 0u; (1u << f->k) < f->s; f->k++) {
+    }
+    f->sx = f->s * fc->col_cells;
+    f->nc = (img->width + f->sx - 1u) / f->sx;
+    f->nr = (img->height + f->s - 1u) / f->s;
+    col = (sl_fcol *)sl_carve(&cur, end, (size_t)f->nc * sizeof(sl_fcol));
+    f->nb = band_rows(f->nr, fc);
+    f->band = (uint8_t *)sl_carve(&cur, end, 2u * (size_t)f->nb * f->nc);
+    if (col == NULL || f->band == NULL) {
+        return;
+    }
+    out->cell = (uint8_t)f->s;
+    carpet_model(img, fc, f, out);
+    scan_columns(img, fc, f, col);
+    for (c = 0; c < f->nc; c++) {
+        /* Top row of the run's highest cell, pixels; no carpet: the bottom. */
+        const int32_t r = col[c].top;
+        const int64_t y = (int64_t)img->height - ((int64_t)r + 1) * f->s;
+        col[c].top = r < 0 ? (int32_t)img->height : (y < 0 ? 0 : (int32_t)y);
+    }
+    support_filter(f, fc->support, col);
+    hull(img, f, fc->edge_slope_pct, col, out);
+    if (fc->restore_cells != 0u) {
+        /* The support filter lowers peaks (a field corner) by a few columns'
+         * slope: every column's own top counts again, but no higher than
+         * restore_cells above the robust boundary. */
+        const int32_t d = (int32_t)(fc->restore_cells * f->s);
+        for (c = 0; c < f->nc; c++) {
+            const int32_t hf = symline_field_y(out, col_x(f, c, img->width));
+            int32_t t = col[c].top;
+            if (t < (int32_t)img->height) {
+                t = t < hf - d ? hf - d : t;
+                /* An edge column has neighbours on one side only: it is not
+                 * taken lower than the robust boundary. */
+                t = ((c == 0u || c + 1u == f->nc) && hf < t) ? hf : t;
+            }
+            col[c].ema = t;
+        }
+        hull(img, f, fc->edge_slope_pct, col, out);
+    }
+}
+
+symline_status symline_field_find(const symline_image *img, const symline_field_config *fc,
+                                  void *ws, size_t ws_size, symline_field_boundary *out)
+{
+    symline_status st = symline_image_check(img);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (fc == NULL || ws == NULL || out == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (!sl_field_config_ok(fc)) {
+        return SYMLINE_ERR_CONFIG;
+    }
+    if (ws_size < symline_field_workspace_size(img->width, img->height, fc)) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    sl_field_run(img, fc, (uint8_t *)ws, ws_size, out);
+    return SYMLINE_OK;
+}
+
+int32_t symline_field_y(const symline_field_boundary *b, int32_t x)
+{
+    uint32_t i;
+    if (b == NULL || b->count == 0u || b->count > SYMLINE_FIELD_MAX_VERTICES) {
+        return 0;
+    }
+    if (x <= b->v[0].x) {
+        return b->v[0].y;
+    }
+    for (i = 1u; i < b->count; i++) {
+        if (x <= b->v[i].x) {
+            return chord_y(&b->v[i - 1u], &b->v[i], x);
+        }
+    }
+    return b->v[b->count - 1u].y;
+}
+
+int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
+{
+    return (b != NULL && b->count != 0u && y < symline_field_y(b, x)) ? 1 : 0;
+}
+
+void sl_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w, uint32_t width,
+                   uint32_t margin, uint16_t *rows)
+{
+    const uint32_t s = 1u << level;
+    uint32_t x;
+    for (x = 0; x < w; x++) {
+        /* Keep grid row y when its centre y*s + s/2 >= boundary - margin. */
+        const uint32_t xc = x * s + s / 2u < width ? x * s + s / 2u : width - 1u;
+        const int64_t lim = (int64_t)symline_field_y(b, (int32_t)xc) - margin - s / 2u;
+        const int64_t y = lim <= 0 ? 0 : (lim + s - 1u) >> level;
+        rows[x] = (uint16_t)(y > 0xFFFF ? 0xFFFF : y);
+    }
+}
+
+uint32_t sl_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start, uint32_t h)
+{
+    uint32_t y, i = 0u, k = 0u;
+    for (y = 0; y < h; y++) {
+        const uint32_t end = row_start[y + 1u];
+        row_start[y] = k;
+        for (; i < end; i++) {
+            if (pts[i].y >= rows[pts[i].x]) {
+                pts[k].x = pts[i].x;
+                pts[k++].y = pts[i].y;
+            }
+        }
+    }
+    row_start[h] = k;
+    return k;
+}

@@ -1,0 +1,22 @@
+/*
+ * The passes a detector configuration runs (detect.c): its range check, the
+ * number of scales for a frame, and the axes. Shared by symline_detect() and
+ * symline_line_points() (framepoints.c), so both run the same passes.
+ */
+#ifndef SYMLINE_LIB_PASSPLAN_H
+#define SYMLINE_LIB_PASSPLAN_H
+
+#include "common.h"
+#include "symline/detect.h"
+
+/* SYMLINE_OK, or SYMLINE_ERR_CONFIG when a field is out of its range. */
+symline_status sl_config_check(const symline_config *c);
+
+/* Number of scales for a width x height frame (1 = full resolution only). */
+uint32_t sl_level_count(const symline_config *c, uint32_t width, uint32_t height);
+
+/* Axes per scale (1 or 2) and the i-th of them (horizontal first). */
+uint32_t sl_axis_count(const symline_config *c);
+symline_axis sl_axis_of(const symline_config *c, uint32_t i);
+
+#endif /* SYMLINE_LIB_PASSPLAN_H */

@@ -1,0 +1,149 @@
+/*
+ * `symline boundary`: the field boundary alone (include/symline/field.h).
+ */
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "detopts.h"
+#include "imgio.h"
+#include "overlay.h"
+#include "cli.h"
+#include "symline/detect.h"
+#include "symline/field.h"
+
+/* The settings of symline/field.h as options. */
+typedef struct fb_opt {
+    const char *name;
+    size_t off;
+    uint32_t lo, hi;
+    const char *help;
+} fb_opt;
+
+#define FB_OFF(f) offsetof(symline_field_config, f)
+static const fb_opt FB_OPTS[] = {
+    {"--cell", FB_OFF(cell), 0u, 64u, "grid step px, a power of two 2..64; 0 = auto (8 or 16)"},
+    {"--band-pct", FB_OFF(band_pct), 1u, 100u, "carpet model from the lowest % of the rows"},
+    {"--mean-tol", FB_OFF(mean_tol), 0u, 255u, "gray distance of a carpet cell to the model"},
+    {"--local-tol", FB_OFF(local_tol), 0u, 255u, "... or to its column's running carpet mean"},
+    {"--tex-lo-pct", FB_OFF(tex_lo_pct), 0u, 100u, "smallest texture, % of the model's"},
+    {"--tex-hi-pct", FB_OFF(tex_hi_pct), 100u, 10000u, "largest texture, % of the model's"},
+    {"--miss-cost", FB_OFF(miss_cost), 1u, 16u, "penalty of a non-carpet cell in the column scan"},
+    {"--gap-pct", FB_OFF(gap_pct), 0u, 100u, "a column ends after this % of rows without carpet"},
+    {"--support", FB_OFF(support), 1u, 8u, "columns nearby that must reach as high"},
+    {"--edge-slope-pct", FB_OFF(edge_slope_pct), 0u, 10000u, "steepest fall of the end segments"},
+    {"--col-cells", FB_OFF(col_cells), 1u, 4u, "grid columns lie this many cells apart"},
+    {"--restore-cells", FB_OFF(restore_cells), 0u, 64u,
+     "own tops count up to this many cells higher"},
+};
+#define FB_NOPTS (sizeof FB_OPTS / sizeof FB_OPTS[0])
+
+static uint32_t *fb_field(symline_field_config *fc, size_t off)
+{
+    return (uint32_t *)(void *)((char *)fc + off);
+}
+
+static void boundary_usage(FILE *f)
+{
+    symline_field_config fc;
+    size_t i;
+    symline_field_config_default(&fc);
+    fprintf(f, "usage: symline boundary [options] IN [OUT.png]\n");
+    for (i = 0; i < FB_NOPTS; i++) {
+        fprintf(f, "  %-14s N  %s (default %u)\n", FB_OPTS[i].name, FB_OPTS[i].help,
+                *fb_field(&fc, FB_OPTS[i].off));
+    }
+    fprintf(f, "  IN                binary PGM or PNG (colour is converted to luma)\n"
+               "  OUT.png           the frame with the boundary drawn in yellow\n"
+               "Prints {\"width\": W, \"height\": H, \"cell\": N, \"carpet_mean\": G,\n"
+               "\"field_boundary\": [[x, y], ...]} (SPEC section 7): rows at and below the\n"
+               "polyline are field. See include/symline/field.h for the settings.\n"
+               "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n");
+}
+
+int cmd_boundary(int argc, char **argv)
+{
+    symline_field_config fc;
+    const char *pos[2] = {NULL, NULL};
+    int i, npos = 0, rc = CLI_OK;
+    imgio_gray in;
+    symline_image view;
+    symline_result res;
+    char err[512];
+    size_t need;
+    void *ws;
+    symline_status st;
+    symline_field_config_default(&fc);
+    for (i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) {
+            boundary_usage(stdout);
+            return CLI_OK;
+        }
+        size_t k;
+        for (k = 0; k < FB_NOPTS && strcmp(o, FB_OPTS[k].name) != 0; k++) {
+        }
+        if (k < FB_NOPTS) {
+            if (i + 1 >= argc || detopts_u32(argv[i + 1], FB_OPTS[k].lo, FB_OPTS[k].hi,
+                                             fb_field(&fc, FB_OPTS[k].off)) != 0) {
+                return cli_error("%s: %s needs a number in %u..%u", argv[0], o, FB_OPTS[k].lo,
+                                 FB_OPTS[k].hi);
+            }
+            i++;
+        } else if (o[0] == '-' && o[1] != '\0') {
+            return cli_error("%s: unknown option '%s'", argv[0], o);
+        } else if (npos < 2) {
+            pos[npos++] = o;
+        } else {
+            return cli_error("%s: too many arguments ('%s')", argv[0], o);
+        }
+    }
+    if (npos < 1) {
+        boundary_usage(stderr);
+        return CLI_USAGE;
+    }
+    if (imgio_read_gray(pos[0], &in, err, sizeof err) != 0) {
+        return cli_error("%s", err);
+    }
+    view.width = in.width;
+    view.height = in.height;
+    view.stride = in.width;
+    view.data = in.px;
+    need = symline_field_workspace_size(in.width, in.height, &fc);
+    if (need == 0u) {
+        imgio_free(&in);
+        return cli_error("%s: --cell must be a power of two", argv[0]);
+    }
+    memset(&res, 0, sizeof res);
+    ws = malloc(need);
+    if (ws == NULL) {
+        imgio_free(&in);
+        return cli_error("out of memory");
+    }
+    st = symline_field_find(&view, &fc, ws, need, &res.field);
+    if (st != SYMLINE_OK) {
+        cli_error("%s: %s", argv[0], symline_status_str(st));
+        rc = CLI_FAIL;
+    } else {
+        uint32_t k;
+        printf("{\"width\": %u, \"height\": %u, \"cell\": %u, \"carpet_mean\": %u,\n"
+               " \"field_boundary\": [",
+               in.width, in.height, res.field.cell, res.field.carpet_mean);
+        for (k = 0; k < res.field.count; k++) {
+            printf("%s[%ld, %ld]", k == 0u ? "" : ", ", (long)res.field.v[k].x,
+                   (long)res.field.v[k].y);
+        }
+        printf("]}\n");
+        if (fflush(stdout) != 0 || ferror(stdout)) {
+            rc = CLI_FAIL;
+        } else if (npos == 2 && overlay_write(pos[1], in.px, in.width, in.height, in.width, &res,
+                                              err, sizeof err) != 0) {
+            cli_error("%s", err);
+            rc = CLI_FAIL;
+        }
+    }
+    free(ws);
+    imgio_free(&in);
+    return rc;
+}
