@@ -285,6 +285,70 @@ static void test_large_frame(void **state)
     assert_int_equal(symline_intersections(&s.res, &s.cfg, &s.ix), SYMLINE_ERR_RANGE);
 }
 
+/* Random segments and curves anywhere up to +-65535 px, random settings: always
+ * SYMLINE_OK, consistent intersections, nothing beyond the capacity (run under
+ * the asan preset, also no undefined behaviour). */
+static void test_random_segments(void **state)
+{
+    static scene s;
+    uint32_t seed = 4242u, iter, i, k;
+    (void)state;
+    for (iter = 0; iter < 3000u; iter++) {
+        const uint32_t n = tu_rand(&seed) % 40u;
+        const uint32_t span = tu_rand(&seed) % 4u == 0u ? 65535u : 700u;
+        scene_init(&s);
+        s.ix.cap = tu_rand(&seed) % (MAXIX + 1u);
+        for (i = 0; i < n; i++) {
+            symline_segment *g = &s.seg[s.res.segment_count++];
+            g->x0 = (int32_t)(tu_rand(&seed) % (span * 256u)) - (int32_t)(tu_rand(&seed) % 512u);
+            g->y0 = (int32_t)(tu_rand(&seed) % (span * 256u)) - (int32_t)(tu_rand(&seed) % 512u);
+            g->x1 = (int32_t)(tu_rand(&seed) % (span * 256u));
+            g->y1 = (int32_t)(tu_rand(&seed) % (span * 256u));
+            g->level = (uint8_t)(tu_rand(&seed) % 7u);
+            if (tu_rand(&seed) % 3u == 0u && s.res.point_count + 200u < MAXPTS) {
+                int32_t x = (int32_t)(tu_rand(&seed) % span), y = (int32_t)(tu_rand(&seed) % span);
+                g->kind = SYMLINE_KIND_CURVE;
+                g->first = s.res.point_count;
+                g->count = 2u + tu_rand(&seed) % 198u;
+                for (k = 0; k < g->count; k++) {
+                    symline_point *p = &s.pts[s.res.point_count++];
+                    x += (int32_t)(tu_rand(&seed) % 5u) - 2;
+                    y += (int32_t)(tu_rand(&seed) % 5u) - 2;
+                    x = x < 0 ? 0 : x > 65535 ? 65535 : x;
+                    y = y < 0 ? 0 : y > 65535 ? 65535 : y;
+                    p->x = (uint16_t)x;
+                    p->y = (uint16_t)y;
+                    p->fx = (int8_t)((int32_t)(tu_rand(&seed) % 128u) - 64);
+                    p->fy = (int8_t)((int32_t)(tu_rand(&seed) % 128u) - 64);
+                }
+            }
+        }
+        if (tu_rand(&seed) % 4u == 0u) {
+            s.cfg.min_angle_q8 = tu_rand(&seed) % (90u * 256u + 1u);
+            s.cfg.gap_q8 = tu_rand(&seed) % 65537u;
+            s.cfg.gap_pct = tu_rand(&seed) % 101u;
+            s.cfg.arm_q8 = 256u + tu_rand(&seed) % 65281u;
+            s.cfg.merge_q8 = tu_rand(&seed) % 65537u;
+            s.cfg.min_length_q8 = tu_rand(&seed) % 70000u;
+        }
+        assert_int_equal(symline_intersections(&s.res, &s.cfg, &s.ix), SYMLINE_OK);
+        assert_true(s.ix.count <= s.ix.cap);
+        for (i = 0; i < s.ix.count; i++) {
+            const symline_intersection *it = &s.items[i];
+            assert_true(it->ray_count >= 2u && it->ray_count <= SYMLINE_INTERSECTION_RAYS);
+            assert_int_equal(it->type, it->ray_count - 2u);
+            assert_true(it->segment_count >= 2u);
+            for (k = 0; k < it->ray_count; k++) {
+                assert_true(it->rays[k] < SYMLINE_DEG_Q8_FULL);
+                assert_true(k == 0u || it->rays[k - 1u] < it->rays[k]);
+            }
+            for (k = 0; k < it->segment_count; k++) {
+                assert_true(it->segments[k] < n);
+            }
+        }
+    }
+}
+
 static void test_degenerate(void **state)
 {
     scene s;
@@ -548,6 +612,7 @@ int main(void)
         cmocka_unit_test(test_none_collinear),
         cmocka_unit_test(test_none_far),
         cmocka_unit_test(test_large_frame),
+        cmocka_unit_test(test_random_segments),
         cmocka_unit_test(test_degenerate),
         cmocka_unit_test(test_truncated),
         cmocka_unit_test(test_errors),
