@@ -13,6 +13,7 @@
 #include "merge.h"
 #include "pass.h"
 #include "passplan.h"
+#include "stagemark.h"
 
 void symline_config_default(symline_config *cfg)
 {
@@ -189,6 +190,7 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
     levels = sl_level_count(cfg, d->img->width, d->img->height);
     for (level = 0; level < levels && p != NULL; level++) {
         for (axis = 0; axis < sl_axis_count(cfg); axis++) {
+            SL_STAGE(SETUP);
             sl_pass_setup(p, cfg, sl_axis_of(cfg, axis), level, d->img->width, d->img->height);
             if (cfg->adaptive) {
                 sl_linefilter_adapt(&p->filter, cfg, &d->stats);
@@ -200,8 +202,8 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
     }
 }
 
-symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
-                              size_t ws_size, symline_result *out)
+static symline_status detect(const symline_image *img, const symline_config *cfg, void *ws,
+                             size_t ws_size, symline_result *out)
 {
     symline_status st = symline_image_check(img);
     sl_run d;
@@ -233,9 +235,11 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     d.stats.sigma_q4 = 0u;
     out->field.count = 0u;
     if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
+        SL_STAGE(FIELD);
         sl_field_run(img, &cfg->field, (uint8_t *)ws, ws_size, &out->field);
     }
     if (cfg->adaptive) {
+        SL_STAGE(STATS);
         /* Detections kept above the field are measured against the whole frame. */
         field_stats(img, cfg->field_boundary == SYMLINE_FIELD_DROP ? &out->field : NULL,
                     (uint8_t *)ws, ws_size, &d.stats);
@@ -243,14 +247,26 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
     run_passes(cfg, (uint8_t *)ws, ws_size, &d);
     out->point_count = d.npts;
     out->segment_count = d.nseg;
+    SL_STAGE(MERGE);
     if (cfg->merge_gap != 0u) {
         const uint32_t gap =
             cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? img->width / 8u : cfg->merge_gap;
         sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
     }
+    SL_STAGE(CURVEJOIN);
     if (cfg->curve_bend_q8 != 0u) {
         sl_curve_join(out);
     }
     out->truncated = d.truncated;
     return SYMLINE_OK;
+}
+
+symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
+                              size_t ws_size, symline_result *out)
+{
+    symline_status st;
+    SL_STAGE(SETUP);
+    st = detect(img, cfg, ws, ws_size, out);
+    SL_STAGE(NONE);
+    return st;
 }

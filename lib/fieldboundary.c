@@ -562,8 +562,10 @@ uint32_t sl_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_s
         row_start[y] = k;
         for (; i < end; i++) {
             if (pts[i].y >= rows[pts[i].x]) {
-                pts[k].x = pts[i].x;
-                pts[k++].y = pts[i].y;
+                pts[k].x = pts[i].x; /* field by field: no memcpy call */
+                pts[k].y = pts[i].y;
+                pts[k].fx = pts[i].fx;
+                pts[k++].fy = pts[i].fy;
             }
         }
     }

@@ -17,7 +17,7 @@
 #include "fixed.h"
 
 /* The statistics read every SL_STATS_STEP-th pixel of every SL_STATS_STEP-th row. */
-#define SL_STATS_STEP 2u
+#define SL_STATS_STEP 4u
 
 void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg)
 {

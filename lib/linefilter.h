@@ -36,7 +36,7 @@ void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg);
 #define SL_STATS_HIST_BYTES (256u * sizeof(uint32_t))
 
 /* The statistics of the field (rows y >= top[x] of each column x; top NULL:
- * the whole frame) on every 2nd pixel of every 2nd row. hist:
+ * the whole frame) on every 4th pixel of every 4th row. hist:
  * SL_STATS_HIST_BYTES of scratch. Both 0 when no pixel is measured. */
 void sl_frame_stats_measure(const symline_image *img, const uint16_t *top, uint32_t *hist,
                             sl_frame_stats *st);

@@ -19,6 +19,7 @@
 #include "linepoints.h"
 
 #include "extrema.h"
+#include "stagemark.h"
 #include "symmetry.h"
 
 void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_t *acc,
@@ -150,11 +151,15 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img, con
         if (p->level == 0u) {
             row = img->data + (size_t)y * img->stride;
         } else {
+            SL_STAGE(GRID);
             sl_grid_row(img, p, y, acc, grow);
             row = grow;
         }
+        SL_STAGE(OPERATOR);
         (void)symline_energy_row(row, w, p->m, E);
+        SL_STAGE(EXTREMA);
         sl_extrema_runs(E, w, p->lag, map);
+        SL_STAGE(FILTER);
         for (x = 0; x < w; x++) {
             if (map[x] != SYMLINE_MAP_S) {
                 continue;
@@ -255,6 +260,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
         uint32_t count = 0u, j;
         if (p->level > 0u) {
             const uint32_t need = (t + m < h) ? t + m : h - 1u;
+            SL_STAGE(GRID);
             while (produced <= need) {
                 sl_grid_row(img, p, produced, acc,
                             rp->gray + (size_t)(produced % rp->gray_rows) * w);
@@ -265,7 +271,9 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
             const uint32_t yy = t + j; /* row t - m + j, offset by m to stay unsigned */
             rows[j] = (yy >= m && yy - m < h) ? h_row(rp, yy - m) : NULL;
         }
+        SL_STAGE(OPERATOR);
         (void)symline_energy_across(rows, m, w, E);
+        SL_STAGE(EXTREMA);
         if (t >= 1u) {
             uint8_t *mr = h_map(rp, t - 1u);
             for (i = 0; i < w; i++) {
@@ -285,9 +293,11 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
             }
         }
         if (t >= delta) {
+            SL_STAGE(FILTER);
             h_decide(rp, t - delta, pts, cap, n, row_start, truncated);
         }
     }
+    SL_STAGE(FILTER);
     {
         uint8_t *mr = h_map(rp, h - 1u);
         for (i = 0; i < w; i++) {

@@ -13,6 +13,7 @@
 
 #include "fixed.h"
 #include "segments.h"
+#include "stagemark.h"
 #include "subpixel.h"
 #include "tracer.h"
 #include "linecheck.h"
@@ -74,7 +75,9 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
         return;
     }
     s = &d->r->segments[d->nseg++];
+    SL_STAGE(SUBPIXEL);
     sl_subpixel(d->img, p, q, n);
+    SL_STAGE(SEGMENTS);
     sl_fit(q, n, p->level, d->cfg->curve_dev_q8, s);
     /* A flat arc stays under the deviation threshold but bends: a curve too. */
     if (s->kind == SYMLINE_KIND_LINE && d->cfg->curve_bend_q8 != 0u &&
@@ -126,11 +129,15 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     bool cut = false;
     /* Chains go to the storage's free tail after the raster list. */
     sl_tracer_init(t, r->points + base, n, row_start, p->h);
+    SL_STAGE(TRACE);
     while (tail < r->point_cap &&
            sl_tracer_next(t, r->points + tail, r->point_cap - tail, &cnt, &cut)) {
+        SL_STAGE(SEGMENTS);
         chain(d, p, tail, cnt);
         tail += cnt;
+        SL_STAGE(TRACE);
     }
+    SL_STAGE(SEGMENTS);
     if (cut || (tail >= r->point_cap && n > 0u)) {
         d->truncated = true;
     }
@@ -162,6 +169,7 @@ SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *
                                    d->r->point_cap - d->npts, n, row_start, &d->truncated);
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         /* Above the field: nothing to trace. */
+        SL_STAGE(FIELD);
         sl_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
                       d->field_rows);
         *n = sl_field_drop(d->field_rows, d->r->points + d->npts, row_start, p->h);

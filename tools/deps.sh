@@ -3,7 +3,9 @@
 # with apt-get). Usage: tools/deps.sh build|test
 set -eu
 need=""
-add() { dpkg -s "$1" >/dev/null 2>&1 || need="$need $1"; }
+# dpkg-query -W, not dpkg -s: with a second architecture (arm64, tools/aarch64/check.sh)
+# a package installed for both has an ambiguous name that dpkg -s rejects.
+add() { dpkg-query -W -f='${Status}\n' "$1" 2>/dev/null | grep -q "ok installed" || need="$need $1"; }
 for p in cmake make gcc libc6-dev pkg-config libpng-dev; do add "$p"; done
 case "${1:-build}" in
 test) for p in libcmocka-dev binutils clang-format; do add "$p"; done ;;

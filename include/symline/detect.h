@@ -114,7 +114,7 @@ typedef struct symline_config {
                               frame when there is none or detections above it
                               are kept): their median ("mean" below) and their
                               spread sigma (1.4826 x the median absolute
-                              deviation), on every 2nd pixel of every 2nd row,
+                              deviation), on every 4th pixel of every 4th row,
                               so a brighter, darker or lower-contrast exposure
                               of the same scene gives the same lines; false:
                               off. Default true */

@@ -51,6 +51,16 @@ expect 0 "" -- symmetry --axis horizontal --radius 3 "$tmp/o.png" "$tmp/o2.pgm"
 expect 0 "" -- convert "$good" "$tmp/c.png"
 expect 2 "convert" -- convert "$good"
 
+expect 0 "--cell" -- boundary --help
+expect 0 "field_boundary" -- boundary "$good"
+expect 0 "field_boundary" -- boundary "$good" "$tmp/b.png"
+expect 2 "usage" -- boundary
+expect 2 "--cell needs a number" -- boundary --cell 99 "$good"
+expect 2 "power of two" -- boundary --cell 3 "$good"
+expect 2 "unknown option" -- boundary --bogus "$good"
+expect 2 "missing.pgm: cannot open" -- boundary "$tmp/missing.pgm"
+expect 2 "--field needs" -- lines --field sideways "$good"
+
 # Feature points and histograms (SPEC §6), the line method option.
 expect 0 "--radius" -- features --help
 expect 0 "--plot" -- histogram --help

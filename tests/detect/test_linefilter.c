@@ -96,7 +96,7 @@ static void a_point_near(void **state)
 
 static void statistics_and_adaptive_thresholds(void **state)
 {
-    static uint8_t px[20 * 10];
+    static uint8_t px[20 * 20];
     symline_image img;
     sl_frame_stats st;
     symline_config cfg;
@@ -105,29 +105,29 @@ static void statistics_and_adaptive_thresholds(void **state)
     uint32_t hist[256];
     uint32_t i;
     (void)state;
-    /* Rows 0-3: a bright wall (250); rows 4-9: carpet whose sampled columns
-     * (every 2nd) read 90 (3), 100 (4) and 110 (3). */
-    for (i = 0; i < 20u * 10u; i++) {
+    /* Rows 0-7: a bright wall (250); rows 8-19: carpet whose sampled columns
+     * (every 4th) read 90 (2), 100 (1) and 110 (2). */
+    for (i = 0; i < 20u * 20u; i++) {
         const uint32_t x = i % 20u;
-        px[i] = (uint8_t)(i < 4u * 20u ? 250u : (x < 6u ? 90u : (x < 14u ? 100u : 110u)));
+        px[i] = (uint8_t)(i < 8u * 20u ? 250u : (x < 8u ? 90u : (x < 12u ? 100u : 110u)));
     }
     img.width = 20;
-    img.height = 10;
+    img.height = 20;
     img.stride = 20;
     img.data = px;
-    /* The whole frame: the wall's 20 of 50 samples pull the median to 110. */
+    /* The whole frame: the wall's 10 of 25 samples pull the median to 110. */
     sl_frame_stats_measure(&img, NULL, hist, &st);
     assert_int_equal(st.mean, 110);
-    /* The field from row 4: median 100, MAD 10, sigma 1.4826 * 10 = 14.8 (Q4 237). */
+    /* The field from row 8: median 100, MAD 10, sigma 1.4826 * 10 = 14.8 (Q4 237). */
     for (i = 0; i < 20u; i++) {
-        top[i] = 4u;
+        top[i] = 8u;
     }
     sl_frame_stats_measure(&img, top, hist, &st);
     assert_int_equal(st.mean, 100);
     assert_int_equal(st.sigma_q4, 237);
     /* No field in the frame: nothing measured. */
     for (i = 0; i < 20u; i++) {
-        top[i] = 10u;
+        top[i] = 20u;
     }
     sl_frame_stats_measure(&img, top, hist, &st);
     assert_int_equal(st.mean, 0);

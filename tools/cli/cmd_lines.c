@@ -22,6 +22,7 @@ typedef struct lines_args {
     const char *in;
     const char *out;
     int intersections; /* 0 with --no-intersections */
+    uint32_t repeat; /* detections run on the frame (the output is printed once) */
 } lines_args;
 
 /* Intersection options: name, range, field of symline_intersection_config. */
@@ -70,6 +71,9 @@ static void lines_usage(FILE *f, const char *cmd)
             "  --ix-min-angle Q8DEG, --ix-gap Q8PX, --ix-gap-pct PCT, --ix-arm Q8PX,\n"
             "  --ix-merge Q8PX, --ix-min-length Q8PX\n"
             "                      intersection settings (include/symline/intersections.h)\n"
+            "  --repeat N          run the detection N times (1..1000000; default 1) and\n"
+            "                      print it once: (cost(N=11) - cost(N=1)) / 10 is one\n"
+            "                      detection (tools/bench/icount.sh)\n"
             "  IN                  binary PGM or PNG (colour is converted to luma)\n"
             "%s"
             "Prints JSON (SPEC section 7) on stdout%s.\n"
@@ -92,6 +96,7 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
     detopts_init(&d);
     a->intersections = 1;
     symline_intersection_config_default(&a->icfg);
+    a->repeat = 1u;
     muffopts_init(&a->method);
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
@@ -109,6 +114,13 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int npos_want)
             return rc;
         }
         if (rc == 1) {
+            continue;
+        }
+        if (strcmp(o, "--repeat") == 0) {
+            if (i + 1 >= argc || detopts_u32(argv[i + 1], 1u, 1000000u, &a->repeat) != 0) {
+                return cli_error("%s: --repeat needs a number 1..1000000", argv[0]);
+            }
+            i++;
             continue;
         }
         rc = muffopts_parse(&a->method, argc, argv, &i, err, sizeof err);
@@ -171,7 +183,8 @@ static int run_lines(int argc, char **argv, int overlay)
     char err[512];
     void *ws;
     size_t ws_size;
-    symline_status st;
+    symline_status st = SYMLINE_OK;
+    uint32_t r;
     int rc = parse_lines_args(argc, argv, &a, overlay ? 2 : 1);
     if (rc != 0) {
         return rc == 1 ? CLI_OK : rc;
@@ -203,7 +216,9 @@ static int run_lines(int argc, char **argv, int overlay)
         const symline_intersection_result *ixp = a.intersections ? &ix : NULL;
         ix.items = items;
         ix.cap = sizeof items / sizeof items[0];
-        st = run_method(&a, &view, ws, ws_size, &res);
+        for (r = 0u; r < a.repeat && st == SYMLINE_OK; r++) {
+            st = run_method(&a, &view, ws, ws_size, &res);
+        }
         if (st == SYMLINE_OK && a.intersections) {
             st = symline_intersections(&res, &a.icfg, &ix);
         }

@@ -1,0 +1,79 @@
+#!/bin/sh
+# Instructions per pixel of one full detection (`symline lines`), counted by
+# callgrind: deterministic for a binary and its input, unlike seconds on a shared
+# machine. Reading the frame, allocating and printing JSON cost the same at every
+# repeat count, so one detection is (count(--repeat 11) - count(--repeat 1)) / 10.
+#
+# usage: tools/bench/icount.sh [--build DIR] [--opts "OPTIONS"]... FRAME...
+#   --build DIR    build directory with bin/symline (default: REPO/build)
+#   --opts "..."   `symline lines` options of one column; repeat for more
+#                  columns (default: one column, the default detection)
+# Prints one row per frame: name, size, then per column the instructions of one
+# detection per pixel (and in millions per frame).
+set -eu
+
+usage() { sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
+
+REPO=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=$REPO/build
+NOPTS=0
+while [ $# -gt 0 ]; do
+    case $1 in
+        -h|--help) usage; exit 0 ;;
+        --build) BUILD=$2; shift 2 ;;
+        --opts) NOPTS=$((NOPTS + 1)); eval "OPTS_$NOPTS=\$2"; shift 2 ;;
+        --) shift; break ;;
+        -*) echo "icount.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+        *) break ;;
+    esac
+done
+[ $# -ge 1 ] || { usage >&2; exit 2; }
+if [ "$NOPTS" -eq 0 ]; then
+    NOPTS=1
+    OPTS_1=
+fi
+BIN=$BUILD/bin/symline
+command -v valgrind >/dev/null || { echo "icount.sh: valgrind is needed (apt-get install -y valgrind)" >&2; exit 2; }
+[ -x "$BIN" ] || { echo "icount.sh: no $BIN (build first: cmake --preset default && cmake --build --preset default)" >&2; exit 2; }
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+
+# Instructions of `symline lines OPTS --repeat N FRAME` (callgrind's total).
+count() { # N FRAME OPTS
+    # shellcheck disable=SC2086
+    valgrind --tool=callgrind --callgrind-out-file="$TMP/cg" "$BIN" lines $3 --repeat "$1" "$2" \
+        > "$TMP/out.json" 2> "$TMP/vg.txt" || { cat "$TMP/vg.txt" >&2; exit 1; }
+    sed -n 's/^totals: *\([0-9]*\).*/\1/p' "$TMP/cg"
+}
+
+hdr="| frame | size |"
+sep="|---|---|"
+i=1
+while [ "$i" -le "$NOPTS" ]; do
+    eval "o=\$OPTS_$i"
+    hdr="$hdr ${o:-default} instr/px (M/frame) |"
+    sep="$sep---:|"
+    i=$((i + 1))
+done
+echo "$hdr"
+echo "$sep"
+for frame in "$@"; do
+    [ -f "$frame" ] || { echo "icount.sh: no frame '$frame'" >&2; exit 2; }
+    row=
+    i=1
+    while [ "$i" -le "$NOPTS" ]; do
+        eval "o=\$OPTS_$i"
+        c1=$(count 1 "$frame" "$o")
+        c11=$(count 11 "$frame" "$o")
+        # The frame's size from the detection's own JSON (any format imgio reads).
+        wh=$(tr ',{}' '\n\n\n' < "$TMP/out.json" | sed -n 's/^ *"\(width\|height\)": *\([0-9]*\).*/\2/p' | head -n 2 | tr '\n' ' ')
+        px=$(echo "$wh" | awk '{print $1 * $2}')
+        [ -n "$row" ] || row="| $(basename "$frame") | $(echo "$wh" | awk '{print $1 "x" $2}') |"
+        row="$row $(awk -v a="$c1" -v b="$c11" -v px="$px" \
+            'BEGIN { d = (b - a) / 10; printf "%.1f (%.2f)", d / px, d / 1e6 }') |"
+        i=$((i + 1))
+    done
+    echo "$row"
+done
+echo
+echo "valgrind --tool=callgrind, $BIN; $(gcc --version | head -n 1)"
