@@ -55,6 +55,8 @@ const pixfmt_info *from_drm(uint32_t drm)
     const pixfmt_info *f = pixfmt_find(drm);
     /* V4L2's multi-planar variants (NM12 ...) have no DRM name. */
     if (f != nullptr && f->name[0] != 'N' && f->name[1] == 'M') return nullptr;
+    /* The shim does not decode compressed frames (V4L2 does: --device). */
+    if (f != nullptr && f->layout == PIXFMT_JPEG) return nullptr;
     return f;
 }
 
@@ -390,7 +392,7 @@ int configure(lcsrc *c, const libcamera_options *opt, char *desc, size_t desclen
     }
     if (opt->format != nullptr) {
         want = pixfmt_by_name(opt->format);
-        if (want == nullptr || (want->name[0] != 'N' && want->name[1] == 'M')) {
+        if (want == nullptr || (want->name[0] != 'N' && want->name[1] == 'M') || want->layout == PIXFMT_JPEG) {
             std::snprintf(err, errlen, "unsupported format '%s' for libcamera", opt->format);
             return -1;
         }

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "loop.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,7 @@
 #include "overlay.h"
 #include "segjson.h"
 #include "symline/intersections.h"
+#include "symline/version.h"
 
 /* Detector memory, sized for the current frame size (sources may change it: replay). */
 typedef struct detector {
@@ -117,11 +119,18 @@ static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d,
         n--;
     }
     lw->len = n;
-    printf("{\"frame\": %llu, \"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, "
-           "\"latency_ms\": %.3f, "
+    printf("{\"frame\": %llu, ", (unsigned long long)f->number);
+    if (f->file != NULL) {
+        fputs("\"file\": ", stdout);
+        segjson_put_string(stdout, f->file);
+        fputs(", ", stdout);
+    }
+    /* The version in every record: a log says which detector made it. */
+    printf("\"version\": \"%s\", ", SYMLINE_VERSION_STRING);
+    printf("\"sequence\": %u, \"timestamp_ns\": %lld, \"skipped\": %u, \"latency_ms\": %.3f, "
            "\"stages_ms\": {\"queue\": %.3f, \"convert\": %.3f, \"detect\": %.3f}, ",
-           (unsigned long long)f->number, f->sequence, (long long)f->timestamp_ns, f->skipped,
-           latency_ms, queue_ms, (double)f->convert_ns / 1e6, detect_ms);
+           f->sequence, (long long)f->timestamp_ns, f->skipped, latency_ms, queue_ms,
+           (double)f->convert_ns / 1e6, detect_ms);
     fwrite(lw->buf + 1, 1, lw->len - 1, stdout);
     fputc('\n', stdout);
     return fflush(stdout) == 0 ? 0 : -1;
@@ -272,11 +281,16 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
             break;
         }
         capsrc_release(src);
+        errno = 0;
         if (emit_frame(&lw, &frame, &det, lat_ms,
                        (double)(t_got - frame.timestamp_ns - frame.convert_ns) / 1e6,
                        det_ms) != 0) {
-            if (!*stop_signal) {
-                fprintf(stderr, "symline-capture: error: writing the frame record failed\n");
+            if (errno == EPIPE) {
+                /* The reader went away (`| head`): a normal end, not an error. */
+                stop_reason = "output closed";
+            } else if (!*stop_signal) {
+                fprintf(stderr, "symline-capture: error: writing the frame record failed: %s\n",
+                        strerror(errno));
                 stop_reason = "output error";
                 status = -1;
             }

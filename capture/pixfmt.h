@@ -10,6 +10,10 @@
  * caller-owned buffer. Packed RGB (RGB3, BGR3, XR24, AR24, XB24, AB24; the
  * formats of vimc and of some USB cameras) is converted to luma with the
  * weights imgio uses for colour files, Y = (299 R + 587 G + 114 B + 500) / 1000.
+ * 8-bit Bayer mosaics (BA81 = BGGR, GBRG, GRBG, RGGB; raw sensors) are turned
+ * into full-resolution luma with the same weights (see pixfmt_unpack_luma).
+ * Motion-JPEG (MJPG, JPEG; most USB webcams) is compressed: its luma is
+ * decoded by jpeg_luma.h, not here.
  */
 #ifndef SYMLINE_CAPTURE_PIXFMT_H
 #define SYMLINE_CAPTURE_PIXFMT_H
@@ -27,7 +31,9 @@ extern "C" {
 typedef enum pixfmt_layout {
     PIXFMT_LUMA_PLANE = 0, /* luma is the first plane: width bytes per row, no copy */
     PIXFMT_PACKED_422 = 1, /* 2 bytes per pixel, luma at byte offset luma_offset of each pair */
-    PIXFMT_PACKED_RGB = 2  /* 3 or 4 bytes per pixel; luma computed as in imgio.h (BT.601) */
+    PIXFMT_PACKED_RGB = 2, /* 3 or 4 bytes per pixel; luma computed as in imgio.h (BT.601) */
+    PIXFMT_BAYER8 = 3,     /* 1 byte per pixel, one colour per pixel in a 2x2 pattern (cfa) */
+    PIXFMT_JPEG = 4        /* compressed, a variable number of bytes per frame */
 } pixfmt_layout;
 
 typedef struct pixfmt_info {
@@ -36,8 +42,9 @@ typedef struct pixfmt_info {
     pixfmt_layout layout;
     uint32_t luma_offset; /* packed 4:2:2: 0 for Y first (YUYV, YVYU), 1 for chroma first (UYVY, VYUY) */
     unsigned preference;  /* lower = preferred when the user names no format (no-copy first) */
-    uint32_t bytes_per_pixel; /* of the first plane: 1, 2 (4:2:2), 3 or 4 (RGB) */
+    uint32_t bytes_per_pixel; /* of the first plane: 1, 2 (4:2:2), 3 or 4 (RGB); 0 (JPEG) */
     uint8_t r, g, b;      /* RGB: byte offsets of red, green, blue within a pixel */
+    const char *cfa;      /* Bayer: colours of pixels (0,0) (1,0) (0,1) (1,1), e.g. "BGGR" */
 } pixfmt_info;
 
 /* The table entry of a fourcc, or NULL when the format is not supported. */
@@ -60,9 +67,16 @@ void pixfmt_fourcc_str(uint32_t fourcc, char out[5]);
 uint64_t pixfmt_min_stride(const pixfmt_info *fmt, uint32_t width);
 
 /*
- * Writes the luma of a packed 4:2:2 or RGB frame into dst (dst_stride bytes
- * per row). src_stride is the driver's bytesperline (>= pixfmt_min_stride).
- * For 4:2:2, width must be even.
+ * Writes the luma of a packed 4:2:2, RGB or Bayer frame into dst (dst_stride
+ * bytes per row). src_stride is the driver's bytesperline (>= pixfmt_min_stride).
+ * For 4:2:2, width must be even; for Bayer, width and height at least 2.
+ *
+ * Bayer: each 2x2 window of the mosaic holds one red, two green and one blue
+ * pixel, so it gives one luma value, (299 R + 587 (G1 + G2) / 2 + 114 B) / 1000.
+ * A pixel's luma is the mean of the four windows that contain it (a 3x3
+ * neighbourhood weighted 1 2 1 / 2 4 2 / 1 2 1), rounded: centred on the
+ * pixel, and exactly the gray value on a uniform gray surface. Beyond the
+ * border the mosaic is mirrored by two pixels, which keeps its colour phase.
  */
 void pixfmt_unpack_luma(const pixfmt_info *fmt, const uint8_t *src, uint32_t src_stride,
                         uint32_t width, uint32_t height, uint8_t *dst, uint32_t dst_stride);

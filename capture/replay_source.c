@@ -23,6 +23,7 @@ typedef struct replay {
     size_t next;        /* index of the next file to read */
     int loop;
     int64_t period_ns;  /* 0 = unpaced */
+    uint32_t rate_num, rate_den; /* the pace, for the description */
     int64_t due_ns;     /* when the next frame may be delivered */
     imgio_gray img;     /* the frame currently handed out */
     int holding;
@@ -39,8 +40,14 @@ static int has_suffix(const char *name, const char *suffix)
 
 static int has_image_suffix(const char *name)
 {
-    size_t n = strlen(name);
-    return (n > 4 && (strcasecmp(name + n - 4, ".pgm") == 0 || strcasecmp(name + n - 4, ".png") == 0));
+    return has_suffix(name, ".pgm") || has_suffix(name, ".png") || has_suffix(name, ".jpg") ||
+           has_suffix(name, ".jpeg");
+}
+
+/* NAME.mask.pgm / .png: an evaluation's line mask next to its frame, not a frame. */
+static int is_mask(const char *name)
+{
+    return has_suffix(name, ".mask.pgm") || has_suffix(name, ".mask.png");
 }
 
 static int add_file(replay *r, size_t *cap, const char *dir, const char *name)
@@ -85,7 +92,7 @@ static int scan_dir(replay *r, const char *path, char *err, size_t errlen)
         return -1;
     }
     while ((e = readdir(d)) != NULL) {
-        if (e->d_name[0] != '.' && has_image_suffix(e->d_name)) {
+        if (e->d_name[0] != '.' && has_image_suffix(e->d_name) && !is_mask(e->d_name)) {
             if (add_file(r, &cap, path, e->d_name) != 0) {
                 closedir(d);
                 snprintf(err, errlen, "out of memory");
@@ -189,6 +196,7 @@ static capsrc_result y4m_next(capsrc *src, replay *r, capsrc_frame *frame)
     frame->timestamp_ns = t0;
     frame->skipped = 0;
     frame->convert_ns = 0;
+    frame->file = y4m_path(r->y4m);
     src->stats.delivered++;
     return CAPSRC_OK;
 }
@@ -248,6 +256,7 @@ static capsrc_result replay_next(capsrc *src, capsrc_frame *frame, int timeout_m
     frame->timestamp_ns = t0; /* the file read stands for the exposure */
     frame->skipped = 0;
     frame->convert_ns = 0;
+    frame->file = file;
     r->next++;
     src->stats.delivered++;
     return CAPSRC_OK;
@@ -311,13 +320,22 @@ capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen)
         return NULL;
     }
     if (r->y4m == NULL && r->count == 0) {
-        snprintf(err, errlen, "%s: no .pgm or .png frames found", opt->path);
+        snprintf(err, errlen, "%s: no .pgm, .png or .jpg frames found", opt->path);
         replay_free(r);
         return NULL;
     }
     r->loop = opt->loop;
-    if (opt->fps_num > 0 && opt->fps_den > 0) {
-        r->period_ns = (int64_t)1000000000 * opt->fps_den / opt->fps_num;
+    {
+        /* An explicit pace, else a recording's own frame rate, else as fast as read. */
+        uint32_t num = opt->fps_num, den = opt->fps_den ? opt->fps_den : 1u;
+        if (num == 0 && r->y4m != NULL && y4m_rate(r->y4m, &num, &den) != 0) {
+            num = 0;
+        }
+        if (num > 0 && !opt->unpaced) {
+            r->period_ns = (int64_t)((uint64_t)1000000000u * den / num);
+            r->rate_num = num;
+            r->rate_den = den;
+        }
     }
     src = capsrc_alloc(&replay_ops, r);
     if (src == NULL) {
@@ -325,12 +343,18 @@ capsrc *replay_source_open(const replay_options *opt, char *err, size_t errlen)
         replay_free(r);
         return NULL;
     }
-    if (r->y4m != NULL) {
-        snprintf(src->description, sizeof src->description, "replay %s: YUV4MPEG2 %ux%u%s", opt->path,
-                 y4m_width(r->y4m), y4m_height(r->y4m), r->loop ? ", looping" : "");
-    } else {
-        snprintf(src->description, sizeof src->description, "replay %s: %zu frame file%s%s", opt->path,
-                 r->count, r->count == 1 ? "" : "s", r->loop ? ", looping" : "");
+    {
+        char pace[64] = ", unpaced";
+        if (r->period_ns > 0) {
+            snprintf(pace, sizeof pace, ", %u/%u fps", r->rate_num, r->rate_den);
+        }
+        if (r->y4m != NULL) {
+            snprintf(src->description, sizeof src->description, "replay %s: YUV4MPEG2 %ux%u%s%s", opt->path,
+                     y4m_width(r->y4m), y4m_height(r->y4m), pace, r->loop ? ", looping" : "");
+        } else {
+            snprintf(src->description, sizeof src->description, "replay %s: %zu frame file%s%s%s", opt->path,
+                     r->count, r->count == 1 ? "" : "s", pace, r->loop ? ", looping" : "");
+        }
     }
     return src;
 }

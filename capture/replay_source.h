@@ -8,12 +8,15 @@
 #include "source.h"
 
 typedef struct replay_options {
-    const char *path; /* a directory (its *.pgm / *.png files in name order), one image
+    const char *path; /* a directory (its *.pgm / *.png / *.jpg files in name order, without
+                         the evaluation's line masks *.mask.pgm / *.mask.png), one image
                          file, a YUV4MPEG2 stream (*.y4m, luma of each frame), or a text
                          file listing one image path per line (relative paths are taken
                          from the list's folder; '#' starts a comment) */
-    uint32_t fps_num; /* pace delivery at fps_num/fps_den frames per second; 0 = as fast as read */
+    uint32_t fps_num; /* pace delivery at fps_num/fps_den frames per second; 0 = the Y4M
+                         stream's own frame rate, image files as fast as they are read */
     uint32_t fps_den;
+    int unpaced;      /* 1 = as fast as frames are read, whatever the recording says */
     int loop;         /* 1 = start over after the last frame */
 } replay_options;
 

@@ -16,6 +16,7 @@ capsrc_result capsrc_start(capsrc *src)
 
 capsrc_result capsrc_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
 {
+    frame->file = NULL; /* only file sources set it */
     return src->ops->next(src, frame, timeout_ms);
 }
 

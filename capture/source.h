@@ -42,6 +42,7 @@ typedef struct capsrc_frame {
     int64_t timestamp_ns;  /* capture time on CLOCK_MONOTONIC, nanoseconds */
     uint32_t skipped;      /* newer frames replaced older ones since the last frame (freshest mode) */
     int64_t convert_ns;    /* time spent extracting luma (packed formats; 0 when read in place) */
+    const char *file;      /* replay: the file the frame came from; NULL for cameras */
 } capsrc_frame;
 
 /* Counters since capsrc_start. */

@@ -3,8 +3,9 @@
  *
  * A buffer is in exactly one place at a time: queued in the driver, held by
  * the caller (at most one), or being re-queued. Luma-plane formats are handed
- * out in place and go back to the driver on release; packed formats are
- * deinterleaved into a private frame and re-queued at once.
+ * out in place and go back to the driver on release; packed, Bayer and
+ * Motion-JPEG frames are converted (decoded) into a private frame and
+ * re-queued at once.
  */
 #define _GNU_SOURCE
 #include "v4l2_source.h"
@@ -20,6 +21,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include "jpeg_luma.h"
 #include "pixfmt.h"
 
 #define V4L2SRC_MAX_BUFFERS 32u
@@ -38,7 +40,10 @@ typedef struct v4l2src {
     int freshest;
     int held;            /* index of the buffer the caller holds, -1 = none */
     capsrc_result pending; /* a failed re-queue on release, reported by the next capsrc_next */
-    uint8_t *unpacked;   /* luma of packed formats, width*height */
+    uint8_t *unpacked;   /* luma of packed, Bayer and JPEG formats, width*height */
+    jpeg_luma *jpeg;     /* the decoder of Motion-JPEG frames */
+    uint32_t got_bytes;  /* bytesused of the buffer drain() picked */
+    char jpeg_error[128]; /* why the last damaged JPEG frame was skipped, "" when none */
     uint64_t number;
     int have_seq;
     uint32_t last_seq;
@@ -173,7 +178,8 @@ static capsrc_result drain(capsrc *src, v4l2src *v, int *got, struct v4l2_buffer
         v->have_seq = 1;
         v->last_seq = b.sequence;
         /* Corrupt or short frames are never handed out. */
-        if ((b.flags & V4L2_BUF_FLAG_ERROR) != 0 || (bytes_used(v, &b) != 0 && bytes_used(v, &b) < need)) {
+        if ((b.flags & V4L2_BUF_FLAG_ERROR) != 0 || (bytes_used(v, &b) != 0 && bytes_used(v, &b) < need) ||
+            (v->fmt->layout == PIXFMT_JPEG && (bytes_used(v, &b) == 0 || bytes_used(v, &b) > v->maplen[b.index]))) {
             src->stats.error_buffers++;
             r = requeue(src, v, b.index);
             if (r != CAPSRC_OK) {
@@ -191,6 +197,7 @@ static capsrc_result drain(capsrc *src, v4l2src *v, int *got, struct v4l2_buffer
             }
         }
         *got = (int)b.index;
+        v->got_bytes = bytes_used(v, &b);
         *out = b;
         out->m.planes = NULL;
         if (!v->freshest) {
@@ -228,7 +235,8 @@ static capsrc_result v4l2_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
             return fail_errno(src, v, "poll", errno);
         }
         if (pr == 0) {
-            capsrc_set_error(src, "%s: no frame within %d ms", v->device, timeout_ms);
+            capsrc_set_error(src, "%s: no frame within %d ms%s%s", v->device, timeout_ms,
+                             v->jpeg_error[0] ? "; the last damaged frame: " : "", v->jpeg_error);
             return CAPSRC_TIMEOUT;
         }
         if ((p.revents & POLLNVAL) != 0) {
@@ -250,12 +258,29 @@ static capsrc_result v4l2_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
         }
         frame->width = v->width;
         frame->height = v->height;
-        frame->number = v->number++;
         frame->sequence = b.sequence;
         frame->timestamp_ns = ts_ns(&b);
         frame->skipped = (uint32_t)(src->stats.skipped_stale - skipped_before);
         frame->convert_ns = 0;
-        if (v->fmt->layout != PIXFMT_LUMA_PLANE) {
+        if (v->fmt->layout == PIXFMT_JPEG) {
+            const int64_t t0 = capsrc_now_ns();
+            char jerr[sizeof v->jpeg_error];
+            const int bad = jpeg_luma_decode(v->jpeg, v->map[got], v->got_bytes, v->width, v->height, v->unpacked,
+                                             v->width, jerr, sizeof jerr) != 0;
+            frame->convert_ns = capsrc_now_ns() - t0;
+            r = requeue(src, v, (uint32_t)got);
+            if (r != CAPSRC_OK) {
+                return r;
+            }
+            if (bad) {
+                /* A damaged frame (USB cameras deliver some) is skipped like a flagged buffer. */
+                memcpy(v->jpeg_error, jerr, sizeof jerr);
+                src->stats.error_buffers++;
+                continue;
+            }
+            frame->luma = v->unpacked;
+            frame->stride = v->width;
+        } else if (v->fmt->layout != PIXFMT_LUMA_PLANE) {
             const int64_t t0 = capsrc_now_ns();
             pixfmt_unpack_luma(v->fmt, v->map[got], v->stride, v->width, v->height, v->unpacked, v->width);
             frame->convert_ns = capsrc_now_ns() - t0;
@@ -270,6 +295,7 @@ static capsrc_result v4l2_next(capsrc *src, capsrc_frame *frame, int timeout_ms)
             frame->stride = v->stride;
             v->held = got;
         }
+        frame->number = v->number++;
         src->stats.delivered++;
         return CAPSRC_OK;
     }
@@ -306,6 +332,8 @@ static void v4l2_teardown(v4l2src *v)
     }
     free(v->unpacked);
     v->unpacked = NULL;
+    jpeg_luma_close(v->jpeg);
+    v->jpeg = NULL;
 }
 
 static void v4l2_close(capsrc *src)
@@ -335,6 +363,9 @@ static const pixfmt_info *pick_format(v4l2src *v, char *offered, size_t offlen)
         pixfmt_fourcc_str(d.pixelformat, cc);
         if (used + 6 < offlen) {
             used += (size_t)snprintf(offered + used, offlen - used, "%s%s", used ? " " : "", cc);
+        }
+        if (f != NULL && f->layout == PIXFMT_JPEG && !jpeg_luma_available()) {
+            f = NULL; /* this build cannot decode it */
         }
         if (f != NULL && (best == NULL || f->preference < best->preference)) {
             best = f;
@@ -444,7 +475,8 @@ static int configure(v4l2src *v, const v4l2_options *opt, char *desc, size_t des
     }
     if (v->width == 0 || v->height == 0 || v->width > 65535u || v->height > 65535u ||
         v->stride < pixfmt_min_stride(want, v->width) ||
-        (want->layout == PIXFMT_PACKED_422 && (v->width & 1u))) {
+        (want->layout == PIXFMT_PACKED_422 && (v->width & 1u)) ||
+        (want->layout == PIXFMT_BAYER8 && (v->width < 2u || v->height < 2u))) {
         snprintf(err, errlen, "%s: driver granted an unusable frame %ux%u, bytesperline %u", v->device, v->width,
                  v->height, v->stride);
         return -1;
@@ -529,6 +561,14 @@ static int configure(v4l2src *v, const v4l2_options *opt, char *desc, size_t des
         v->unpacked = malloc((size_t)v->width * v->height);
         if (v->unpacked == NULL) {
             snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+    }
+    if (want->layout == PIXFMT_JPEG) {
+        char jerr[128];
+        v->jpeg = jpeg_luma_open(jerr, sizeof jerr);
+        if (v->jpeg == NULL) {
+            snprintf(err, errlen, "%s: %s: %s", v->device, want->name, jerr);
             return -1;
         }
     }

@@ -13,6 +13,7 @@ struct y4m_reader {
     FILE *f;
     char path[256];
     uint32_t width, height;
+    uint32_t rate_num, rate_den; /* F<num>:<den>; 0:0 when the header has none */
     uint64_t chroma;   /* bytes after the luma plane of each frame */
     long data_start;   /* file offset of the first FRAME */
     uint8_t *luma;
@@ -81,6 +82,17 @@ y4m_reader *y4m_open(const char *path, char *err, size_t errlen)
             r->height = (uint32_t)strtoul(tok + 1, NULL, 10);
         } else if (tok[0] == 'C') {
             snprintf(tag, sizeof tag, "%s", tok + 1);
+        } else if (tok[0] == 'F') {
+            /* Frame rate as a ratio; 0:0 means unknown. */
+            char *colon = NULL;
+            unsigned long num = strtoul(tok + 1, &colon, 10), den = 0;
+            if (colon != NULL && *colon == ':') {
+                den = strtoul(colon + 1, NULL, 10);
+            }
+            if (num > 0 && den > 0 && num <= 0xffffffffu && den <= 0xffffffffu) {
+                r->rate_num = (uint32_t)num;
+                r->rate_den = (uint32_t)den;
+            }
         }
     }
     if (r->width == 0 || r->height == 0 || r->width > 65535u || r->height > 65535u) {
@@ -102,6 +114,21 @@ y4m_reader *y4m_open(const char *path, char *err, size_t errlen)
         return NULL;
     }
     return r;
+}
+
+int y4m_rate(const y4m_reader *r, uint32_t *num, uint32_t *den)
+{
+    if (r->rate_num == 0 || r->rate_den == 0) {
+        return -1;
+    }
+    *num = r->rate_num;
+    *den = r->rate_den;
+    return 0;
+}
+
+const char *y4m_path(const y4m_reader *r)
+{
+    return r->path;
 }
 
 uint32_t y4m_width(const y4m_reader *r)

@@ -17,6 +17,12 @@ y4m_reader *y4m_open(const char *path, char *err, size_t errlen);
 uint32_t y4m_width(const y4m_reader *r);
 uint32_t y4m_height(const y4m_reader *r);
 
+/* The frame rate of the header's F<num>:<den> tag: 0 with num and den set, -1 when it has none. */
+int y4m_rate(const y4m_reader *r, uint32_t *num, uint32_t *den);
+
+/* The path the reader was opened with. */
+const char *y4m_path(const y4m_reader *r);
+
 /*
  * Reads the next frame's luma into the reader's buffer (width*height bytes,
  * stride = width, valid until the next call). Returns 1 with *luma set, 0 at

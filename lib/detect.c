@@ -46,33 +46,86 @@ void symline_config_default(symline_config *cfg)
 /* Largest value of the Q8 length settings: the largest frame dimension. */
 #define SL_MAX_LENGTH_Q8 (SYMLINE_MAX_DIM << SL_Q8_SHIFT)
 
-symline_status sl_config_check(const symline_config *c)
+/* The first field out of its range, or SYMLINE_CFG_NONE. */
+static symline_config_field bad_field(const symline_config *c)
 {
     if (c->axes != SYMLINE_AXES_HORIZONTAL && c->axes != SYMLINE_AXES_VERTICAL &&
         c->axes != SYMLINE_AXES_BOTH) {
-        return SYMLINE_ERR_CONFIG;
+        return SYMLINE_CFG_AXES;
     }
-    if (c->radius < 1u || c->radius > SYMLINE_DETECT_MAX_RADIUS ||
-        c->levels > SYMLINE_DETECT_MAX_LEVELS) {
-        return SYMLINE_ERR_CONFIG;
+    if (c->radius < 1u || c->radius > SYMLINE_DETECT_MAX_RADIUS) {
+        return SYMLINE_CFG_RADIUS;
+    }
+    if (c->levels > SYMLINE_DETECT_MAX_LEVELS) {
+        return SYMLINE_CFG_LEVELS;
     }
     if (c->filter != SYMLINE_FILTER_CONTRAST && c->filter != SYMLINE_FILTER_PAPER) {
-        return SYMLINE_ERR_CONFIG;
+        return SYMLINE_CFG_FILTER;
     }
-    if (c->illumination > 255u || c->bright_sigma10 < -100 || c->bright_sigma10 > 100 ||
-        c->ridge_sigma10 > 100u || c->side_sigma10 < -100 || c->side_sigma10 > 100 ||
-        c->a_distance > SYMLINE_DETECT_MAX_A_DISTANCE || c->contrast_pct > 100u ||
-        c->contrast_min > 255u || c->contrast_asym_pct > 1000u || c->min_length > SYMLINE_MAX_DIM ||
-        c->curve_dev_q8 > SL_MAX_LENGTH_Q8 || c->curve_bend_q8 > SL_MAX_LENGTH_Q8 ||
-        c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
-        return SYMLINE_ERR_CONFIG;
+    if (c->illumination > 255u) {
+        return SYMLINE_CFG_ILLUMINATION;
     }
-    if ((c->field_boundary != SYMLINE_FIELD_OFF && c->field_boundary != SYMLINE_FIELD_DROP &&
-         c->field_boundary != SYMLINE_FIELD_KEEP) ||
-        c->field_margin > SYMLINE_MAX_DIM || !sl_field_config_ok(&c->field)) {
-        return SYMLINE_ERR_CONFIG;
+    if (c->bright_sigma10 < -100 || c->bright_sigma10 > 100) {
+        return SYMLINE_CFG_BRIGHT_SIGMA10;
     }
-    return SYMLINE_OK;
+    if (c->ridge_sigma10 > 100u) {
+        return SYMLINE_CFG_RIDGE_SIGMA10;
+    }
+    if (c->side_sigma10 < -100 || c->side_sigma10 > 100) {
+        return SYMLINE_CFG_SIDE_SIGMA10;
+    }
+    if (c->a_distance > SYMLINE_DETECT_MAX_A_DISTANCE) {
+        return SYMLINE_CFG_A_DISTANCE;
+    }
+    if (c->contrast_pct > 100u) {
+        return SYMLINE_CFG_CONTRAST_PCT;
+    }
+    if (c->contrast_min > 255u) {
+        return SYMLINE_CFG_CONTRAST_MIN;
+    }
+    if (c->contrast_asym_pct > 1000u) {
+        return SYMLINE_CFG_CONTRAST_ASYM_PCT;
+    }
+    if (c->min_length > SYMLINE_MAX_DIM) {
+        return SYMLINE_CFG_MIN_LENGTH;
+    }
+    if (c->curve_dev_q8 > SL_MAX_LENGTH_Q8) {
+        return SYMLINE_CFG_CURVE_DEV_Q8;
+    }
+    if (c->curve_bend_q8 > SL_MAX_LENGTH_Q8) {
+        return SYMLINE_CFG_CURVE_BEND_Q8;
+    }
+    if (c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
+        return SYMLINE_CFG_MERGE_DEV_Q8;
+    }
+    if (c->field_boundary != SYMLINE_FIELD_OFF && c->field_boundary != SYMLINE_FIELD_DROP &&
+        c->field_boundary != SYMLINE_FIELD_KEEP) {
+        return SYMLINE_CFG_FIELD_BOUNDARY;
+    }
+    if (c->field_margin > SYMLINE_MAX_DIM) {
+        return SYMLINE_CFG_FIELD_MARGIN;
+    }
+    if (!sl_field_config_ok(&c->field)) {
+        return SYMLINE_CFG_FIELD;
+    }
+    return SYMLINE_CFG_NONE;
+}
+
+symline_status sl_config_check(const symline_config *c)
+{
+    return bad_field(c) == SYMLINE_CFG_NONE ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
+}
+
+symline_status symline_config_check(const symline_config *cfg, symline_config_field *field)
+{
+    const symline_config_field bad = cfg != NULL ? bad_field(cfg) : SYMLINE_CFG_NONE;
+    if (field != NULL) {
+        *field = bad;
+    }
+    if (cfg == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    return bad == SYMLINE_CFG_NONE ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
 }
 
 /* Number of scales (levels): as configured, or enough that the coarsest one reaches
@@ -230,6 +283,7 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
     d.nseg = 0u;
     d.prev_seg = 0u;
     d.npts = 0u;
+    out->points_needed = 0u; /* raised by every pass (pass.c) */
     d.truncated = false;
     d.stats.mean = 0u;
     d.stats.sigma_q4 = 0u;

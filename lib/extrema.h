@@ -1,7 +1,8 @@
 /*
  * The extrema stage's private interface (extrema.c): the one routine for the
- * SPEC §3 run rule along a row, used by the public symline_extrema_row() and
- * by the detector's line point collection (linepoints.c).
+ * run rule of docs/algorithm.md along a row, used by the public
+ * symline_extrema_row() and by the detector's line point collection
+ * (linepoints.c).
  */
 #ifndef SYMLINE_LIB_EXTREMA_H
 #define SYMLINE_LIB_EXTREMA_H

@@ -98,6 +98,11 @@ typedef struct sl_fstate {
     uint8_t *band; /* their cells' means and textures, read once */
 } sl_fstate;
 
+/* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 640 bytes for this state and
+ * the alignment, and 24 per grid column. */
+typedef char
+    sl_fstate_fits_ws_budget[(sizeof(sl_fstate) <= 600u && sizeof(sl_fcol) <= 24u) ? 1 : -1];
+
 static size_t cols_bytes(uint32_t nc)
 {
     return sl_align_up((size_t)nc * sizeof(sl_fcol));

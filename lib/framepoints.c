@@ -15,7 +15,7 @@
 #include "tracer.h"
 
 /* Leaves out the points of a pass's raster list pts[0..n-1] that have no line
- * point among their 8 neighbours (type A, SPEC §4: neither method uses them),
+ * point among their 8 neighbours (type A in the paper's classification: neither method uses them),
  * moves the rest to the front and returns their number. */
 SL_NOINLINE static uint32_t drop_isolated(const sl_pass *p, symline_point *pts, uint32_t n,
                                           const uint32_t *row_start)
@@ -65,8 +65,12 @@ SL_NOINLINE static uint32_t collect_all(const symline_image *img, const symline_
             if (row_start == NULL) {
                 return n;
             }
+            uint32_t dropped = 0u;
             (void)sl_collect(img, p, cur, (size_t)(end - cur), pts + n, cap - n, &got, row_start,
-                             truncated);
+                             &dropped);
+            if (dropped != 0u) {
+                *truncated = true;
+            }
             got = drop_isolated(p, pts + n, got, row_start);
             /* sub-pixel offsets across the line, then full resolution (a call
              * apart from drop_isolated: the stack holds one of them at a time) */

@@ -84,6 +84,14 @@ typedef struct hring {
     uint32_t map_rows, gray_rows;
 } hring;
 
+/* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 6 bytes per extremum and 8 per
+ * row pointer, and the ring state within its fixed part (see pass.c). */
+typedef char
+    sl_ring_state_fits_ws_budget[(sizeof(hring) + sizeof(symline_colrun) <= 80u &&
+                                  sizeof(symline_extremum) <= 6u && sizeof(const uint8_t *) <= 8u)
+                                     ? 1
+                                     : -1];
+
 size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
 {
     size_t n = (size_t)6u * SL_ALIGN;
@@ -111,10 +119,10 @@ size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
 }
 
 static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x, uint32_t y,
-                       bool *truncated)
+                       uint32_t *dropped)
 {
     if (*n >= cap) {
-        *truncated = true;
+        (*dropped)++; /* counted, so the result can say how much storage was needed */
         return;
     }
     pts[*n].x = (uint16_t)x;
@@ -127,7 +135,7 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 SL_NOINLINE static symline_status collect_vertical(const symline_image *img, const sl_pass *p,
                                                    uint8_t *cur, uint8_t *end, symline_point *pts,
                                                    uint32_t cap, uint32_t *n, uint32_t *row_start,
-                                                   bool *truncated)
+                                                   uint32_t *dropped)
 {
     uint32_t *E = (uint32_t *)sl_carve(&cur, end, (size_t)p->w * sizeof(uint32_t));
     uint8_t *map = (uint8_t *)sl_carve(&cur, end, p->w);
@@ -171,7 +179,7 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img, con
             if (p->filter.a_distance != 0u && !sl_linefilter_a_near(&p->filter, map, w, 1u, w, x)) {
                 continue;
             }
-            push_point(pts, cap, n, x, y, truncated);
+            push_point(pts, cap, n, x, y, dropped);
         }
     }
     row_start[p->h] = *n;
@@ -194,7 +202,7 @@ static uint8_t *h_map(const hring *r, uint32_t y)
 }
 
 static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap, uint32_t *n,
-                     uint32_t *row_start, bool *truncated)
+                     uint32_t *row_start, uint32_t *dropped)
 {
     const sl_pass *p = r->p;
     const uint8_t *map = h_map(r, y);
@@ -214,14 +222,14 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
             !sl_linefilter_a_near(&p->filter, r->map + x, r->map_rows, p->w, p->h, y)) {
             continue;
         }
-        push_point(pts, cap, n, x, y, truncated);
+        push_point(pts, cap, n, x, y, dropped);
     }
 }
 
 SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, const sl_pass *p,
                                                      uint8_t *cur, uint8_t *end, symline_point *pts,
                                                      uint32_t cap, uint32_t *n, uint32_t *row_start,
-                                                     bool *truncated)
+                                                     uint32_t *dropped)
 {
     hring *rp = (hring *)sl_carve(&cur, end, sizeof(hring));
     symline_colrun *cr = (symline_colrun *)sl_carve(&cur, end, sizeof(symline_colrun));
@@ -294,7 +302,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
         }
         if (t >= delta) {
             SL_STAGE(FILTER);
-            h_decide(rp, t - delta, pts, cap, n, row_start, truncated);
+            h_decide(rp, t - delta, pts, cap, n, row_start, dropped);
         }
     }
     SL_STAGE(FILTER);
@@ -305,7 +313,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
         }
     }
     for (y = (h > delta) ? h - delta : 0u; y < h; y++) {
-        h_decide(rp, y, pts, cap, n, row_start, truncated);
+        h_decide(rp, y, pts, cap, n, row_start, dropped);
     }
     row_start[h] = *n;
     return SYMLINE_OK;
@@ -313,7 +321,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
 
 symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
                           symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
-                          bool *truncated)
+                          uint32_t *dropped)
 {
     uint8_t *cur = (uint8_t *)ws;
     uint8_t *end = cur + ws_size;
@@ -322,7 +330,7 @@ symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, 
         return SYMLINE_ERR_SIZE;
     }
     if (p->axis == SYMLINE_AXIS_VERTICAL) {
-        return collect_vertical(img, p, cur, end, pts, cap, n, row_start, truncated);
+        return collect_vertical(img, p, cur, end, pts, cap, n, row_start, dropped);
     }
-    return collect_horizontal(img, p, cur, end, pts, cap, n, row_start, truncated);
+    return collect_horizontal(img, p, cur, end, pts, cap, n, row_start, dropped);
 }

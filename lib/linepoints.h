@@ -33,13 +33,14 @@ size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width);
 /*
  * The line points of one pass, in raster order, grid coordinates, written to
  * pts[0 .. *n-1] (at most cap); row_start[y] is the index of the first point
- * of grid row y, row_start[h] = *n (h+1 entries). Sets *truncated when cap
- * was too small. Strip processing: only a ring of rows is held.
+ * of grid row y, row_start[h] = *n (h+1 entries). Adds to *dropped the line
+ * points that did not fit (cap too small). Strip processing: only a ring of
+ * rows is held.
  * Returns SYMLINE_OK, SYMLINE_ERR_SIZE (empty grid) or SYMLINE_ERR_BUFFER
  * (ws_size below sl_collect_ws_size()).
  */
 symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
                           symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
-                          bool *truncated);
+                          uint32_t *dropped);
 
 #endif /* SYMLINE_LIB_LINEPOINTS_H */

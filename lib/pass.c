@@ -28,6 +28,12 @@
  * are a blob's rim as often as a line. */
 #define SL_MIN_PIECE_POINTS 4u
 
+/* The fixed part of SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) holds, besides
+ * alignment and the collection's bookkeeping (linepoints.c), a pass's state
+ * and the tracer's: they must stay within these budgets on every target. */
+typedef char
+    sl_pass_state_fits_ws_budget[(sizeof(sl_pass) <= 96u && sizeof(sl_tracer) <= 64u) ? 1 : -1];
+
 void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
                    uint32_t width, uint32_t height)
 {
@@ -115,6 +121,27 @@ static void chain(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     }
 }
 
+/* a + b, at most UINT32_MAX (32-bit only: cheap on a Cortex-M0). */
+static uint32_t sat_add(uint32_t a, uint32_t b)
+{
+    return a > 0xFFFFFFFFu - b ? 0xFFFFFFFFu : a + b;
+}
+
+/* symline_result.points_needed grows to at least need. */
+static void note_need(symline_result *r, uint32_t need)
+{
+    if (need > r->points_needed) {
+        r->points_needed = need;
+    }
+}
+
+/* The raster list of n stored and `dropped` lost points after the kept ones.
+ * A call of its own keeps the collection's frame as small as it was. */
+SL_NOINLINE static void note_listed(sl_run *d, uint32_t n, uint32_t dropped)
+{
+    note_need(d->r, sat_add(sat_add(d->npts, n), dropped));
+}
+
 /* Traces the pass's raster list (n points at d->npts) and keeps its
  * segments' points right after the earlier passes' ones. t: the tracer's
  * state, in the pass workspace. Apart from sl_pass_run() so that its frame
@@ -141,6 +168,15 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     if (cut || (tail >= r->point_cap && n > 0u)) {
         d->truncated = true;
     }
+    /* Storage this pass needed: the raster list and the chains after the kept
+     * points, plus one free entry that shows the tracer nothing is left. When
+     * it ran out, at most every line point is in a chain: base + 2 * all. */
+    if (row_start[p->h + 1u] != 0u || cut || (tail >= r->point_cap && n > 0u)) {
+        const uint32_t all = sat_add(n, row_start[p->h + 1u]);
+        note_need(r, sat_add(sat_add(base, sat_add(all, all)), 1u));
+    } else {
+        note_need(r, n == 0u ? base : sat_add(tail, 1u));
+    }
     /* Keep only the points the new segments use, right after the earlier ones. */
     w = base;
     for (k = first_seg; k < d->nseg; k++) {
@@ -160,13 +196,20 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 }
 
 /* The pass's raster list into the free part of the point storage (after
- * d->npts), *n points. Apart from sl_pass_run() so that the collection's
- * call and the tracing's are never on the stack together. */
+ * d->npts), *n points; row_start[p->h + 1] counts those that did not fit. Apart from
+ * sl_pass_run() so that the collection's call and the tracing's are never on
+ * the stack together. */
 SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
                                           const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
     symline_status st = sl_collect(d->img, p, ws, (size_t)(end - ws), d->r->points + d->npts,
-                                   d->r->point_cap - d->npts, n, row_start, &d->truncated);
+                                   d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);
+    if (row_start[p->h + 1u] != 0u) {
+        d->truncated = true;
+    }
+    /* The raster list needs its room (all of it, stored or not) before the
+     * field boundary thins it. */
+    note_listed(d, *n, row_start[p->h + 1u]);
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         /* Above the field: nothing to trace. */
         SL_STAGE(FIELD);
@@ -180,13 +223,15 @@ SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *
 symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end)
 {
     uint8_t *rest = ws;
-    uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 1u) * sizeof(uint32_t));
+    /* The row index (h + 1 entries), then the count of line points that did not fit. */
+    uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 2u) * sizeof(uint32_t));
     uint32_t n = 0u;
     sl_tracer *t;
     symline_status st;
     if (row_start == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
+    row_start[p->h + 1u] = 0u;
     st = collect(d, p, rest, end, row_start, &n);
     if (st != SYMLINE_OK) {
         return st;

@@ -39,7 +39,7 @@ static inline size_t sl_pass_ws_size(const sl_pass *p, uint32_t width)
 {
     const size_t c = sl_collect_ws_size(p, width);
     const size_t t = sl_align_up(sizeof(sl_tracer)) + SL_ALIGN;
-    return sl_align_up(sizeof(sl_pass)) + SL_ALIGN + sl_align_up(((size_t)p->h + 1u) * 4u) +
+    return sl_align_up(sizeof(sl_pass)) + SL_ALIGN + sl_align_up(((size_t)p->h + 2u) * 4u) +
            SL_ALIGN + (c > t ? c : t);
 }
 

@@ -9,7 +9,7 @@
  */
 #include "subpixel.h"
 
-/* 255^2: the squared difference counted for a pair that leaves the grid (SPEC 2). */
+/* 255^2: the squared difference counted for a pair that leaves the grid (docs/algorithm.md). */
 #define SL_SUB_DMAX2 65025u
 
 /* Gray value of the grid pixel whose block starts at src: the rounded box mean
@@ -70,7 +70,7 @@ static uint32_t energy_at(const sl_across *a, int32_t k)
     return e;
 }
 
-/* E (SPEC section 2) at i-1, i and i+1. Inside the grid (the common case) in
+/* E (docs/algorithm.md) at i-1, i and i+1. Inside the grid (the common case) in
  * one sweep out from i that reads each gray value once (2m+3 of them, no
  * buffer): l0, l1, l2 hold the values at i-(j-1), i-j, i-(j+1), r0, r1, r2
  * those at i+(j-1), i+j, i+(j+1). Near the border term by term. */

@@ -6,7 +6,7 @@
  * ever needed. Visited points are marked in place (y = SL_VISITED); x stays,
  * so the rows remain sorted.
  *
- * Rules (SPEC §4, with what the paper leaves open made definite):
+ * Rules (the paper's, with what it leaves open made definite):
  *  - classification by the number of line points among the 8 neighbours:
  *    0 = type A (ignored), 1 = type B (end point), 2+ = type C (inside);
  *  - phase 0 starts at every unvisited B point, in raster order;

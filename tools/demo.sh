@@ -1,7 +1,7 @@
 #!/bin/sh
 # The main job on a bundled real frame: builds symline (installing what it needs
 # when missing), detects the field lines, and writes
-#   out/lines.json     the segments (SPEC §7 JSON, as printed by `symline lines`)
+#   out/lines.json     the segments (JSON of docs/format.md, as printed by `symline lines`)
 #   out/overlay.png    lines drawn solid, curves dotted, over the frame
 #   out/symmetry.png   the 8-bit symmetry image (horizontal axis, radius 3)
 #   out/extrema.png    its extrema map (255 S points, 128 A points)
@@ -10,11 +10,39 @@
 # then prints a short summary.
 #   tools/demo.sh [FRAME.pgm|FRAME.png]
 set -eu
+usage() {
+    cat <<'EOF'
+usage: tools/demo.sh [FRAME]
+Builds symline in build/ (tools/deps.sh installs or names what is missing),
+detects the field lines of FRAME (a PGM or PNG; default: a bundled real frame)
+and writes into out/:
+  lines.json     the segments, as printed by 'symline lines' (docs/format.md)
+  overlay.png    lines solid, curves dotted, over the frame
+  symmetry.png   the 8-bit symmetry image (horizontal axis, radius 3)
+  extrema.png    its extrema map (255 S points, 128 A points)
+  capture.jsonl  the capture loop replaying the bundled frames (no camera)
+then prints a short summary. Needs cmake >= 3.16, a C compiler, pkg-config and
+libpng; on Debian they are installed with apt-get when missing.
+EOF
+}
+case ${1:-} in
+-h | --help) usage; exit 0 ;;
+--) shift ;;
+-?*) echo "tools/demo.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+esac
+[ $# -le 1 ] || { echo "tools/demo.sh: one frame at most" >&2; usage >&2; exit 2; }
+frame=${1:-}
+case $frame in
+'' | /*) ;;
+*) frame=$(pwd)/$frame ;;
+esac
 cd "$(dirname "$0")/.."
-frame=${1:-tests/data/msl_20190606_r2_cam0_20190606_204340.pgm}
+frame=${frame:-tests/data/msl_20190606_r2_cam0_20190606_204340.pgm}
+[ -f "$frame" ] || { echo "tools/demo.sh: no such file: $frame" >&2; exit 2; }
 tools/deps.sh build
-cmake --preset default >/dev/null
-cmake --build --preset default -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
+# Plain CMake (no preset) so that CMake 3.16 is enough; the same build/ as the default preset.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
 bin=build/bin/symline
 mkdir -p out
 "$bin" convert "$frame" out/frame.png

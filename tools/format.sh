@@ -4,6 +4,7 @@
 # Without --check the files are rewritten in place; with it, every file that
 # differs is named and the exit status is 1. Exit 77 when clang-format is
 # missing (CTest reports the test as skipped).
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -u
 cd "$(dirname "$0")/.." || exit 2
 check=0

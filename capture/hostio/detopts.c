@@ -7,34 +7,43 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A numeric option: name, range and the config field it sets. */
+/* How an option's value is written; the config field keeps the library's unit. */
+typedef enum opt_unit {
+    UNIT_INT = 0,    /* an integer in [lo, hi], stored as it is (unsigned fields) */
+    UNIT_SIGNED = 1, /* an integer in [lo, hi], possibly negative (signed fields) */
+    UNIT_PX = 2,     /* pixels as a decimal ("2", "2.5"), stored in Q8; [lo, hi] in Q8 */
+    UNIT_BOOL = 3    /* 0 or 1, a bool field */
+} opt_unit;
+
+/* A numeric option: name, unit, range and the config field it sets (symline/detect.h). */
 typedef struct num_opt {
     const char *name;
-    uint32_t lo, hi;
+    opt_unit unit;
+    int64_t lo, hi;
     size_t offset;
-    int32_t bias; /* signed fields are given as value + bias, so 0..200 stands for -100..100 */
-    bool flag;    /* a bool field, given as 0 or 1 */
 } num_opt;
 
+#define PX_MAX ((int64_t)SYMLINE_MAX_DIM << 8)
+
 static const num_opt num_opts[] = {
-    {"--radius", 1, SYMLINE_DETECT_MAX_RADIUS, offsetof(symline_config, radius), 0, false},
-    {"--levels", 1, SYMLINE_DETECT_MAX_LEVELS, offsetof(symline_config, levels), 0, false},
-    {"--illumination", 0, 255, offsetof(symline_config, illumination), 0, false},
-    {"--adaptive", 0, 1, offsetof(symline_config, adaptive), 0, true},
-    {"--bright-sigma", 0, 200, offsetof(symline_config, bright_sigma10), 100, false},
-    {"--side-sigma", 0, 200, offsetof(symline_config, side_sigma10), 100, false},
-    {"--ridge-sigma", 0, 100, offsetof(symline_config, ridge_sigma10), 0, false},
-    {"--a-distance", 1, SYMLINE_DETECT_MAX_A_DISTANCE, offsetof(symline_config, a_distance), 0,
-     false},
-    {"--contrast", 0, 100, offsetof(symline_config, contrast_pct), 0, false},
-    {"--contrast-min", 0, 255, offsetof(symline_config, contrast_min), 0, false},
-    {"--contrast-asym", 0, 1000, offsetof(symline_config, contrast_asym_pct), 0, false},
-    {"--min-length", 0, 65535, offsetof(symline_config, min_length), 0, false},
-    {"--curve-dev", 0, 65535u << 8, offsetof(symline_config, curve_dev_q8), 0, false},
-    {"--curve-bend", 0, 65535u << 8, offsetof(symline_config, curve_bend_q8), 0, false},
-    {"--merge-gap", 0, 65535, offsetof(symline_config, merge_gap), 0, false},
-    {"--merge-dev", 0, 65535u << 8, offsetof(symline_config, merge_dev_q8), 0, false},
-    {"--field-margin", 0, 65535, offsetof(symline_config, field_margin), 0, false},
+    {"--radius", UNIT_INT, 1, SYMLINE_DETECT_MAX_RADIUS, offsetof(symline_config, radius)},
+    {"--levels", UNIT_INT, 0, SYMLINE_DETECT_MAX_LEVELS, offsetof(symline_config, levels)},
+    {"--illumination", UNIT_INT, 0, 255, offsetof(symline_config, illumination)},
+    {"--adaptive", UNIT_BOOL, 0, 1, offsetof(symline_config, adaptive)},
+    {"--bright-sigma", UNIT_SIGNED, -100, 100, offsetof(symline_config, bright_sigma10)},
+    {"--side-sigma", UNIT_SIGNED, -100, 100, offsetof(symline_config, side_sigma10)},
+    {"--ridge-sigma", UNIT_INT, 0, 100, offsetof(symline_config, ridge_sigma10)},
+    {"--a-distance", UNIT_INT, 0, SYMLINE_DETECT_MAX_A_DISTANCE,
+     offsetof(symline_config, a_distance)},
+    {"--contrast", UNIT_INT, 0, 100, offsetof(symline_config, contrast_pct)},
+    {"--contrast-min", UNIT_INT, 0, 255, offsetof(symline_config, contrast_min)},
+    {"--contrast-asym", UNIT_INT, 0, 1000, offsetof(symline_config, contrast_asym_pct)},
+    {"--min-length", UNIT_INT, 0, SYMLINE_MAX_DIM, offsetof(symline_config, min_length)},
+    {"--curve-dev", UNIT_PX, 0, PX_MAX, offsetof(symline_config, curve_dev_q8)},
+    {"--curve-bend", UNIT_PX, 0, PX_MAX, offsetof(symline_config, curve_bend_q8)},
+    {"--merge-gap", UNIT_INT, 0, SYMLINE_MAX_DIM, offsetof(symline_config, merge_gap)},
+    {"--merge-dev", UNIT_PX, 0, PX_MAX, offsetof(symline_config, merge_dev_q8)},
+    {"--field-margin", UNIT_INT, 0, SYMLINE_MAX_DIM, offsetof(symline_config, field_margin)},
 };
 #define NUM_OPTS (sizeof num_opts / sizeof num_opts[0])
 
@@ -65,16 +74,82 @@ int detopts_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out)
     return 0;
 }
 
+/* A signed decimal integer in [lo, hi], nothing else; 0 on success. */
+static int parse_int(const char *s, int64_t lo, int64_t hi, int64_t *out)
+{
+    char *end;
+    long long v;
+    if (s == NULL || !((*s >= '0' && *s <= '9') || (*s == '-' && s[1] >= '0' && s[1] <= '9'))) {
+        return -1;
+    }
+    errno = 0;
+    v = strtoll(s, &end, 10);
+    if (errno != 0 || *end != '\0' || v < lo || v > hi) {
+        return -1;
+    }
+    *out = (int64_t)v;
+    return 0;
+}
+
+/* Pixels as a decimal with up to 6 fraction digits, rounded to Q8 (1/256 px); no floating point. */
+static int parse_px_q8(const char *s, int64_t lo, int64_t hi, int64_t *out)
+{
+    int64_t ip = 0, frac = 0, scale = 1, q;
+    int digits = 0;
+    if (s == NULL || *s < '0' || *s > '9') {
+        return -1;
+    }
+    for (; *s >= '0' && *s <= '9'; s++) {
+        ip = ip * 10 + (*s - '0');
+        if (ip > SYMLINE_MAX_DIM) {
+            return -1;
+        }
+    }
+    if (*s == '.') {
+        for (s++; *s >= '0' && *s <= '9'; s++) {
+            if (++digits > 6) {
+                return -1;
+            }
+            frac = frac * 10 + (*s - '0');
+            scale *= 10;
+        }
+        if (digits == 0) {
+            return -1;
+        }
+    }
+    if (*s != '\0') {
+        return -1;
+    }
+    q = ip * 256 + (frac * 256 + scale / 2) / scale;
+    if (q < lo || q > hi) {
+        return -1;
+    }
+    *out = q;
+    return 0;
+}
+
+/* A Q8 value as pixels: "2", "2.5", "0.31" (two decimals at most, trailing zeros dropped). */
+static void put_px(FILE *f, uint32_t q8)
+{
+    uint32_t h = (uint32_t)(((uint64_t)q8 * 100u + 128u) >> 8);
+    if (h % 100u == 0u) {
+        fprintf(f, "%u", h / 100u);
+    } else if (h % 10u == 0u) {
+        fprintf(f, "%u.%u", h / 100u, (h % 100u) / 10u);
+    } else {
+        fprintf(f, "%u.%02u", h / 100u, h % 100u);
+    }
+}
+
 void detopts_init(detopts *d)
 {
     symline_config_default(&d->cfg);
     d->seen = 0;
 }
 
-int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t errlen)
+/* One detector option by name ("--radius") and value; 1 done, 0 not one, -1 bad value. */
+static int apply_named(detopts *d, const char *name, const char *value, char *err, size_t errlen)
 {
-    const char *name = argv[*i];
-    const char *value = (*i + 1 < argc) ? argv[*i + 1] : NULL;
     int k;
     if (strcmp(name, "--axis") == 0) {
         if (value != NULL && strcmp(value, "horizontal") == 0) {
@@ -110,26 +185,74 @@ int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t e
     } else if ((k = opt_index(name)) >= 0) {
         const num_opt *o = &num_opts[k];
         char *field = (char *)&d->cfg + o->offset;
-        uint32_t v;
-        if (detopts_u32(value, o->lo, o->hi, &v) != 0) {
-            snprintf(err, errlen, "%s needs an integer %u..%u", name, o->lo, o->hi);
+        int64_t v;
+        if (strcmp(name, "--merge-gap") == 0 && value != NULL && strcmp(value, "auto") == 0) {
+            v = 0xFFFFFFFF; /* the library's "width / 8" */
+        } else if (o->unit == UNIT_PX ? parse_px_q8(value, o->lo, o->hi, &v) != 0
+                                      : parse_int(value, o->lo, o->hi, &v) != 0) {
+            if (o->unit == UNIT_PX) {
+                snprintf(err, errlen, "%s needs pixels, a decimal 0..%u (e.g. 2.5)", name,
+                         (unsigned)(o->hi >> 8));
+            } else {
+                snprintf(err, errlen, "%s needs an integer %lld..%lld%s", name, (long long)o->lo,
+                         (long long)o->hi, strcmp(name, "--merge-gap") == 0 ? ", or auto" : "");
+            }
             return -1;
         }
-        if (o->flag) {
-            const bool b = v != 0u;
+        if (o->unit == UNIT_BOOL) {
+            const bool b = v != 0;
             memcpy(field, &b, sizeof b);
-        } else if (o->bias != 0) {
-            const int32_t sv = (int32_t)v - o->bias;
+        } else if (o->unit == UNIT_SIGNED) {
+            const int32_t sv = (int32_t)v;
             memcpy(field, &sv, sizeof sv);
         } else {
-            memcpy(field, &v, sizeof v);
+            const uint32_t uv = (uint32_t)v;
+            memcpy(field, &uv, sizeof uv);
         }
         d->seen |= 1u << k;
     } else {
         return 0;
     }
-    (*i)++;
     return 1;
+}
+
+int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t errlen)
+{
+    const char *value = *i + 1 < argc ? argv[*i + 1] : NULL;
+    const int rc = apply_named(d, argv[*i], value, err, errlen);
+    if (rc == 1) {
+        (*i)++;
+    }
+    return rc;
+}
+
+/* The option names getopt_long sees, without "--": the two word options, then the numeric table. */
+static const char *long_name(size_t k)
+{
+    static const char *const words[] = {"--axis", "--filter", "--field"};
+    return (k < 3u ? words[k] : num_opts[k - 3u].name) + 2;
+}
+
+size_t detopts_longopts(struct option *out, size_t cap)
+{
+    size_t k, n = 0;
+    for (k = 0; k < 3u + NUM_OPTS && n < cap; k++, n++) {
+        out[n].name = long_name(k);
+        out[n].has_arg = required_argument;
+        out[n].flag = NULL;
+        out[n].val = DETOPTS_VAL + (int)k;
+    }
+    return n;
+}
+
+int detopts_apply(detopts *d, int code, const char *arg, char *err, size_t errlen)
+{
+    char name[32];
+    if (code < DETOPTS_VAL || code >= DETOPTS_VAL + 3 + (int)NUM_OPTS) {
+        return 0;
+    }
+    snprintf(name, sizeof name, "--%s", long_name((size_t)(code - DETOPTS_VAL)));
+    return apply_named(d, name, arg, err, errlen) == 1 ? 1 : -1;
 }
 
 void detopts_finish(detopts *d)
@@ -140,7 +263,7 @@ void detopts_finish(detopts *d)
             d->cfg.illumination = 100u;
         }
         if (!(d->seen & (1u << opt_index("--adaptive")))) {
-            d->cfg.adaptive = false;
+            d->cfg.adaptive = 0u;
         }
     }
 }
@@ -149,43 +272,53 @@ void detopts_help(FILE *f)
 {
     symline_config c;
     symline_config_default(&c);
+    /* Units and ranges are the library's (symline/detect.h); sigma values in tenths. */
     fprintf(f,
             "  --axis horizontal|vertical|both   axes to run (default both)\n"
-            "  --radius M          symmetry radius 1..32 (%u)\n"
-            "  --levels L          scales 1..5 (1 = full resolution only; default auto:\n"
-            "                      enough 2x steps for lines width/16 px wide)\n"
+            "  --radius M          symmetry radius 1..32, the detector's range (symmetry and\n"
+            "                      extrema alone take 1..255) (%u)\n"
+            "  --levels L          scales 0..5: 1 = full resolution only, L = also 2x .. 2^(L-1)x\n"
+            "                      downsampled, 0 = auto: enough for lines width/16 px wide (%u)\n"
             "  --filter contrast|paper   line filter (default contrast; 'paper' is the\n"
             "                      A1-S baseline and implies --illumination 100\n"
             "                      --adaptive 0)\n"
             "  --illumination G    minimum gray value of a line point, 0..255, 0 = off (%u)\n"
             "  --adaptive 0|1      thresholds follow the frame's mean and sigma (%u)\n"
-            "  --bright-sigma B    adaptive: gray >= mean + (B-100)/10 sigma, 0..200 (%d)\n"
+            "  --bright-sigma B    adaptive: gray >= mean + B/10 sigma, -100..100 (%d)\n"
             "  --ridge-sigma R     adaptive: ridge height >= R/10 sigma, 0..100 (%u)\n"
-            "  --side-sigma S      adaptive: both sides of a ridge <= mean + (S-100)/10\n"
-            "                      sigma, 0..200; 200 = off (%d)\n"
-            "  --a-distance D      paper filter: A point within D px across the line\n"
-            "                      (default: the radius)\n"
-            "  --contrast PCT      contrast filter: ridge height, %% of centre gray (%u)\n"
-            "  --contrast-min G    contrast filter: ridge height in gray levels (%u)\n"
+            "  --side-sigma S      adaptive: both sides of a ridge <= mean + S/10 sigma,\n"
+            "                      -100..100; 100 = off (%d)\n"
+            "  --a-distance D      paper filter: A point within D px across the line, 0..32,\n"
+            "                      0 = the radius (%u)\n"
+            "  --contrast PCT      contrast filter: ridge height, %% of centre gray, 0..100 (%u)\n"
+            "  --contrast-min G    contrast filter: ridge height in gray levels, 0..255 (%u)\n"
             "  --contrast-asym PCT contrast filter: ridge height >= PCT %% of |left - right|\n"
             "                      per point, and 2 x PCT %% of the sides' difference\n"
             "                      averaged along each piece (rejects bands between two\n"
-            "                      different surfaces; 0 = off; %u)\n"
-            "  --min-length PX     shortest reported piece (%u)\n"
-            "  --curve-dev Q8      curve threshold on max_dev, 1/256 px (%u)\n"
-            "  --curve-bend Q8     also a curve: middle half this far off the chord\n"
-            "                      against the outer quarters, 1/256 px at the pass's\n"
-            "                      scale, 0 = off (%u)\n"
-            "  --merge-gap PX      merge collinear lines up to PX apart (default width/8,\n"
-            "                      0 = no merging)\n"
-            "  --merge-dev Q8      merge tolerance across the line, 1/256 px (%u)\n"
+            "                      different surfaces), 0..1000, 0 = off (%u)\n"
+            "  --min-length PX     shortest reported piece, px (%u)\n",
+            c.radius, c.levels, c.illumination, c.adaptive ? 1u : 0u, (int)c.bright_sigma10,
+            c.ridge_sigma10, (int)c.side_sigma10, c.a_distance, c.contrast_pct, c.contrast_min,
+            c.contrast_asym_pct, c.min_length);
+    fputs("  --curve-dev PX      curve threshold on max_dev, px, e.g. 2.5 (", f);
+    put_px(f, c.curve_dev_q8);
+    fputs(")\n"
+          "  --curve-bend PX     also a curve: middle half this far off the chord against\n"
+          "                      the outer quarters, px at the pass's scale, 0 = off (",
+          f);
+    put_px(f, c.curve_bend_q8);
+    fputs(")\n"
+          "  --merge-gap PX|auto merge collinear lines up to PX apart, 0 = no merging\n"
+          "                      (default auto: width/8)\n"
+          "  --merge-dev PX      merge tolerance across the line, px (",
+          f);
+    put_px(f, c.merge_dev_q8);
+    fputs(")\n", f);
+    fprintf(f,
             "  --field drop|keep|off   field boundary (symline boundary): reported as\n"
             "                      field_boundary; drop: line points above it are not\n"
             "                      traced (default); keep: nothing dropped; off: not\n"
             "                      computed\n"
             "  --field-margin PX   drop keeps points up to PX above the boundary (%u)\n",
-            c.radius, c.illumination, c.adaptive ? 1u : 0u, (int)c.bright_sigma10 + 100,
-            c.ridge_sigma10, (int)c.side_sigma10 + 100, c.contrast_pct, c.contrast_min,
-            c.contrast_asym_pct, c.min_length, c.curve_dev_q8, c.curve_bend_q8, c.merge_dev_q8,
             c.field_margin);
 }

@@ -6,6 +6,7 @@
 #ifndef SYMLINE_HOSTIO_DETOPTS_H
 #define SYMLINE_HOSTIO_DETOPTS_H
 
+#include <getopt.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -26,12 +27,26 @@ int detopts_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out);
 void detopts_init(detopts *d);
 
 /*
- * Tries argv[*i] (and its value argv[*i+1]) as a detector option.
- * Returns 1 when it was one (then *i is advanced to its value), 0 when
- * argv[*i] is not a detector option, -1 on a missing or bad value (a message
+ * For argument loops of their own (the benchmark): tries argv[*i] (and its
+ * value argv[*i+1]) as a detector option. Returns 1 when it was one (*i then
+ * advanced to its value), 0 when not, -1 on a missing or bad value (a message
  * in err).
  */
 int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t errlen);
+
+/*
+ * The detector options for getopt_long: appends one `struct option` per detector
+ * option to out (at most cap; each takes a value, val = DETOPTS_VAL + k) and
+ * returns how many it wrote.
+ */
+#define DETOPTS_VAL 0x4000
+size_t detopts_longopts(struct option *out, size_t cap);
+
+/*
+ * Applies what getopt_long returned (code, optarg). Returns 1 when code was a
+ * detector option, 0 when it was not, -1 on a bad value (a message in err).
+ */
+int detopts_apply(detopts *d, int code, const char *arg, char *err, size_t errlen);
 
 /* After parsing: --filter paper implies --illumination 100 --adaptive 0 unless given. */
 void detopts_finish(detopts *d);

@@ -1,7 +1,9 @@
 /*
- * PGM and PNG reading and writing for the host tools.
+ * PGM, PPM, PNG and JPEG reading and writing for the host tools.
  */
 #include "imgio.h"
+
+#include "jpeg_luma.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -31,6 +33,11 @@ int imgio_have_png(void)
 #else
     return 0;
 #endif
+}
+
+int imgio_have_jpeg(void)
+{
+    return jpeg_luma_available();
 }
 
 int imgio_is_png_name(const char *path)
@@ -166,7 +173,8 @@ int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray
 
 static int slurp(const char *path, uint8_t **out, size_t *outlen, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
+    const int is_stdin = strcmp(path, "-") == 0;
+    FILE *f = is_stdin ? stdin : fopen(path, "rb");
     uint8_t *buf = NULL;
     size_t len = 0, cap = 0;
     if (f == NULL) {
@@ -179,7 +187,9 @@ static int slurp(const char *path, uint8_t **out, size_t *outlen, char *err, siz
             uint8_t *nb = (uint8_t *)realloc(buf, ncap);
             if (nb == NULL) {
                 free(buf);
-                fclose(f);
+                if (!is_stdin) {
+                    fclose(f);
+                }
                 return fail(err, errlen, "%s: out of memory", path);
             }
             buf = nb;
@@ -194,10 +204,14 @@ static int slurp(const char *path, uint8_t **out, size_t *outlen, char *err, siz
     if (ferror(f)) {
         int e = errno;
         free(buf);
-        fclose(f);
+        if (!is_stdin) {
+            fclose(f);
+        }
         return fail(err, errlen, "%s: read error: %s", path, strerror(e));
     }
-    fclose(f);
+    if (!is_stdin) {
+        fclose(f);
+    }
     *out = buf;
     *outlen = len;
     return 0;
@@ -318,6 +332,43 @@ static int parse_png(const uint8_t *buf, size_t len, const char *name, imgio_gra
 }
 #endif
 
+/* A JPEG's luma. */
+static int read_jpeg(const uint8_t *buf, size_t len, const char *name, imgio_gray *img, char *err,
+                     size_t errlen)
+{
+    char jerr[256];
+    uint32_t w, h;
+    jpeg_luma *d;
+    if (!jpeg_luma_available()) {
+        return fail(
+            err, errlen,
+            "%s: JPEG input needs a build with libturbojpeg (libturbojpeg0-dev); use PGM or PNG",
+            name);
+    }
+    d = jpeg_luma_open(jerr, sizeof jerr);
+    if (d == NULL) {
+        return fail(err, errlen, "%s: %s", name, jerr);
+    }
+    if (jpeg_luma_size(d, buf, len, &w, &h, jerr, sizeof jerr) != 0) {
+        jpeg_luma_close(d);
+        return fail(err, errlen, "%s: %s", name, jerr);
+    }
+    img->px = (uint8_t *)malloc((size_t)w * h);
+    if (img->px == NULL) {
+        jpeg_luma_close(d);
+        return fail(err, errlen, "%s: out of memory", name);
+    }
+    if (jpeg_luma_decode(d, buf, len, w, h, img->px, w, jerr, sizeof jerr) != 0) {
+        jpeg_luma_close(d);
+        imgio_free(img);
+        return fail(err, errlen, "%s: %s", name, jerr);
+    }
+    jpeg_luma_close(d);
+    img->width = w;
+    img->height = h;
+    return 0;
+}
+
 int imgio_read_gray(const char *path, imgio_gray *img, char *err, size_t errlen)
 {
     uint8_t *buf = NULL;
@@ -334,6 +385,8 @@ int imgio_read_gray(const char *path, imgio_gray *img, char *err, size_t errlen)
 #else
         rc = fail(err, errlen, "%s: PNG input needs a build with libpng; use PGM (P5)", path);
 #endif
+    } else if (len >= 3 && buf[0] == 0xFF && buf[1] == 0xD8 && buf[2] == 0xFF) {
+        rc = read_jpeg(buf, len, path, img, err, errlen);
     } else if (len == 0) {
         rc = fail(err, errlen, "%s: empty file", path);
     } else {
@@ -382,23 +435,117 @@ static int write_png(const char *path, const uint8_t *px, uint32_t width, uint32
 }
 #endif
 
-static int write_pnm(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
-                     size_t stride, int color, char *err, size_t errlen)
+/* Output formats, chosen by the name. */
+enum {
+    OUT_UNKNOWN,
+    OUT_PGM,
+    OUT_PPM,
+    OUT_PNM,
+    OUT_PNG
+};
+
+static int has_ext(const char *path, const char *ext)
 {
-    FILE *f = fopen(path, "wb");
+    size_t n = strlen(path), k = strlen(ext), i;
+    if (n <= k) {
+        return 0;
+    }
+    for (i = 0; i < k; i++) {
+        char c = path[n - k + i];
+        if (c >= 'A' && c <= 'Z') {
+            c = (char)(c - 'A' + 'a');
+        }
+        if (c != ext[i]) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static int out_format(const char *path)
+{
+    if (strcmp(path, "-") == 0 || has_ext(path, ".pnm")) {
+        return OUT_PNM;
+    }
+    if (has_ext(path, ".pgm")) {
+        return OUT_PGM;
+    }
+    if (has_ext(path, ".ppm")) {
+        return OUT_PPM;
+    }
+    return has_ext(path, ".png") ? OUT_PNG : OUT_UNKNOWN;
+}
+
+int imgio_check_output_name(const char *path, int color, char *err, size_t errlen)
+{
+    const int fmt = out_format(path);
+    if (fmt == OUT_UNKNOWN) {
+        const char *dot = strrchr(path, '.');
+        const char *slash = strrchr(path, '/');
+        return fail(err, errlen,
+                    "%s: unknown image format%s%s%s: write .pgm, .ppm, .pnm%s or - (stdout)", path,
+                    dot != NULL && (slash == NULL || dot > slash) ? " '" : "",
+                    dot != NULL && (slash == NULL || dot > slash) ? dot : "",
+                    dot != NULL && (slash == NULL || dot > slash) ? "'" : "",
+                    imgio_have_png() ? ", .png" : "");
+    }
+    if (fmt == OUT_PGM && color) {
+        return fail(err, errlen, "%s: a colour image cannot be written as PGM: use .ppm%s", path,
+                    imgio_have_png() ? " or .png" : "");
+    }
+    if (fmt == OUT_PNG && !imgio_have_png()) {
+        return fail(err, errlen, "%s: PNG output needs a build with libpng", path);
+    }
+    return 0;
+}
+
+/* P5 (gray) or P6 (colour; gray pixels are repeated into R, G, B when as_rgb). */
+static int write_pnm(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
+                     size_t stride, int color, int as_rgb, char *err, size_t errlen)
+{
+    const int is_stdout = strcmp(path, "-") == 0;
+    FILE *f = is_stdout ? stdout : fopen(path, "wb");
     const size_t row = (size_t)width * (color ? 3u : 1u);
+    uint8_t *rgb = NULL;
     uint32_t y;
+    int bad;
     if (f == NULL) {
         return fail(err, errlen, "%s: cannot create: %s", path, strerror(errno));
     }
-    fprintf(f, "P%c\n%u %u\n255\n", color ? '6' : '5', width, height);
-    for (y = 0; y < height; y++) {
-        if (fwrite(px + (size_t)y * stride, 1, row, f) != row) {
-            fclose(f);
-            return fail(err, errlen, "%s: write error: %s", path, strerror(errno));
+    if (as_rgb && !color) {
+        rgb = (uint8_t *)malloc((size_t)width * 3u);
+        if (rgb == NULL) {
+            if (!is_stdout) {
+                fclose(f);
+            }
+            return fail(err, errlen, "%s: out of memory", path);
         }
     }
-    if (fclose(f) != 0) {
+    fprintf(f, "P%c\n%u %u\n255\n", color || as_rgb ? '6' : '5', width, height);
+    for (y = 0; y < height; y++) {
+        const uint8_t *src = px + (size_t)y * stride;
+        if (rgb != NULL) {
+            uint32_t x;
+            for (x = 0; x < width; x++) {
+                rgb[3u * x] = rgb[3u * x + 1u] = rgb[3u * x + 2u] = src[x];
+            }
+            if (fwrite(rgb, 1, (size_t)width * 3u, f) != (size_t)width * 3u) {
+                break;
+            }
+        } else if (fwrite(src, 1, row, f) != row) {
+            break;
+        }
+    }
+    free(rgb);
+    bad = y < height || fflush(f) != 0 || ferror(f);
+    if (bad) {
+        const int e = errno;
+        if (!is_stdout) {
+            fclose(f);
+        }
+        return fail(err, errlen, "%s: write error: %s", path, strerror(e));
+    }
+    if (!is_stdout && fclose(f) != 0) {
         return fail(err, errlen, "%s: write error: %s", path, strerror(errno));
     }
     return 0;
@@ -407,14 +554,16 @@ static int write_pnm(const char *path, const uint8_t *px, uint32_t width, uint32
 static int write_any(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
                      size_t stride, int color, char *err, size_t errlen)
 {
-    if (imgio_is_png_name(path)) {
+    const int fmt = out_format(path);
+    if (imgio_check_output_name(path, color, err, errlen) != 0) {
+        return -1;
+    }
+    if (fmt == OUT_PNG) {
 #ifdef SYMLINE_HAVE_PNG
         return write_png(path, px, width, height, stride, color, err, errlen);
-#else
-        return fail(err, errlen, "%s: PNG output needs a build with libpng", path);
 #endif
     }
-    return write_pnm(path, px, width, height, stride, color, err, errlen);
+    return write_pnm(path, px, width, height, stride, color, fmt == OUT_PPM, err, errlen);
 }
 
 int imgio_write_gray(const char *path, const uint8_t *px, uint32_t width, uint32_t height,

@@ -1,6 +1,8 @@
 /*
- * Image files for the host programs (tools/, capture/): binary PGM always, PNG when built with libpng.
- * Host-only code (allocates, does I/O); the core library never includes it.
+ * Image files for the host programs (tools/, capture/): binary PGM and PPM
+ * always, PNG when built with libpng, JPEG input when built with libturbojpeg.
+ * The path "-" reads stdin or writes stdout. Host-only code (allocates, does
+ * I/O); the core library never includes it.
  */
 #ifndef SYMLINE_HOSTIO_IMGIO_H
 #define SYMLINE_HOSTIO_IMGIO_H
@@ -23,9 +25,13 @@ typedef struct imgio_rgb {
 /* 1 when this build reads and writes PNG. */
 int imgio_have_png(void);
 
+/* 1 when this build reads JPEG. */
+int imgio_have_jpeg(void);
+
 /*
- * Reads an 8-bit gray image from a binary PGM (P5, maxval 255) or a PNG (by
- * its signature, not its name). Colour PNGs are converted to luma with
+ * Reads an 8-bit gray image from a binary PGM (P5, maxval 255), a PNG or a
+ * JPEG (by its signature, not its name; "-" reads stdin). JPEGs are decoded
+ * to their luma (Y of YCbCr). Colour PNGs are converted to luma with
  * Y = (299 R + 587 G + 114 B + 500) / 1000 (ITU-R BT.601 weights); alpha is
  * ignored; 16-bit samples are reduced to 8; palettes and low bit depths are
  * expanded. Returns 0, or -1 with a message naming the file and the problem in
@@ -37,12 +43,23 @@ int imgio_read_gray(const char *path, imgio_gray *img, char *err, size_t errlen)
 int imgio_parse_pgm(const uint8_t *buf, size_t len, const char *name, imgio_gray *img, char *err,
                     size_t errlen);
 
-/* Writes gray pixels (given stride) as PNG when path ends in ".png", else as P5 PGM. */
+/*
+ * The output format is chosen by the name's extension (any case): ".png" PNG,
+ * ".pgm" binary PGM (gray only), ".ppm" binary PPM, ".pnm" PGM for gray and
+ * PPM for colour; "-" writes PGM / PPM to stdout. Any other name is an error
+ * that lists the choices (nothing is written). Write errors (a full disk, a
+ * closed pipe) are reported with the reason.
+ */
+
+/* Writes gray pixels (given stride). */
 int imgio_write_gray(const char *path, const uint8_t *px, uint32_t width, uint32_t height,
                      uint32_t stride, char *err, size_t errlen);
 
-/* Writes RGB pixels as PNG when path ends in ".png", else as P6 PPM. */
+/* Writes RGB pixels (a colour image cannot be written as .pgm). */
 int imgio_write_rgb(const char *path, const imgio_rgb *img, char *err, size_t errlen);
+
+/* 0 when an output of this name can be written (colour: 1 for RGB), else -1 with the reason in err. */
+int imgio_check_output_name(const char *path, int color, char *err, size_t errlen);
 
 /* 1 when path ends in ".png" (any case). */
 int imgio_is_png_name(const char *path);

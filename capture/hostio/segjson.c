@@ -1,5 +1,5 @@
 /*
- * SPEC §7 JSON writer for detected segments.
+ * The JSON writer for detected segments (docs/format.md).
  */
 #include "segjson.h"
 
@@ -48,6 +48,23 @@ static void put_intersections(FILE *f, const symline_intersection_result *ix)
     fputs(ix->count ? "\n ]" : "]", f);
 }
 
+void segjson_put_string(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s != '\0'; s++) {
+        const unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') {
+            fputc('\\', f);
+            fputc(c, f);
+        } else if (c < 0x20u) {
+            fprintf(f, "\\u%04x", c);
+        } else {
+            fputc(c, f);
+        }
+    }
+    fputc('"', f);
+}
+
 /*
  * Polyline vertex k of a curve's n points, as "[x, y]" after `pre`: the mean
  * sub-pixel position (offsets in 1/128 px) of the points within `r` of k along
@@ -79,15 +96,33 @@ static void put_vertex(FILE *f, const symline_point *p, uint32_t n, uint32_t k, 
 
 int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r)
 {
-    return segjson_write_ix(f, width, height, r, NULL);
+    return segjson_write_named_ix(f, NULL, width, height, r, NULL);
+}
+
+int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t height,
+                        const symline_result *r)
+{
+    return segjson_write_named_ix(f, file, width, height, r, NULL);
 }
 
 int segjson_write_ix(FILE *f, uint32_t width, uint32_t height, const symline_result *r,
                      const symline_intersection_result *ix)
 {
+    return segjson_write_named_ix(f, NULL, width, height, r, ix);
+}
+
+int segjson_write_named_ix(FILE *f, const char *file, uint32_t width, uint32_t height,
+                           const symline_result *r, const symline_intersection_result *ix)
+{
     uint32_t i, k;
-    fprintf(f, "{\"width\": %u, \"height\": %u, \"truncated\": %s,\n \"segments\": [", width,
-            height, r->truncated ? "true" : "false");
+    fputc('{', f);
+    if (file != NULL) {
+        fputs("\"file\": ", f);
+        segjson_put_string(f, file);
+        fputs(", ", f);
+    }
+    fprintf(f, "\"width\": %u, \"height\": %u, \"truncated\": %s,\n \"segments\": [", width, height,
+            r->truncated ? "true" : "false");
     for (i = 0; i < r->segment_count; i++) {
         const symline_segment *s = &r->segments[i];
         fputs(i == 0u ? "\n  {" : ",\n  {", f);

@@ -1,5 +1,5 @@
 /*
- * The JSON form of a detection (SPEC §7), shared by the CLI, the capture
+ * The JSON form of a detection (docs/format.md), shared by the CLI, the capture
  * loop, the tests and the Cortex-M golden check. Needs only stdio.
  */
 #ifndef SYMLINE_HOSTIO_SEGJSON_H
@@ -26,13 +26,22 @@
  */
 int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r);
 
+/* The same object with "file": NAME as its first key (when file is not NULL). */
+int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t height,
+                        const symline_result *r);
+
 /*
- * The same with the key "intersections" after "segments" when ix is not NULL:
+ * The same with the key "intersections" after the others when ix is not NULL:
  *   "intersections": [{"x":..,"y":..,"type":"L"|"T"|"X","rays":[deg,..],
  *                      "segments":[i,..]}, ...]
  * positions in pixels, rays in degrees (two decimals), ascending.
  */
 int segjson_write_ix(FILE *f, uint32_t width, uint32_t height, const symline_result *r,
                      const symline_intersection_result *ix);
+int segjson_write_named_ix(FILE *f, const char *file, uint32_t width, uint32_t height,
+                           const symline_result *r, const symline_intersection_result *ix);
+
+/* s as a JSON string: quoted, with quotes, backslashes and control characters escaped. */
+void segjson_put_string(FILE *f, const char *s);
 
 #endif

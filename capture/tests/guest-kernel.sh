@@ -3,6 +3,7 @@
 # today), extracts it into CACHE/kernel-ABI and builds its modules.dep.
 # Prints the extracted tree's path. Reruns reuse the cache.
 # usage: guest-kernel.sh CACHE_DIR
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 cache=${1:?usage: guest-kernel.sh CACHE_DIR}
 mkdir -p "$cache"
@@ -10,7 +11,7 @@ cache=$(cd "$cache" && pwd)
 
 need_pkg() {
     for p in "$@"; do
-        if ! dpkg -s "$p" >/dev/null 2>&1; then
+        if ! dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$'; then
             apt-get install -y "$@" >&2 || { apt-get update >&2 && apt-get install -y "$@" >&2; }
             return
         fi

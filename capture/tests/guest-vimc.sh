@@ -3,6 +3,7 @@
 # the guest kernel: sources from linux-source-6.1, the matching
 # linux-headers-ABI tree. Prints the path of vimc.ko. Reruns reuse the cache.
 # usage: guest-vimc.sh CACHE_DIR KERNEL_VERSION
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 cache=${1:?usage: guest-vimc.sh CACHE_DIR KERNEL_VERSION}
 kver=${2:?usage: guest-vimc.sh CACHE_DIR KERNEL_VERSION}
@@ -17,7 +18,7 @@ fi
 need_pkg() {
     missing=
     for p in "$@"; do
-        dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+        dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || missing="$missing $p"
     done
     [ -z "$missing" ] && return 0
     # shellcheck disable=SC2086

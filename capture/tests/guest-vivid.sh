@@ -74,12 +74,43 @@ echo "SYMLINE-INFO RGB3 $(capture-check bars /tmp/RGB3-video0/frame000004.pgm)"
 for f in BGR3 XR24 AR24 XB24 AB24; do
     check format-$f format_check /dev/video0 $f $rgb_levels /tmp/RGB3-video0/frame000004.pgm
 done
+# 8-bit Bayer: vivid lays the bars' R, G, B out as the mosaic, so inside a bar
+# symline-capture's luma equals the RGB formula (the RGB levels, and RGB3 exactly
+# within 2); every colour phase once. (vivid has no Motion-JPEG format: that path
+# is checked against the fake driver of capture_v4l2.)
+for f in BA81 GBRG GRBG RGGB; do
+    check format-$f format_check /dev/video0 $f $rgb_levels /tmp/RGB3-video0/frame000004.pgm
+done
 check mplane-GREY format_check /dev/video1 GREY $grey_levels /tmp/GREY-video0/frame000004.pgm
 # NM16 is left out: vivid (6.1) fills its luma plane wrongly (the white bar reads
 # 16..34 at the bottom); NM61 takes the same path through symline-capture.
 for f in NV12 NM12 NM21 YM12 YM21 NM61 YM16 YUYV UYVY; do
     check mplane-$f format_check /dev/video1 $f $yuv_levels $yuv_ref
 done
+check mplane-BA81 format_check /dev/video1 BA81 $rgb_levels /tmp/RGB3-video0/frame000004.pgm
+
+# What a user asks first: which devices, which formats; --device N is /dev/videoN.
+list_devices() {
+    symline-capture --list-devices >/tmp/ld.out 2>&1
+    rc=$?; cat /tmp/ld.out; [ $rc -eq 0 ] || return 1
+    grep -q '^/dev/video0: .*vivid.*: video capture; formats symline reads:.* GREY.* BA81' /tmp/ld.out &&
+        grep -q '^/dev/video1: .*vivid.*: video capture (multi-planar); formats symline reads:.* NM12' /tmp/ld.out
+}
+check list-devices list_devices
+list_formats() {
+    symline-capture --device 0 --list-formats >/tmp/lf.out 2>&1
+    rc=$?; cat /tmp/lf.out; [ $rc -eq 0 ] || return 1
+    grep -q '^/dev/video0: ' /tmp/lf.out && grep -q '^  BA81 .*Bayer mosaic converted to luma$' /tmp/lf.out &&
+        grep -q '^  NV12 .*luma read in place$' /tmp/lf.out && grep -q '^  YUYV .*luma copied out$' /tmp/lf.out &&
+        grep -q '^        640x360 .* fps$' /tmp/lf.out
+}
+check list-formats list_formats
+device_number() {
+    cap --device 1 --format GREY --frames 2 >/tmp/dn.json 2>/tmp/dn.err
+    rc=$?; cat /tmp/dn.err; [ $rc -eq 0 ] && grep -q '^symline-capture: /dev/video1 (' /tmp/dn.err &&
+        capture-check json /tmp/dn.json 2
+}
+check device-number device_number
 
 # Size and frame interval requests: the granted values are reported.
 granted() {

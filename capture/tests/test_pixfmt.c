@@ -17,7 +17,10 @@ static void test_lookup(void **state)
     assert_non_null(pixfmt_by_name("GREY"));
     assert_ptr_equal(pixfmt_by_name("yuyv"), pixfmt_find(PIXFMT_FOURCC('Y', 'U', 'Y', 'V')));
     assert_ptr_equal(pixfmt_by_name("I420"), pixfmt_by_name("YU12"));
-    assert_null(pixfmt_by_name("BA81")); /* Bayer: not supported */
+    assert_ptr_equal(pixfmt_by_name("bggr"), pixfmt_by_name("BA81"));
+    assert_int_equal(pixfmt_by_name("RGGB")->layout, PIXFMT_BAYER8);
+    assert_int_equal(pixfmt_by_name("MJPG")->layout, PIXFMT_JPEG);
+    assert_null(pixfmt_by_name("BA10")); /* 10-bit Bayer: not supported */
     assert_null(pixfmt_by_name("YUYVX"));
     assert_null(pixfmt_by_name(""));
     assert_null(pixfmt_by_name(NULL));
@@ -163,6 +166,84 @@ static void test_rgb_luma(void **state)
     }
 }
 
+/* Bayer frames: W x H mosaic of the colour rgb[3] (R, G, B) with padding 0xEE in the source rows. */
+enum { BW = 7, BH = 6, BSRC = BW + 3, BDST = BW + 2 };
+
+static void make_mosaic(const pixfmt_info *f, const uint8_t rgb[3], uint8_t *src)
+{
+    uint32_t x, y;
+    memset(src, 0xEE, (size_t)BSRC * BH);
+    for (y = 0; y < BH; y++) {
+        for (x = 0; x < BW; x++) {
+            const char c = f->cfa[(y & 1u) * 2u + (x & 1u)];
+            src[y * BSRC + x] = rgb[c == 'R' ? 0 : (c == 'G' ? 1 : 2)];
+        }
+    }
+}
+
+/* A uniform colour gives its BT.601 luma (imgio's rounding) everywhere, borders included. */
+static void test_bayer_uniform(void **state)
+{
+    static const char *names[] = {"BA81", "GBRG", "GRBG", "RGGB"};
+    static const uint8_t colours[][3] = {{0, 0, 0}, {255, 255, 255}, {77, 77, 77}, {200, 100, 30},
+                                         {255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {10, 20, 30}};
+    size_t i, c;
+    (void)state;
+    for (i = 0; i < 4; i++) {
+        const pixfmt_info *f = pixfmt_by_name(names[i]);
+        assert_non_null(f);
+        assert_int_equal(f->layout, PIXFMT_BAYER8);
+        assert_int_equal(pixfmt_min_stride(f, BW), BW);
+        for (c = 0; c < sizeof colours / sizeof colours[0]; c++) {
+            uint8_t src[BSRC * BH], dst[BDST * BH];
+            const uint8_t *rgb = colours[c];
+            const unsigned want = (299u * rgb[0] + 587u * rgb[1] + 114u * rgb[2] + 500u) / 1000u;
+            uint32_t x, y;
+            make_mosaic(f, rgb, src);
+            memset(dst, 0x55, sizeof dst);
+            pixfmt_unpack_luma(f, src, BSRC, BW, BH, dst, BDST);
+            for (y = 0; y < BH; y++) {
+                for (x = 0; x < BDST; x++) {
+                    assert_int_equal(dst[y * BDST + x], x < BW ? want : 0x55);
+                }
+            }
+        }
+    }
+}
+
+/* A one-pixel bright gray row or column: the luma is centred on it (equal on both sides). */
+static void test_bayer_centred(void **state)
+{
+    static const char *names[] = {"BA81", "GBRG", "GRBG", "RGGB"};
+    size_t i;
+    (void)state;
+    for (i = 0; i < 4; i++) {
+        const pixfmt_info *f = pixfmt_by_name(names[i]);
+        uint8_t src[BSRC * BH], dst[BDST * BH];
+        uint32_t x, y;
+        /* Row 2 at 200, the rest 40: rows 1 and 3 get the same luma, row 2 the most, row 0 none of it. */
+        memset(src, 40, sizeof src);
+        memset(src + 2 * BSRC, 200, BW);
+        pixfmt_unpack_luma(f, src, BSRC, BW, BH, dst, BDST);
+        for (x = 0; x < BW; x++) {
+            assert_int_equal(dst[1 * BDST + x], dst[3 * BDST + x]);
+            assert_true(dst[2 * BDST + x] > dst[1 * BDST + x]);
+            assert_int_equal(dst[0 * BDST + x], 40);
+        }
+        /* Column 3 at 200, the rest 40: columns 2 and 4 equal. */
+        memset(src, 40, sizeof src);
+        for (y = 0; y < BH; y++) {
+            src[y * BSRC + 3] = 200;
+        }
+        pixfmt_unpack_luma(f, src, BSRC, BW, BH, dst, BDST);
+        for (y = 0; y < BH; y++) {
+            assert_int_equal(dst[y * BDST + 2], dst[y * BDST + 4]);
+            assert_true(dst[y * BDST + 3] > dst[y * BDST + 2]);
+            assert_int_equal(dst[y * BDST + 1], 40);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -174,6 +255,8 @@ int main(void)
         cmocka_unit_test(test_unpack_yuyv),
         cmocka_unit_test(test_unpack_uyvy),
         cmocka_unit_test(test_rgb_luma),
+        cmocka_unit_test(test_bayer_uniform),
+        cmocka_unit_test(test_bayer_centred),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

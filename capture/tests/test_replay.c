@@ -57,12 +57,14 @@ static int setup(void **state)
     write_frame("a.pgm", 8, 6, 10);
     write_frame("c.pgm", 16, 4, 30);
     write_text("notes.txt", "not a frame\n");
+    /* An evaluation's line mask beside its frame: not a frame. */
+    write_frame("a.mask.pgm", 8, 6, 255);
     return 0;
 }
 
 static int teardown(void **state)
 {
-    const char *names[] = {"a.pgm", "b.pgm", "c.pgm", "notes.txt", "list.txt", "empty.txt", "clip.y4m"};
+    const char *names[] = {"a.pgm", "b.pgm", "c.pgm", "a.mask.pgm", "notes.txt", "list.txt", "empty.txt", "clip.y4m"};
     char path[512];
     size_t i;
     (void)state;
@@ -104,11 +106,32 @@ static void expect_frame(capsrc *src, uint64_t number, uint32_t w, uint32_t h, u
     assert_true(f.timestamp_ns > 0);
 }
 
+/* The file of the frame just handed out ends in /name. */
+static void expect_file(const capsrc_frame *f, const char *name)
+{
+    char want[512];
+    path_in(want, sizeof want, name);
+    assert_non_null(f->file);
+    assert_string_equal(f->file, want);
+}
+
 static void test_directory_in_name_order(void **state)
 {
     capsrc_frame f;
     capsrc *src;
     (void)state;
+    src = open_replay(dir, 0);
+    assert_non_null(strstr(src->description, ": 3 frame files, unpaced"));
+    memset(&f, 0, sizeof f);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_OK);
+    expect_file(&f, "a.pgm");
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_OK);
+    expect_file(&f, "b.pgm");
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_OK);
+    expect_file(&f, "c.pgm"); /* a.mask.pgm was skipped */
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_END);
+    capsrc_close(src);
+
     src = open_replay(dir, 0);
     expect_frame(src, 0, 8, 6, 10);
     capsrc_release(src);
@@ -181,7 +204,7 @@ static void test_errors(void **state)
     assert_int_equal(mkdir(path, 0700), 0);
     err[0] = '\0';
     assert_null(replay_source_open(&o, err, sizeof err));
-    assert_non_null(strstr(err, "no .pgm or .png frames"));
+    assert_non_null(strstr(err, "no .pgm, .png or .jpg frames"));
 
     write_text("empty.txt", "# nothing\n");
     path_in(path, sizeof path, "empty.txt");
@@ -277,6 +300,67 @@ static void test_y4m(void **state)
     assert_non_null(strstr(err, "not a YUV4MPEG2 file"));
 }
 
+static int64_t elapsed_for_frames(capsrc *src, int n)
+{
+    capsrc_frame f;
+    int64_t t0 = capsrc_now_ns();
+    int k;
+    for (k = 0; k < n; k++) {
+        assert_int_equal(capsrc_next(src, &f, 2000), CAPSRC_OK);
+    }
+    return capsrc_now_ns() - t0;
+}
+
+/* A Y4M plays at its own frame rate unless told otherwise; each frame names its file. */
+static void test_y4m_rate_and_file(void **state)
+{
+    char path[512], err[256];
+    capsrc_frame f;
+    replay_options o;
+    capsrc *src;
+    FILE *fp;
+    int k, i;
+    (void)state;
+    path_in(path, sizeof path, "clip.y4m");
+    fp = fopen(path, "wb");
+    assert_non_null(fp);
+    fputs("YUV4MPEG2 W4 H2 F20:1 Cmono\n", fp);
+    for (k = 0; k < 4; k++) {
+        fputs("FRAME\n", fp);
+        for (i = 0; i < 8; i++) fputc(100 + k, fp);
+    }
+    fclose(fp);
+
+    /* F20:1: the first frame at once, then one every 50 ms (sleeps never end early). */
+    src = open_replay(path, 0);
+    assert_non_null(strstr(src->description, "YUV4MPEG2 4x2, 20/1 fps"));
+    assert_true(elapsed_for_frames(src, 4) >= 3 * 50000000 - 1000000);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_END);
+    capsrc_close(src);
+
+    memset(&o, 0, sizeof o);
+    o.path = path;
+    o.fps_num = 1000;
+    o.fps_den = 1;
+    src = replay_source_open(&o, err, sizeof err);
+    assert_non_null(src);
+    assert_non_null(strstr(src->description, "1000/1 fps"));
+    assert_int_equal(capsrc_start(src), CAPSRC_OK);
+    memset(&f, 0, sizeof f);
+    assert_int_equal(capsrc_next(src, &f, 1000), CAPSRC_OK);
+    assert_string_equal(f.file, path);
+    assert_int_equal(f.sequence, 0);
+    capsrc_close(src);
+
+    memset(&o, 0, sizeof o);
+    o.path = path;
+    o.unpaced = 1;
+    src = replay_source_open(&o, err, sizeof err);
+    assert_non_null(src);
+    assert_non_null(strstr(src->description, "unpaced"));
+    capsrc_close(src);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -286,6 +370,7 @@ int main(void)
         cmocka_unit_test(test_single_file),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_y4m),
+        cmocka_unit_test(test_y4m_rate_and_file),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -13,11 +13,19 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
 
 #include <cmocka.h>
 
+#ifdef SYMLINE_HAVE_TURBOJPEG
+#include <turbojpeg.h>
+#endif
+
+#include "jpeg_luma.h"
+#include "v4l2_list.h"
 #include "v4l2_source.h"
 
 #define FAKE_PATH "/dev/fake-video"
@@ -47,7 +55,9 @@ static struct fake {
     int poll_eintr;
     int reqbufs_fail;
     int streamon_fail;
-    uint8_t mem[MAXBUF][(2 * W + 8) * H];
+    uint32_t used[MAXBUF];   /* MJPG: bytes of the compressed frame in each buffer */
+    int damage_next;         /* MJPG: the next frame produced is cut short */
+    uint8_t mem[MAXBUF][2048];
 } fk;
 
 static void fake_reset(uint32_t caps)
@@ -61,7 +71,30 @@ static void fake_reset(uint32_t caps)
 
 static uint32_t bpp(uint32_t f)
 {
-    return f == V4L2_PIX_FMT_YUYV ? 2u : 1u;
+    return f == V4L2_PIX_FMT_YUYV ? 2u : (f == V4L2_PIX_FMT_MJPEG ? 0u : 1u);
+}
+
+/* MJPG: a gray W x H JPEG whose every pixel is v, compressed into buffer i. */
+static void produce_jpeg(uint32_t i, uint8_t v)
+{
+#ifdef SYMLINE_HAVE_TURBOJPEG
+    uint8_t px[W * H];
+    unsigned char *out = fk.mem[i];
+    unsigned long size = sizeof fk.mem[i];
+    tjhandle tj = tjInitCompress();
+    assert_non_null(tj);
+    memset(px, v, sizeof px);
+    assert_int_equal(tjCompress2(tj, px, W, W, H, TJPF_GRAY, &out, &size, TJSAMP_GRAY, 95, TJFLAG_NOREALLOC), 0);
+    tjDestroy(tj);
+    fk.used[i] = (uint32_t)size;
+    if (fk.damage_next) {
+        fk.damage_next = 0;
+        fk.used[i] = (uint32_t)size / 2u;
+    }
+#else
+    (void)i, (void)v;
+    fail();
+#endif
 }
 
 /* The driver fills the oldest queued buffer: luma = sequence number. */
@@ -74,7 +107,10 @@ static void produce(uint32_t flags)
         }
     }
     assert_true(i < fk.nbuf);
-    for (y = 0; y < H; y++) {
+    if (fk.fmt == V4L2_PIX_FMT_MJPEG) {
+        produce_jpeg(i, (uint8_t)(fk.seq + 10));
+    }
+    for (y = 0; y < H && fk.fmt != V4L2_PIX_FMT_MJPEG; y++) {
         for (x = 0; x < W * bpp(fk.fmt); x++) {
             fk.mem[i][y * (W * bpp(fk.fmt) + fk.bpl_pad) + x] =
                 (fk.fmt == V4L2_PIX_FMT_YUYV && (x & 1u)) ? 0x80 : (uint8_t)(fk.seq + 10);
@@ -182,8 +218,8 @@ int __wrap_ioctl(int fd, unsigned long req, void *arg)
         f->fmt.pix.width = W;
         f->fmt.pix.height = H;
         f->fmt.pix.pixelformat = fk.fmt;
-        f->fmt.pix.bytesperline = W * bpp(fk.fmt) + fk.bpl_pad;
-        f->fmt.pix.sizeimage = f->fmt.pix.bytesperline * H;
+        f->fmt.pix.bytesperline = bpp(fk.fmt) ? W * bpp(fk.fmt) + fk.bpl_pad : 0;
+        f->fmt.pix.sizeimage = bpp(fk.fmt) ? f->fmt.pix.bytesperline * H : sizeof fk.mem[0];
         return 0;
     }
     case VIDIOC_G_PARM:
@@ -225,7 +261,7 @@ int __wrap_ioctl(int fd, unsigned long req, void *arg)
         b->index = fk.done[0];
         b->flags = fk.done_flags[0] | V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC;
         b->sequence = fk.done_seq[0];
-        b->bytesused = (W * bpp(fk.fmt) + fk.bpl_pad) * H;
+        b->bytesused = fk.fmt == V4L2_PIX_FMT_MJPEG ? fk.used[b->index] : (W * bpp(fk.fmt) + fk.bpl_pad) * H;
         b->timestamp.tv_sec = 1;
         b->timestamp.tv_usec = (long)b->sequence;
         fk.state[b->index] = 0;
@@ -472,9 +508,18 @@ static void test_open_failures_release_everything(void **state)
     fk.reqbufs_fail = 1;
     expect_open_failure("GREY", "VIDIOC_REQBUFS (4 mmap buffers) failed: Cannot allocate memory");
     fake_reset(V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING);
-    fk.offered[0] = V4L2_PIX_FMT_MJPEG;
+    fk.offered[0] = V4L2_PIX_FMT_H264;
     fk.offered[1] = 0;
-    expect_open_failure(NULL, "none of the device's formats (MJPG)");
+    expect_open_failure(NULL, "none of the device's formats (H264)");
+    if (!jpeg_luma_available()) {
+        fake_reset(V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING);
+        fk.offered[0] = V4L2_PIX_FMT_MJPEG;
+        fk.offered[1] = 0;
+        expect_open_failure(NULL, "none of the device's formats (MJPG)");
+        fake_reset(V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING);
+        fk.offered[0] = V4L2_PIX_FMT_MJPEG;
+        expect_open_failure("MJPG", "this build reads no JPEG");
+    }
 
     /* STREAMON refused: the error names it, and closing still releases everything. */
     fake_reset(V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING);
@@ -494,6 +539,87 @@ static void test_open_failures_release_everything(void **state)
     }
 }
 
+/*
+ * Motion-JPEG: chosen when it is all the device offers, decoded to luma, the
+ * buffer re-queued at once; a damaged frame is skipped and counted like a
+ * flagged buffer, and the next good one is handed out.
+ */
+static void test_mjpeg_decoded_damaged_skipped(void **state)
+{
+    capsrc_frame f;
+    capsrc *src;
+    uint32_t x, y;
+    (void)state;
+    if (!jpeg_luma_available()) {
+        skip();
+    }
+    fake_reset(V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING);
+    fk.offered[0] = V4L2_PIX_FMT_MJPEG;
+    fk.offered[1] = 0;
+    fk.fmt = V4L2_PIX_FMT_MJPEG;
+    src = open_fake(NULL, 0, 4);
+    assert_non_null(strstr(src->description, "MJPG 8x4"));
+    produce(0);
+    assert_int_equal(capsrc_next(src, &f, 100), CAPSRC_OK);
+    assert_int_equal(f.width, W);
+    assert_int_equal(f.stride, W);
+    for (y = 0; y < H; y++) {
+        for (x = 0; x < W; x++) {
+            assert_int_equal(f.luma[y * f.stride + x], 10);
+        }
+    }
+    assert_int_equal(queued(), 4); /* decoded, so the buffer went straight back */
+    fk.damage_next = 1;
+    produce(0);
+    produce(0);
+    assert_int_equal(capsrc_next(src, &f, 100), CAPSRC_OK);
+    assert_int_equal(f.sequence, 2);
+    assert_int_equal(f.number, 1);
+    assert_int_equal(f.luma[0], 12);
+    assert_int_equal(src->stats.error_buffers, 1);
+    /* Only damaged frames: the timeout says why. */
+    fk.damage_next = 1;
+    produce(0);
+    assert_int_equal(capsrc_next(src, &f, 100), CAPSRC_TIMEOUT);
+    assert_non_null(strstr(capsrc_error(src), "the last damaged frame: JPEG"));
+    assert_int_equal(src->stats.error_buffers, 2);
+    close_and_check(src);
+}
+
+/* --list-formats: every format the device offers, with how symline gets its luma. */
+static void test_list_formats_and_device_numbers(void **state)
+{
+    char *text = NULL, err[256], buf[64];
+    size_t len = 0;
+    FILE *out;
+    (void)state;
+    fake_reset(V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING);
+    fk.offered[2] = V4L2_PIX_FMT_H264;
+    out = open_memstream(&text, &len);
+    assert_non_null(out);
+    assert_int_equal(v4l2_list_formats(out, FAKE_PATH, err, sizeof err), 0);
+    fclose(out);
+    assert_non_null(strstr(text, FAKE_PATH ": Fake camera (fake, "));
+    assert_non_null(strstr(text, "\n  YUYV  "));
+    assert_non_null(strstr(text, "luma copied out\n"));
+    assert_non_null(strstr(text, "\n  GREY  "));
+    assert_non_null(strstr(text, "luma read in place\n"));
+    assert_non_null(strstr(text, "\n  H264  "));
+    assert_non_null(strstr(text, "not read by symline\n"));
+    free(text);
+    assert_int_equal(fk.open_fds, 0);
+    fake_reset(V4L2_CAP_VIDEO_OUTPUT | V4L2_CAP_STREAMING);
+    assert_int_equal(v4l2_list_formats(stdout, FAKE_PATH, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a video capture device"));
+    assert_int_equal(fk.open_fds, 0);
+
+    assert_string_equal(v4l2_device_path("0", buf, sizeof buf), "/dev/video0");
+    assert_string_equal(v4l2_device_path("12", buf, sizeof buf), "/dev/video12");
+    assert_string_equal(v4l2_device_path("/dev/video3", buf, sizeof buf), "/dev/video3");
+    assert_string_equal(v4l2_device_path("cam0", buf, sizeof buf), "cam0");
+    assert_null(v4l2_device_path("/a/very/long/path/that/does/not/fit", buf, 8));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -506,6 +632,8 @@ int main(void)
         cmocka_unit_test(test_device_lost),
         cmocka_unit_test(test_interrupted_wait),
         cmocka_unit_test(test_open_failures_release_everything),
+        cmocka_unit_test(test_mjpeg_decoded_damaged_skipped),
+        cmocka_unit_test(test_list_formats_and_device_numbers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

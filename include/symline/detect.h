@@ -1,5 +1,5 @@
 /*
- * symline — the line detector: from a gray frame to field-line segments (SPEC §4).
+ * symline — the line detector: from a gray frame to field-line segments (docs/detector.md).
  *
  * One call, caller-owned memory, no allocation, no floating point:
  *
@@ -9,7 +9,7 @@
  *     ... ws = a static or stack buffer of `need` bytes ...
  *     symline_segment segs[64];
  *     symline_point pts[8192];
- *     symline_result res = { segs, 64, 0, pts, 8192, 0, 0, {0} };
+ *     symline_result res = { segs, 64, 0, pts, 8192, 0, 0, {0}, 0 };
  *     symline_status st = symline_detect(&img, &cfg, ws, need, &res);
  *
  * First the field boundary (symline/field.h, config field_boundary): where
@@ -170,6 +170,39 @@ typedef struct symline_config {
 /* Fills *cfg with the defaults documented above (no-op on NULL). */
 void symline_config_default(symline_config *cfg);
 
+/* A field of symline_config, for symline_config_check(); in declaration order. */
+typedef enum symline_config_field {
+    SYMLINE_CFG_NONE = 0, /* every field within its range */
+    SYMLINE_CFG_AXES,
+    SYMLINE_CFG_RADIUS,
+    SYMLINE_CFG_LEVELS,
+    SYMLINE_CFG_FILTER,
+    SYMLINE_CFG_ILLUMINATION,
+    SYMLINE_CFG_BRIGHT_SIGMA10,
+    SYMLINE_CFG_RIDGE_SIGMA10,
+    SYMLINE_CFG_SIDE_SIGMA10,
+    SYMLINE_CFG_A_DISTANCE,
+    SYMLINE_CFG_CONTRAST_PCT,
+    SYMLINE_CFG_CONTRAST_MIN,
+    SYMLINE_CFG_CONTRAST_ASYM_PCT,
+    SYMLINE_CFG_MIN_LENGTH,
+    SYMLINE_CFG_CURVE_DEV_Q8,
+    SYMLINE_CFG_CURVE_BEND_Q8,
+    SYMLINE_CFG_MERGE_DEV_Q8,
+    SYMLINE_CFG_FIELD_BOUNDARY,
+    SYMLINE_CFG_FIELD_MARGIN,
+    SYMLINE_CFG_FIELD /* a setting of config.field (symline/field.h) */
+} symline_config_field;
+
+/*
+ * The range check symline_detect() makes, with the culprit named: returns
+ * SYMLINE_OK, SYMLINE_ERR_NULL (cfg NULL) or SYMLINE_ERR_CONFIG, and when
+ * field is not NULL sets *field to the first field out of its range
+ * (SYMLINE_CFG_RADIUS for config.radius, ...), SYMLINE_CFG_NONE when there
+ * is none. adaptive and merge_gap take any value, so they are never named.
+ */
+symline_status symline_config_check(const symline_config *cfg, symline_config_field *field);
+
 /*
  * One traced point, in full-resolution pixels: the pixel (x, y) nearest to the
  * point and the point's sub-pixel offset from that pixel's centre in 1/128 px,
@@ -201,7 +234,7 @@ typedef struct symline_segment {
 
 /*
  * Output storage, owned by the caller. Set the four array fields before the
- * call; symline_detect() writes the counts and the flag.
+ * call; symline_detect() writes the counts, the flag and points_needed.
  *
  * The point storage also serves as scratch for the raster list of line
  * points of the pass being traced: give it room for about twice the line
@@ -219,6 +252,13 @@ typedef struct symline_result {
     bool truncated;               /* true when segments or points did not fit */
     symline_field_boundary field; /* the field boundary (symline/field.h);
                                      count 0 when not computed */
+    uint32_t points_needed;       /* the point_cap this frame needed: when truncated
+                                     is false, exactly the smallest capacity that
+                                     gives this same result (size a static array
+                                     from the largest value over representative
+                                     frames); when points ran out, at least enough
+                                     for the pass that ran out (more than point_cap;
+                                     repeat with it until truncated is false) */
 } symline_result;
 
 /*
@@ -230,11 +270,60 @@ typedef struct symline_result {
 size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const symline_config *cfg);
 
 /*
+ * The same as a constant expression, for static buffers:
+ *
+ *     static uint8_t ws[SYMLINE_DETECT_WORKSPACE_SIZE(320, 240, 3, 0, 0)];
+ *
+ * At least symline_detect_workspace_size() for a width x height frame and any
+ * configuration with this radius, A distance and levels (the axes, the field
+ * boundary's mode and the other fields do not raise it; config.field.cell 0,
+ * the default, or at least the automatic cell: 8 px, 16 px from 1024 px wide
+ * on), on every target; a few hundred bytes more than
+ * the query, a little more when only the vertical axis runs. a_distance is
+ * the A point distance the filter uses: 0 with the contrast filter (the
+ * default); with the paper filter its config.a_distance, or the radius when
+ * that is 0. levels as in the config (0 = auto). Arguments are evaluated more
+ * than once.
+ */
+#define SYMLINE_DETECT_WORKSPACE_SIZE(width, height, radius, a_distance, levels)                   \
+    SYMLINE_DETECT_WS_MAX_(SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels) +  \
+                               2u * (size_t)(width) + 16u,                                         \
+                           SYMLINE_DETECT_WS_MAX_(2u * (size_t)(width) + 1056u,                    \
+                                                  SYMLINE_DETECT_WS_FIELD_(width, height)))
+/* The passes over axes and scales (lib/pass.h), the largest of them. */
+#define SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels)                       \
+    ((size_t)SYMLINE_DETECT_WS_FIXED + (size_t)4u * ((size_t)(height) + 1u) +                      \
+     (size_t)8u * (2u * (size_t)(radius) + 1u) +                                                   \
+     SYMLINE_DETECT_WS_MAX_((size_t)(width) *                                                      \
+                                (18u + 2u * (size_t)(a_distance) + (size_t)(radius)),              \
+                            SYMLINE_DETECT_WS_COARSE_(width, height, radius, a_distance, levels)))
+/* The field boundary's search (symline/field.h) with cells of the automatic
+ * size or larger: 8 px, 16 px from 1024 px wide on. */
+#define SYMLINE_DETECT_WS_FIELD_(width, height)                                                    \
+    ((size_t)640u + 3u * ((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u) * 8u +            \
+     2u * ((size_t)(height) / SYMLINE_DETECT_WS_CELL_(width) + 1u) *                               \
+         ((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u))
+#define SYMLINE_DETECT_WS_CELL_(width) ((size_t)(width) >= 1024u ? 16u : 8u)
+/* The coarser scales (2x downsampled and beyond), when the configuration and
+ * the frame have them (detect.c: the number of scales). */
+#define SYMLINE_DETECT_WS_COARSE_(width, height, radius, a_distance, levels)                       \
+    (((levels) == 0u ? 2u * (size_t)(radius) + 1u < (size_t)(width) / 16u : (levels) >= 2u) &&     \
+             (size_t)(width) / 2u >= 2u * (size_t)(radius) + 3u &&                                 \
+             (size_t)(height) / 2u >= 2u * (size_t)(radius) + 3u                                   \
+         ? ((size_t)(width) / 2u) * (21u + 3u * (size_t)(a_distance) + 4u * (size_t)(radius)) +    \
+               2u * (size_t)(width)                                                                \
+         : (size_t)0u)
+/* Bytes of a pass's fixed state within that bound (checked when the library is compiled). */
+#define SYMLINE_DETECT_WS_FIXED 512u
+#define SYMLINE_DETECT_WS_MAX_(a, b) ((a) > (b) ? (a) : (b))
+
+/*
  * Detects line segments. ws: ws_size bytes (any alignment) of scratch the
  * call may overwrite. out: caller storage as above; out->segments and
  * out->points may be NULL only with a capacity of 0.
  * Returns SYMLINE_OK (check out->truncated), ERR_NULL, ERR_SIZE, ERR_STRIDE,
- * ERR_CONFIG (a field out of range, radius included), or ERR_BUFFER
+ * ERR_CONFIG (a field out of range, radius included; symline_config_check()
+ * names it), or ERR_BUFFER
  * (ws_size too small). On an error nothing in *out is changed.
  */
 symline_status symline_detect(const symline_image *img, const symline_config *cfg, void *ws,
@@ -246,7 +335,7 @@ symline_status symline_detect(const symline_image *img, const symline_config *cf
  * pixels with their sub-pixel offsets across the line (fx, fy, as in the
  * segments' points), pass after pass,
  * each pass in raster order, written to pts[0 .. *count-1]. Points without a
- * line point among their 8 neighbours in their pass (type A, SPEC §4) are
+ * line point among their 8 neighbours in their pass (type A in the paper's classification) are
  * left out, as the tracer ignores them. A pixel found by two passes is
  * listed twice. This is what symline_detect() traces and what
  * the Muff-space finder (symline/muff.h) votes with.

@@ -1,5 +1,5 @@
 /*
- * symline — extrema of symmetry (SPEC §3).
+ * symline — extrema of symmetry (docs/algorithm.md).
  *
  * Extrema are taken on the exact energies E (smaller = more symmetric), along
  * each row (vertical axis) or each column (horizontal axis):

@@ -1,7 +1,7 @@
 /*
- * symline — symmetry feature points (SPEC §6): crossings of symmetry axes.
+ * symline — symmetry feature points (docs/format.md): crossings of symmetry axes.
  *
- * A feature point is a pixel that is an S point (symmetry maximum, SPEC §3)
+ * A feature point is a pixel that is an S point (symmetry maximum, docs/algorithm.md)
  * of both the horizontal-axis and the vertical-axis extrema maps at the same
  * radius. The result is exact: it equals the two maps of symline_extrema()
  * intersected pixel by pixel.

@@ -1,7 +1,7 @@
 /*
- * symline — vertical symmetry histogram (SPEC §6).
+ * symline — vertical symmetry histogram (docs/format.md).
  *
- * counts[x] = the number of S points (symmetry maxima, SPEC §3) of the
+ * counts[x] = the number of S points (symmetry maxima, docs/algorithm.md) of the
  * vertical-axis extrema map in image column x. Symmetry about vertical axes
  * is computed along each row, so every row contributes on its own: a frame
  * (or a camera streaming rows) is accumulated row by row with one row of

@@ -1,5 +1,5 @@
 /*
- * symline — the Muff-space line finder (SPEC §5; R.S. Wallace, "A Modified
+ * symline — the Muff-space line finder (the paper's first method; R.S. Wallace, "A Modified
  * Hough Transform for Lines", CVPR 1985), the paper's first method, as an
  * alternative to the tracer of symline_detect().
  *

@@ -33,8 +33,8 @@ typedef enum symline_stage {
     SYMLINE_STAGE_FIELD,     /* field boundary; line points above it dropped */
     SYMLINE_STAGE_STATS,     /* the field's gray statistics (adaptive thresholds) */
     SYMLINE_STAGE_GRID,      /* box downsampling of rows for the coarser scales */
-    SYMLINE_STAGE_OPERATOR,  /* symmetry energies (SPEC section 2) */
-    SYMLINE_STAGE_EXTREMA,   /* extrema of symmetry (SPEC section 3) */
+    SYMLINE_STAGE_OPERATOR,  /* symmetry energies (docs/algorithm.md) */
+    SYMLINE_STAGE_EXTREMA,   /* extrema of symmetry (docs/algorithm.md) */
     SYMLINE_STAGE_FILTER,    /* line filter: S points to line points */
     SYMLINE_STAGE_TRACE,     /* tracing chains through the line points */
     SYMLINE_STAGE_SEGMENTS,  /* corner cuts, overlap with earlier passes, fits, tests */

@@ -1,5 +1,5 @@
 /*
- * symline — the one-dimensional reflective symmetry operator (SPEC §2).
+ * symline — the one-dimensional reflective symmetry operator (docs/algorithm.md).
  *
  * For every index i of a sequence q[0..n-1] (a row or a column) and radius m:
  *

@@ -92,7 +92,7 @@ static symline_point pts[16384];
 static int run_detect(const fw_frame *f, const symline_config *cfg, const char *what)
 {
     const symline_image img = {f->width, f->height, f->width, f->px};
-    symline_result res = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}};
+    symline_result res = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
     const size_t need = symline_detect_workspace_size(f->width, f->height, cfg);
     uint64_t t0;
     symline_status st = SYMLINE_ERR_BUFFER;
@@ -106,15 +106,22 @@ static int run_detect(const fw_frame *f, const symline_config *cfg, const char *
 
 /* Smallest point storage with which a detection is not truncated (bisection;
  * the detector reports truncation whenever the storage runs out, including
- * its use as scratch for a pass's raster list of line points). */
-static void point_storage(const fw_frame *f, const symline_config *cfg, const char *what)
+ * its use as scratch for a pass's raster list of line points), which must be
+ * what the detector reports as points_needed. Returns 1 when they differ. */
+static int point_storage(const fw_frame *f, const symline_config *cfg, const char *what)
 {
     const symline_image img = {f->width, f->height, f->width, f->px};
     const size_t need = symline_detect_workspace_size(f->width, f->height, cfg);
-    uint32_t lo = 0u, hi = 16384u, used = 0u;
+    uint32_t lo = 0u, hi = 16384u, used = 0u, reported = 0u;
+    {
+        symline_result res = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
+        if (symline_detect(&img, cfg, det_ws, need, &res) == SYMLINE_OK) {
+            reported = res.points_needed;
+        }
+    }
     while (lo < hi) {
         const uint32_t mid = (lo + hi) / 2u;
-        symline_result res = {segs, 256u, 0u, pts, mid, 0u, 0u, {0}};
+        symline_result res = {segs, 256u, 0u, pts, mid, 0u, 0u, {0}, 0u};
         if (symline_detect(&img, cfg, det_ws, need, &res) == SYMLINE_OK && !res.truncated) {
             hi = mid;
             used = res.point_count;
@@ -122,9 +129,12 @@ static void point_storage(const fw_frame *f, const symline_config *cfg, const ch
             lo = mid + 1u;
         }
     }
-    printf("point storage %lux%lu m=%u %s: %lu points (%lu bytes) needed, %lu kept in the result\n",
+    printf("point storage %lux%lu m=%u %s: %lu points (%lu bytes) needed, %lu kept in the result; "
+           "points_needed %s\n",
            (unsigned long)f->width, (unsigned long)f->height, M, what, (unsigned long)lo,
-           (unsigned long)(lo * sizeof(symline_point)), (unsigned long)used);
+           (unsigned long)(lo * sizeof(symline_point)), (unsigned long)used,
+           reported == lo ? "agrees" : "DIFFERS");
+    return reported != lo;
 }
 
 /* Workspace of the detector (the frame and the result arrays excluded). */
@@ -179,8 +189,8 @@ int main(void)
         bad |= run_detect(&fw_bench_160x120, &def, "default");
         bad |= run_detect(&fw_bench_320x240, &one, "1axis1lvl");
         bad |= run_detect(&fw_bench_320x240, &def, "default");
-        point_storage(&fw_bench_320x240, &one, "1axis1lvl");
-        point_storage(&fw_bench_320x240, &def, "default");
+        bad |= point_storage(&fw_bench_320x240, &one, "1axis1lvl");
+        bad |= point_storage(&fw_bench_320x240, &def, "default");
     }
     workspace_sizes();
 #endif

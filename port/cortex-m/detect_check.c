@@ -27,7 +27,7 @@ static symline_point pts[PT_CAP];
 static int detect(const char *name, const fw_frame *f, const symline_config *cfg)
 {
     const symline_image img = {f->width, f->height, f->width, f->px};
-    symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u, {0}};
+    symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u, {0}, 0u};
     const size_t need = symline_detect_workspace_size(f->width, f->height, cfg);
     symline_status st;
     if (need == 0u || need > sizeof ws) {

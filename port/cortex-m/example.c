@@ -43,7 +43,7 @@ int main(void)
 {
     const symline_image frame = {WIDTH, HEIGHT, WIDTH, fw_bench_320x240.px};
     symline_config cfg;
-    symline_result res = {segments, MAX_SEGMENTS, 0u, points, MAX_POINTS, 0u, 0u, {0}};
+    symline_result res = {segments, MAX_SEGMENTS, 0u, points, MAX_POINTS, 0u, 0u, {0}, 0u};
     size_t need;
     symline_status st;
     uint32_t i;

@@ -19,8 +19,8 @@ typedef struct fw_golden {
     const fw_frame *in;
     uint8_t axis; /* symline_axis */
     uint8_t m;
-    const fw_frame *s8;  /* SPEC §2 symmetry image */
-    const fw_frame *ext; /* SPEC §3 extrema map */
+    const fw_frame *s8;  /* symmetry image S8 */
+    const fw_frame *ext; /* extrema map */
 } fw_golden;
 
 #endif /* SYMLINE_FWDATA_H */

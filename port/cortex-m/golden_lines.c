@@ -33,7 +33,7 @@ static symline_intersection items[IX_CAP];
 static int run(const char *name, const fw_frame *f, int paper)
 {
     const symline_image img = {f->width, f->height, f->width, f->px};
-    symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u, {0}};
+    symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u, {0}, 0u};
     symline_intersection_result ix = {items, IX_CAP, 0u, 0u};
     symline_intersection_config icfg;
     symline_config cfg;

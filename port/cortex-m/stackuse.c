@@ -61,8 +61,8 @@ int main(void)
     symline_config def, paper;
     symline_intersection_config icfg;
     symline_intersection_result ix = {items, 64u, 0u, 0u};
-    symline_result r1 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}};
-    symline_result r2 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}};
+    symline_result r1 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
+    symline_result r2 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
     int bad = 0;
     symline_config_default(&def);
     paper = def;

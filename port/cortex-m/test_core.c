@@ -1,7 +1,7 @@
 /*
  * The core's golden and argument checks, run on the target (Cortex-M under
- * qemu): every golden case of tests/golden/core (SPEC §2 symmetry images and
- * §3 extrema maps from the plain reference) is recomputed here from the
+ * qemu): every golden case of tests/golden/core (symmetry images and
+ * extrema maps from the plain reference) is recomputed here from the
  * embedded input and compared byte for byte. All buffers are static.
  *
  * Built with SYMLINE_FW_INJECT_FAILURE, one output byte is corrupted before

@@ -5,6 +5,7 @@
 # and the layering of the tree: lib/ includes only lib/ and include/,
 # capture/ and port/ nothing from tools/, and lib/'s includes form no cycle.
 # Usage: check_core_rules.sh SOURCE_DIR LIBSYMLINE_A CC
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -u
 src=$1 lib=$2 cc=$3
 fail=0 pass=0

@@ -1,6 +1,8 @@
 #!/bin/sh
 # The CLI's exit codes and messages: 0 ok, 2 usage or input error, and
 # messages that name the file and the problem.
+# Usage: cli_errors.sh SYMLINE DATA_DIR
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -u
 cli=$1 data=$2
 tmp=$(mktemp -d)
@@ -61,7 +63,7 @@ expect 2 "unknown option" -- boundary --bogus "$good"
 expect 2 "missing.pgm: cannot open" -- boundary "$tmp/missing.pgm"
 expect 2 "--field needs" -- lines --field sideways "$good"
 
-# Feature points and histograms (SPEC §6), the line method option.
+# Feature points and histograms (docs/format.md), the line method option.
 expect 0 "--radius" -- features --help
 expect 0 "--plot" -- histogram --help
 expect 2 "usage" -- features "$good"

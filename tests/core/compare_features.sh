@@ -2,6 +2,7 @@
 # `symline features` and `symline histogram` against the plain reference, byte
 # for byte, on every bundled real frame at radii 1, 3 and 10.
 # Usage: compare_features.sh SYMLINE SYMLINE_REF DATA_DIR
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 cli=$1 ref=$2 data=$3
 tmp=$(mktemp -d)

@@ -2,6 +2,7 @@
 # The CLI against the plain reference, byte for byte, on every bundled real frame,
 # both axes, the golden radii, symmetry and extrema.
 # Usage: compare_reference.sh SYMLINE SYMLINE_REF DATA_DIR
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 cli=$1 ref=$2 data=$3
 tmp=$(mktemp -d)

@@ -1,5 +1,5 @@
 /*
- * The run rule (lib/extrema.c, SPEC §3): the one routine behind
+ * The run rule (lib/extrema.c, docs/algorithm.md): the one routine behind
  * symline_extrema_row() and the detector's rows, with and without the
  * detector's plateau limit.
  */

@@ -1,5 +1,5 @@
 /*
- * Symmetry feature points and the vertical symmetry histogram (SPEC §6):
+ * Symmetry feature points and the vertical symmetry histogram (docs/format.md):
  * hand-made images with known answers, the definition (two extrema maps of
  * symline_extrema()) on random images with long plateaus, the golden JSON of
  * the plain reference (tests/golden/features/), and argument errors.

@@ -1,8 +1,10 @@
 /*
  * The host tools' image reader and writer: PGM header rules, error messages
- * that name the file and the problem, PNG round trips and the luma formula.
+ * that name the file and the problem, PNG round trips and the luma formula,
+ * JPEG input, and the output format chosen by the name.
  */
 #define _POSIX_C_SOURCE 200809L
+#include <fcntl.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -12,6 +14,10 @@
 #include <unistd.h>
 
 #include <cmocka.h>
+
+#ifdef SYMLINE_HAVE_TURBOJPEG
+#include <turbojpeg.h>
+#endif
 
 #include "imgio.h"
 
@@ -129,6 +135,133 @@ static void test_png_roundtrip_and_luma(void **state)
     unlink(path);
 }
 
+/* JPEG input: its luma, whatever the name; a damaged one is reported. */
+static void test_jpeg_input(void **state)
+{
+#ifdef SYMLINE_HAVE_TURBOJPEG
+    /* 16x8, left half RGB (200, 100, 30), right half gray 77: colour becomes its BT.601 luma. */
+    uint8_t rgb[16 * 8 * 3];
+    unsigned char *jpg = NULL;
+    unsigned long jlen = 0;
+    imgio_gray img;
+    char err[256];
+    const char *path = tmpname(".data");
+    tjhandle tj = tjInitCompress();
+    uint32_t x, y;
+    FILE *f;
+    (void)state;
+    assert_true(imgio_have_jpeg());
+    for (y = 0; y < 8; y++) {
+        for (x = 0; x < 16; x++) {
+            uint8_t *p = rgb + 3u * (y * 16u + x);
+            p[0] = x < 8 ? 200 : 77;
+            p[1] = x < 8 ? 100 : 77;
+            p[2] = x < 8 ? 30 : 77;
+        }
+    }
+    assert_non_null(tj);
+    assert_int_equal(tjCompress2(tj, rgb, 16, 0, 8, TJPF_RGB, &jpg, &jlen, TJSAMP_444, 100, 0), 0);
+    f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(jpg, 1, jlen, f), jlen);
+    fclose(f);
+    assert_int_equal(imgio_read_gray(path, &img, err, sizeof err), 0);
+    assert_int_equal(img.width, 16);
+    assert_int_equal(img.height, 8);
+    /* quality 100, 4:4:4: within 2 of the exact luma, away from the colour edge */
+    assert_in_range(img.px[3 * 16 + 2], (299 * 200 + 587 * 100 + 114 * 30 + 500) / 1000 - 2,
+                    (299 * 200 + 587 * 100 + 114 * 30 + 500) / 1000 + 2);
+    assert_in_range(img.px[3 * 16 + 13], 75, 79);
+    imgio_free(&img);
+    /* cut short: an error naming the file, not a half-gray frame */
+    f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(jpg, 1, jlen / 2, f), jlen / 2);
+    fclose(f);
+    assert_int_equal(imgio_read_gray(path, &img, err, sizeof err), -1);
+    assert_non_null(strstr(err, path));
+    assert_non_null(strstr(err, "JPEG"));
+    tjFree(jpg);
+    tjDestroy(tj);
+    unlink(path);
+#else
+    imgio_gray img;
+    char err[256];
+    static const uint8_t soi[] = {0xFF, 0xD8, 0xFF, 0xE0, 0, 16};
+    const char *path = tmpname(".jpg");
+    FILE *f = fopen(path, "wb");
+    (void)state;
+    assert_false(imgio_have_jpeg());
+    assert_non_null(f);
+    fwrite(soi, 1, sizeof soi, f);
+    fclose(f);
+    assert_int_equal(imgio_read_gray(path, &img, err, sizeof err), -1);
+    assert_non_null(strstr(err, "libturbojpeg"));
+    unlink(path);
+#endif
+}
+
+/* The name decides the output format; an unknown one is refused before anything is written. */
+static void test_output_format_by_name(void **state)
+{
+    uint8_t gray[6] = {0, 50, 100, 150, 200, 255};
+    uint8_t rgb_px[6] = {255, 0, 0, 10, 200, 30};
+    imgio_rgb rgb = {2, 1, rgb_px};
+    imgio_gray img;
+    char err[256];
+    const char *path;
+    FILE *f;
+    char magic[3] = {0, 0, 0};
+    (void)state;
+    path = tmpname(".jpg");
+    unlink(path);
+    assert_int_equal(imgio_write_gray(path, gray, 3, 2, 3, err, sizeof err), -1);
+    assert_non_null(strstr(err, "unknown image format '.jpg'"));
+    assert_int_equal(access(path, F_OK), -1); /* nothing written */
+    path = tmpname("");
+    assert_int_equal(imgio_write_gray(path, gray, 3, 2, 3, err, sizeof err), -1);
+    assert_non_null(strstr(err, "unknown image format: write .pgm"));
+    path = tmpname(".pgm");
+    assert_int_equal(imgio_write_rgb(path, &rgb, err, sizeof err), -1);
+    assert_non_null(strstr(err, "a colour image cannot be written as PGM"));
+    assert_int_equal(imgio_check_output_name("x.PPM", 1, err, sizeof err), 0);
+    assert_int_equal(imgio_check_output_name("-", 0, err, sizeof err), 0);
+    /* gray into .ppm: P6 with R = G = B; read back as the same gray */
+    path = tmpname(".ppm");
+    assert_int_equal(imgio_write_gray(path, gray, 3, 2, 3, err, sizeof err), 0);
+    f = fopen(path, "rb");
+    assert_non_null(f);
+    assert_int_equal(fread(magic, 1, 2, f), 2);
+    fclose(f);
+    assert_string_equal(magic, "P6");
+    unlink(path);
+    /* .pnm: PGM for gray */
+    path = tmpname(".pnm");
+    assert_int_equal(imgio_write_gray(path, gray, 3, 2, 3, err, sizeof err), 0);
+    assert_int_equal(imgio_read_gray(path, &img, err, sizeof err), 0);
+    assert_memory_equal(img.px, gray, 6);
+    imgio_free(&img);
+    unlink(path);
+    /* "-" writes stdout; a full disk there is reported with the reason */
+    {
+        const int full = open("/dev/full", O_WRONLY);
+        const int saved = dup(1);
+        int rc;
+        if (full < 0 || saved < 0) {
+            skip();
+        }
+        fflush(stdout);
+        dup2(full, 1);
+        rc = imgio_write_gray("-", gray, 3, 2, 3, err, sizeof err);
+        clearerr(stdout);
+        dup2(saved, 1);
+        close(saved);
+        close(full);
+        assert_int_equal(rc, -1);
+        assert_non_null(strstr(err, "-: write error: No space left on device"));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -137,6 +270,8 @@ int main(void)
         cmocka_unit_test(test_unreadable_file),
         cmocka_unit_test(test_pgm_roundtrip_with_stride),
         cmocka_unit_test(test_png_roundtrip_and_luma),
+        cmocka_unit_test(test_jpeg_input),
+        cmocka_unit_test(test_output_format_by_name),
     };
     return cmocka_run_group_tests_name("imgio", tests, NULL, NULL);
 }

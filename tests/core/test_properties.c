@@ -1,7 +1,7 @@
 /*
  * Properties the operator must have whatever the picture, checked on
  * pseudo-random images of many sizes and radii, plus a differential check of
- * every output against the formulas of SPEC §2–3 evaluated directly.
+ * every output against the formulas of docs/algorithm.md evaluated directly.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -257,7 +257,7 @@ static void test_differential_against_formulas(void **state)
                     assert_int_equal(s8[first + i * step],
                                      (uint8_t)((510 * (emax - want) + emax) / (2 * emax)));
                 }
-                /* runs of equal E, straight from SPEC §3 */
+                /* runs of equal E, straight from docs/algorithm.md */
                 while (r0 < n) {
                     uint32_t r1 = r0, k;
                     uint8_t want = 0;

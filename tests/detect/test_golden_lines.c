@@ -1,6 +1,6 @@
 /*
- * Golden JSON of the bundled real frames: symline_detect() + the SPEC §7
- * writer must reproduce tests/golden/lines/NAME.json byte for byte
+ * Golden JSON of the bundled real frames: symline_detect() + the JSON
+ * writer of docs/format.md must reproduce tests/golden/lines/NAME.json byte for byte
  * (regenerate with tests/golden/lines/regenerate.sh after a reviewed change).
  */
 #include <setjmp.h>

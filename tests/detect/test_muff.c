@@ -1,5 +1,5 @@
 /*
- * The Muff-space line finder (SPEC §5): two known lines give two accumulator
+ * The Muff-space line finder (the paper's first method): two known lines give two accumulator
  * peaks at the perimeter cells where they cross the border, and two segments
  * over the extent of their points; the perimeter coordinates; the end-to-end
  * call on a drawn frame; argument errors.

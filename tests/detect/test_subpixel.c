@@ -119,7 +119,7 @@ static void blurred_between_pixels(void **state)
     uint32_t i, best = 0u, e, beste = 0xFFFFFFFFu;
     (void)state;
     img = vertical_band(19u, band, 7u);
-    /* The S point: the smallest E along the row (SPEC section 2). */
+    /* The S point: the smallest E along the row (docs/algorithm.md). */
     for (i = 19u; i <= 25u; i++) {
         uint32_t j;
         e = 0u;

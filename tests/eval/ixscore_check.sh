@@ -4,6 +4,13 @@
 # have the wrong type, lie too far away, or are missing.
 #   ixscore_check.sh SYMLINE_IXSCORE WORKDIR
 set -eu
+case ${1:-} in
+-h | --help)
+    sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'
+    exit 0
+    ;;
+esac
+[ $# -eq 2 ] || { echo "usage: ixscore_check.sh SYMLINE_IXSCORE WORKDIR" >&2; exit 2; }
 ix=$1
 d=$2
 rm -rf "$d"

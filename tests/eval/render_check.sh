@@ -3,6 +3,7 @@
 # ground-truth points lie inside the image, and the ground truth scored against
 # itself (as a detection) is perfect.
 # usage: render_check.sh SYMLINE-RENDER SYMLINE-SCORE WORKDIR
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 render=$1
 score=$2

@@ -1,6 +1,6 @@
 /*
  * The scorer on hand-made ground truth and detections whose scores are known
- * exactly (SPEC section 7: samples every 0.5 px, tolerance max(2, 3*W/640)).
+ * exactly (docs/evaluation.md: samples every 0.5 px, tolerance max(2, 3*W/640)).
  */
 #include <setjmp.h>
 #include <stdarg.h>

@@ -2,6 +2,7 @@
 # Writes the inputs of the golden tests: hand-made cases (tests/data/cases/) and
 # 96x72 cut-outs of the bundled real frames (tests/data/crops/). Deterministic;
 # the outputs are committed, so this only needs to run when a case is added.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 data="$here/../data"

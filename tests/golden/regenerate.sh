@@ -4,6 +4,7 @@
 # (tools/reference/symref.c). Usage: tests/golden/regenerate.sh [BUILD_DIR]
 # (also: cmake --build BUILD_DIR --target golden). Review the diff before committing:
 # a change here means the contract's outputs changed.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-$here/../../build}
@@ -26,7 +27,7 @@ for src in "$here"/../data/cases/*.pgm "$here"/../data/crops/*.pgm; do
 done
 echo "wrote $n golden images to $out"
 
-# Symmetry feature points and vertical symmetry histograms (SPEC §6), radii 1, 3, 10.
+# Symmetry feature points and vertical symmetry histograms (docs/format.md), radii 1, 3, 10.
 fout="$here/features"
 rm -rf "$fout"
 mkdir -p "$fout"

@@ -3,6 +3,7 @@
 # callgrind (deterministic, unlike seconds on a shared machine): inclusive cost of
 # symline_symmetry() / symline_extrema() divided by the pixels processed.
 # Usage: tools/bench/operator.sh [BUILD_DIR] [FRAME.pgm]
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-$here/../../build}

@@ -1,7 +1,7 @@
 /*
  * symline-peers — symline and OpenCV's line detectors on the same frames, in
  * one run, one thread, image in memory: the time of the detection call alone,
- * and every detector's segments as symline JSON (SPEC section 7) for the same
+ * and every detector's segments as symline JSON (docs/format.md) for the same
  * scorer (symline-score). Built only where OpenCV with its contrib module
  * ximgproc is installed (Debian: libopencv-dev libopencv-contrib-dev).
  *

@@ -2,8 +2,8 @@
 # symline beside OpenCV's line detectors (EDLines, FastLineDetector, LSD, Canny +
 # HoughLinesP) in one run on the same synthetic frames: the time of the detection
 # call (one thread, image in memory; symline-peers, tools/bench/peers.cpp) and the
-# F1 of each detector's segments by the same scorer (symline-score gt, SPEC
-# section 7) on DATA_DIR/synth and on the rendered sets of tools/eval/evaluate.sh
+# F1 of each detector's segments by the same scorer (symline-score gt,
+# docs/evaluation.md) on DATA_DIR/synth and on the rendered sets of tools/eval/evaluate.sh
 # (normal, dark, overexposed, occluded, circle; 320x240 and 640x480; same seed).
 # Installs what it needs (Debian: g++, libopencv-dev, libopencv-contrib-dev, ...).
 #

@@ -9,14 +9,19 @@
 #include "symline/detect.h"
 
 typedef struct app_options {
-    const char *device;
+    const char *device;  /* V4L2 device path (a bare --device N is /dev/videoN) */
+    char device_buf[64]; /* holds that path when it was made from a number */
     const char *camera;
     const char *replay;
     int list_cameras;       /* --list-cameras: print libcamera's cameras and exit */
+    int list_devices;       /* --list-devices: print the V4L2 devices and exit */
+    int list_formats;       /* --list-formats: print the formats of --device and exit */
     uint64_t frames;        /* 0 = until stopped or the replay ends */
     uint32_t width, height; /* 0 = the source's default */
     const char *format;
-    uint32_t fps_num, fps_den; /* 0 = the source's default */
+    uint32_t fps_num, fps_den;   /* 0 = the source's default */
+    uint32_t rate_num, rate_den; /* replay pace; 0/0 = the recording's own rate (Y4M) or unpaced */
+    int rate_max;                /* --rate max: replay as fast as frames are read */
     uint32_t buffers;
     int all_frames;      /* 1 = process every frame instead of the freshest */
     int32_t exposure_us; /* < 0 = leave the device's exposure alone */

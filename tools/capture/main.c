@@ -16,6 +16,7 @@
 #include "loop.h"
 #include "replay_source.h"
 #include "source.h"
+#include "v4l2_list.h"
 #include "v4l2_source.h"
 #ifdef SYMLINE_HAVE_LIBCAMERA
 #include "libcamera_source.h"
@@ -65,8 +66,10 @@ static capsrc *open_source(const app_options *o, char *err, size_t errlen)
         replay_options r;
         memset(&r, 0, sizeof r);
         r.path = o->replay;
-        r.fps_num = o->fps_num;
-        r.fps_den = o->fps_den;
+        /* --rate sets the pace; --fps is accepted as before when --rate is absent. */
+        r.fps_num = o->rate_num ? o->rate_num : o->fps_num;
+        r.fps_den = o->rate_num ? o->rate_den : o->fps_den;
+        r.unpaced = o->rate_max;
         r.loop = o->loop;
         return replay_source_open(&r, err, errlen);
     }
@@ -93,6 +96,20 @@ int main(int argc, char **argv)
     rc = app_parse_args(argc, argv, &o);
     if (rc != 0) {
         return rc == 1 ? APP_EXIT_OK : rc;
+    }
+    if (o.list_devices) {
+        rc = v4l2_list_devices(stdout, "/dev", err, sizeof err);
+        if (rc < 0) {
+            fprintf(stderr, "symline-capture: %s\n", err);
+        }
+        return rc < 0 ? APP_EXIT_FAIL : APP_EXIT_OK;
+    }
+    if (o.list_formats) {
+        if (v4l2_list_formats(stdout, o.device, err, sizeof err) != 0) {
+            fprintf(stderr, "symline-capture: %s\n", err);
+            return APP_EXIT_FAIL;
+        }
+        return APP_EXIT_OK;
     }
 #ifdef SYMLINE_HAVE_LIBCAMERA
     if (o.list_cameras) {

@@ -57,7 +57,7 @@ static void boundary_usage(FILE *f)
     fprintf(f, "  IN                binary PGM or PNG (colour is converted to luma)\n"
                "  OUT.png           the frame with the boundary drawn in yellow\n"
                "Prints {\"width\": W, \"height\": H, \"cell\": N, \"carpet_mean\": G,\n"
-               "\"field_boundary\": [[x, y], ...]} (SPEC section 7): rows at and below the\n"
+               "\"field_boundary\": [[x, y], ...]} (docs/format.md): rows at and below the\n"
                "polyline are field. See include/symline/field.h for the settings.\n"
                "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n");
 }
@@ -75,28 +75,39 @@ int cmd_boundary(int argc, char **argv)
     void *ws;
     symline_status st;
     symline_field_config_default(&fc);
-    for (i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) {
-            boundary_usage(stdout);
-            return CLI_OK;
-        }
+    {
+        /* getopt_long over the table: --opt N and --opt=N, -- ends the options. */
+        struct option longopts[FB_NOPTS + 2];
+        int c;
         size_t k;
-        for (k = 0; k < FB_NOPTS && strcmp(o, FB_OPTS[k].name) != 0; k++) {
+        for (k = 0; k < FB_NOPTS; k++) {
+            longopts[k].name = FB_OPTS[k].name + 2;
+            longopts[k].has_arg = required_argument;
+            longopts[k].flag = NULL;
+            longopts[k].val = 0x100 + (int)k;
         }
-        if (k < FB_NOPTS) {
-            if (i + 1 >= argc || detopts_u32(argv[i + 1], FB_OPTS[k].lo, FB_OPTS[k].hi,
-                                             fb_field(&fc, FB_OPTS[k].off)) != 0) {
-                return cli_error("%s: %s needs a number in %u..%u", argv[0], o, FB_OPTS[k].lo,
+        longopts[FB_NOPTS] = (struct option){"help", no_argument, NULL, 'h'};
+        longopts[FB_NOPTS + 1] = (struct option){NULL, 0, NULL, 0};
+        optind = 1;
+        while ((c = cli_getopt(argc, argv, ":h", longopts)) != -1) {
+            if (c == 'h') {
+                boundary_usage(stdout);
+                return CLI_OK;
+            }
+            if (c < 0x100 || c >= 0x100 + (int)FB_NOPTS) {
+                return CLI_USAGE;
+            }
+            k = (size_t)(c - 0x100);
+            if (detopts_u32(optarg, FB_OPTS[k].lo, FB_OPTS[k].hi, fb_field(&fc, FB_OPTS[k].off)) != 0) {
+                return cli_error("%s: %s needs a number in %u..%u", argv[0], FB_OPTS[k].name, FB_OPTS[k].lo,
                                  FB_OPTS[k].hi);
             }
-            i++;
-        } else if (o[0] == '-' && o[1] != '\0') {
-            return cli_error("%s: unknown option '%s'", argv[0], o);
-        } else if (npos < 2) {
-            pos[npos++] = o;
-        } else {
-            return cli_error("%s: too many arguments ('%s')", argv[0], o);
+        }
+        for (i = optind; i < argc; i++) {
+            if (npos >= 2) {
+                return cli_error("%s: too many arguments ('%s')", argv[0], argv[i]);
+            }
+            pos[npos++] = argv[i];
         }
     }
     if (npos < 1) {

@@ -1,6 +1,6 @@
 /*
  * `symline features` and `symline histogram`: the paper's symmetry feature
- * points and vertical symmetry histogram (SPEC §6) as JSON.
+ * points and vertical symmetry histogram (docs/format.md) as JSON.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,31 +43,36 @@ static void feat_usage(FILE *f, const char *cmd)
 /* 0 ok, 1 --help shown, CLI_USAGE on error. */
 static int parse_feat_args(int argc, char **argv, feat_args *a, int allow_plot)
 {
-    int i, have_radius = 0;
+    static const struct option longopts[] = {{"radius", required_argument, NULL, 'r'},
+                                             {"plot", required_argument, NULL, 'p'},
+                                             {"help", no_argument, NULL, 'h'},
+                                             {NULL, 0, NULL, 0}};
+    int c, have_radius = 0;
     a->in = NULL;
     a->plot = NULL;
-    for (i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+    optind = 1;
+    while ((c = cli_getopt(argc, argv, ":h", longopts)) != -1) {
+        if (c == 'h') {
             feat_usage(stdout, argv[0]);
             return 1;
-        } else if (strcmp(argv[i], "--radius") == 0) {
-            if (i + 1 >= argc || detopts_u32(argv[i + 1], 1, 255, &a->radius) != 0) {
+        } else if (c == 'r') {
+            if (detopts_u32(optarg, 1, 255, &a->radius) != 0) {
                 return cli_error("%s: --radius needs an integer 1..255", argv[0]);
             }
             have_radius = 1;
-            i++;
-        } else if (allow_plot && strcmp(argv[i], "--plot") == 0) {
-            if (i + 1 >= argc) {
-                return cli_error("%s: --plot needs a file name", argv[0]);
-            }
-            a->plot = argv[++i];
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return cli_error("%s: unknown option '%s'", argv[0], argv[i]);
-        } else if (a->in == NULL) {
-            a->in = argv[i];
+        } else if (c == 'p' && allow_plot) {
+            a->plot = optarg;
+        } else if (c == 'p') {
+            return cli_error("%s: unknown option '--plot'", argv[0]);
         } else {
-            return cli_error("%s: too many arguments ('%s')", argv[0], argv[i]);
+            return CLI_USAGE;
         }
+    }
+    if (optind < argc) {
+        a->in = argv[optind++];
+    }
+    if (optind < argc) {
+        return cli_error("%s: too many arguments ('%s')", argv[0], argv[optind]);
     }
     if (!have_radius || a->in == NULL) {
         feat_usage(stderr, argv[0]);

@@ -1,6 +1,7 @@
 /*
  * `symline symmetry` and `symline extrema`: the operator and its extrema as images.
  */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,12 +22,14 @@ typedef struct op_args {
 static void op_usage(FILE *f, const char *cmd)
 {
     fprintf(f,
-            "usage: symline %s --axis horizontal|vertical --radius M IN OUT\n"
+            "usage: symline %s --axis horizontal|vertical --radius M [-o OUT] IN [OUT]\n"
             "  --axis    horizontal: symmetry along columns (near-horizontal lines);\n"
             "            vertical: symmetry along rows (near-vertical lines)\n"
             "  --radius  symmetry radius M, 1..255\n"
-            "  IN        binary PGM (P5, maxval 255) or PNG\n"
-            "  OUT       %s; PNG if the name ends in .png, else PGM\n",
+            "  IN        binary PGM (P5, maxval 255), PNG or JPEG; - reads stdin\n"
+            "  OUT, -o OUT  the %s;\n"
+            "            format by the name: .pgm, .png, .ppm, .pnm; - writes PGM to stdout\n"
+            "Options take --opt VALUE or --opt=VALUE; -- ends the options.\n",
             cmd,
             strcmp(cmd, "symmetry") == 0 ? "8-bit symmetry image (255 = perfect mirror symmetry)"
                                          : "extrema map (0 nothing, 128 A point, 255 S point)");
@@ -35,38 +38,46 @@ static void op_usage(FILE *f, const char *cmd)
 /* 0 ok, 1 --help shown, CLI_USAGE on error. */
 static int parse_op_args(int argc, char **argv, op_args *a)
 {
-    int i, have_axis = 0, have_radius = 0, npos = 0;
-    const char *pos[2] = {NULL, NULL};
-    for (i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+    static const struct option longopts[] = {
+        {"axis", required_argument, NULL, 'a'},   {"radius", required_argument, NULL, 'r'},
+        {"output", required_argument, NULL, 'o'}, {"help", no_argument, NULL, 'h'},
+        {NULL, 0, NULL, 0}};
+    int c, have_axis = 0, have_radius = 0;
+    const char *out_opt = NULL;
+    optind = 1;
+    while ((c = cli_getopt(argc, argv, ":ho:", longopts)) != -1) {
+        switch (c) {
+        case 'h':
             op_usage(stdout, argv[0]);
             return 1;
-        } else if (strcmp(argv[i], "--axis") == 0) {
-            if (i + 1 >= argc || cli_parse_axis(argv[i + 1], &a->axis) != 0) {
+        case 'a':
+            if (cli_parse_axis(optarg, &a->axis) != 0) {
                 return cli_error("%s: --axis needs 'horizontal' or 'vertical'", argv[0]);
             }
             have_axis = 1;
-            i++;
-        } else if (strcmp(argv[i], "--radius") == 0) {
-            if (i + 1 >= argc || detopts_u32(argv[i + 1], 1, 255, &a->radius) != 0) {
+            break;
+        case 'r':
+            if (detopts_u32(optarg, 1, 255, &a->radius) != 0) {
                 return cli_error("%s: --radius needs an integer 1..255", argv[0]);
             }
             have_radius = 1;
-            i++;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return cli_error("%s: unknown option '%s'", argv[0], argv[i]);
-        } else if (npos < 2) {
-            pos[npos++] = argv[i];
-        } else {
-            return cli_error("%s: too many arguments ('%s')", argv[0], argv[i]);
+            break;
+        case 'o':
+            out_opt = optarg;
+            break;
+        default:
+            return CLI_USAGE;
         }
     }
-    if (!have_axis || !have_radius || npos != 2) {
+    if (!have_axis || !have_radius || optind >= argc || argc - optind > 2 ||
+        (optind + 1 >= argc && out_opt == NULL)) {
         op_usage(stderr, argv[0]);
         return CLI_USAGE;
     }
-    a->in = pos[0];
-    a->out = pos[1];
+    a->in = argv[optind];
+    if (cli_output_name(argv[0], optind + 1 < argc ? argv[optind + 1] : NULL, out_opt, &a->out) != 0) {
+        return CLI_USAGE;
+    }
     return 0;
 }
 
@@ -83,6 +94,9 @@ static int run_op(int argc, char **argv, int extrema)
     int rc = parse_op_args(argc, argv, &a);
     if (rc != 0) {
         return rc == 1 ? CLI_OK : rc;
+    }
+    if (imgio_check_output_name(a.out, 0, err, sizeof err) != 0) {
+        return cli_error("%s", err);
     }
     if (imgio_read_gray(a.in, &in, err, sizeof err) != 0) {
         return cli_error("%s", err);
@@ -107,12 +121,12 @@ static int run_op(int argc, char **argv, int extrema)
                  : symline_symmetry(&view, a.axis, a.radius, out, in.width,
                                     (size_t)in.width * in.height, ws, ws_size);
     rc = CLI_OK;
+    errno = 0;
     if (st != SYMLINE_OK) {
         cli_error("%s: %s", a.in, symline_status_str(st));
         rc = CLI_FAIL;
     } else if (imgio_write_gray(a.out, out, in.width, in.height, in.width, err, sizeof err) != 0) {
-        cli_error("%s", err);
-        rc = CLI_FAIL;
+        rc = cli_image_write_failed(err);
     }
     free(ws);
     free(out);
@@ -130,26 +144,44 @@ int cmd_extrema(int argc, char **argv)
     return run_op(argc, argv, 1);
 }
 
-/* `symline convert IN OUT`: PGM <-> PNG (colour PNG input becomes luma). */
+/* `symline convert IN OUT`: between PGM, PNG and JPEG input (colour becomes luma). */
 int cmd_convert(int argc, char **argv)
 {
+    static const struct option longopts[] = {
+        {"output", required_argument, NULL, 'o'}, {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
     imgio_gray in;
     char err[512];
-    int rc = CLI_OK;
-    if (argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
-        printf("usage: symline convert IN OUT\n"
-               "  reads a PGM (P5) or PNG, writes 8-bit gray PNG (OUT ends in .png) or PGM\n");
-        return CLI_OK;
+    const char *out_opt = NULL, *out;
+    int c, rc = CLI_OK;
+    optind = 1;
+    while ((c = cli_getopt(argc, argv, ":ho:", longopts)) != -1) {
+        if (c == 'h') {
+            printf("usage: symline convert [-o OUT] IN [OUT]\n"
+                   "  reads a PGM (P5), PNG or JPEG (- = stdin) and writes it as 8-bit gray;\n"
+                   "  the format by OUT's name: .pgm, .png, .ppm, .pnm; - writes PGM to stdout\n");
+            return CLI_OK;
+        }
+        if (c == 'o') {
+            out_opt = optarg;
+        } else {
+            return CLI_USAGE;
+        }
     }
-    if (argc != 3) {
-        return cli_error("convert: usage: symline convert IN OUT");
+    if (optind >= argc || argc - optind > 2) {
+        return cli_error("convert: usage: symline convert [-o OUT] IN [OUT]");
     }
-    if (imgio_read_gray(argv[1], &in, err, sizeof err) != 0) {
+    if (cli_output_name(argv[0], optind + 1 < argc ? argv[optind + 1] : NULL, out_opt, &out) != 0) {
+        return CLI_USAGE;
+    }
+    if (imgio_check_output_name(out, 0, err, sizeof err) != 0) {
         return cli_error("%s", err);
     }
-    if (imgio_write_gray(argv[2], in.px, in.width, in.height, in.width, err, sizeof err) != 0) {
-        cli_error("%s", err);
-        rc = CLI_FAIL;
+    if (imgio_read_gray(argv[optind], &in, err, sizeof err) != 0) {
+        return cli_error("%s", err);
+    }
+    errno = 0;
+    if (imgio_write_gray(out, in.px, in.width, in.height, in.width, err, sizeof err) != 0) {
+        rc = cli_image_write_failed(err);
     }
     imgio_free(&in);
     return rc;

@@ -1,12 +1,14 @@
 /*
  * symline — host command line tool.
  */
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
+#include "symline/version.h"
 
 int cli_error(const char *fmt, ...)
 {
@@ -47,15 +49,16 @@ static void usage(FILE *f)
           "  extrema  --axis horizontal|vertical --radius M IN OUT\n"
           "      write the extrema map: 0 nothing, 128 A point (asymmetry), 255 S point\n"
           "  convert  IN OUT\n"
-          "      convert between PGM and PNG (8-bit gray; colour input becomes luma)\n"
+          "      convert PGM, PNG or JPEG into 8-bit gray PGM or PNG (colour becomes luma)\n"
           "  features --radius M IN\n"
           "      print the symmetry feature points (S points of both axes) as JSON\n"
           "  histogram --radius M IN [--plot OUT.png]\n"
           "      print the vertical symmetry histogram (S points per column) as JSON\n"
 #ifdef SYMLINE_CLI_LINES
-          "  lines    [--axis horizontal|vertical|both] [--radius M] [options] IN\n"
-          "      print the detected line segments as JSON on stdout\n"
-          "  overlay  [same options as lines] IN OUT.png\n"
+          "  lines    [--axis horizontal|vertical|both] [--radius M] [options] IN...\n"
+          "      print the detected line segments as JSON on stdout (or -o FILE); IN may\n"
+          "      be several images or folders: one JSON object per image\n"
+          "  overlay  [same options as lines] [--json FILE] IN OUT.png\n"
           "      draw lines (solid) and curves (dotted) over the frame\n"
           "  boundary [--cell N] IN [OUT.png]\n"
           "      print the field boundary as JSON (and draw it)\n"
@@ -64,9 +67,12 @@ static void usage(FILE *f)
           "Axis: 'horizontal' = symmetry about a horizontal axis, computed along columns\n"
           "(finds near-horizontal lines); 'vertical' = about a vertical axis, along rows.\n"
           "Radius M: 1..255. Images: binary PGM (P5, maxval 255); PNG when built with\n"
-          "libpng (colour is converted to luma Y = (299R + 587G + 114B + 500) / 1000).\n"
-          "OUT is written as PNG when its name ends in .png, otherwise as PGM.\n"
-          "Run 'symline COMMAND --help' for a command's options.\n"
+          "libpng, JPEG input when built with libturbojpeg (colour is converted to luma\n"
+          "Y = (299R + 587G + 114B + 500) / 1000). IN '-' reads stdin. OUT: by its\n"
+          "name, .pgm, .png, .ppm or .pnm ('-': PGM/PPM on stdout); OUT may also be\n"
+          "given as -o OUT. Options take --opt VALUE or --opt=VALUE; -- ends them.\n"
+          "Run 'symline COMMAND --help' for a command's options, 'symline --version'\n"
+          "for the version.\n"
           "\n"
           "Exit status: 0 ok, 1 processing error, 2 usage or input error.\n",
           f);
@@ -74,6 +80,8 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
+    /* A closed output pipe shows up as EPIPE on the write, handled where it happens. */
+    signal(SIGPIPE, SIG_IGN);
     if (argc < 2) {
         usage(stderr);
         return CLI_USAGE;
@@ -81,6 +89,10 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
         strcmp(argv[1], "help") == 0) {
         usage(stdout);
+        return CLI_OK;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("symline %s\n", SYMLINE_VERSION_STRING);
         return CLI_OK;
     }
     if (strcmp(argv[1], "symmetry") == 0) {

@@ -59,14 +59,48 @@ int muffopts_parse(muffopts *m, int argc, char **argv, int *i, char *err, size_t
     return 0;
 }
 
+/* Option names without "--": --method, then the table. */
+static const char *long_name(size_t k)
+{
+    return (k == 0u ? "--method" : opts[k - 1u].name) + 2;
+}
+
+size_t muffopts_longopts(struct option *out, size_t cap)
+{
+    size_t k, n = 0;
+    for (k = 0; k < 1u + sizeof opts / sizeof opts[0] && n < cap; k++, n++) {
+        out[n].name = long_name(k);
+        out[n].has_arg = required_argument;
+        out[n].flag = NULL;
+        out[n].val = MUFFOPTS_VAL + (int)k;
+    }
+    return n;
+}
+
+int muffopts_apply(muffopts *m, int code, const char *arg, char *err, size_t errlen)
+{
+    /* The argv form with the option and its value, so both parsers share one rule. */
+    char name[32];
+    char *argv[2];
+    int i = 0;
+    if (code < MUFFOPTS_VAL || code >= MUFFOPTS_VAL + 1 + (int)(sizeof opts / sizeof opts[0])) {
+        return 0;
+    }
+    snprintf(name, sizeof name, "--%s", long_name((size_t)(code - MUFFOPTS_VAL)));
+    argv[0] = name;
+    argv[1] = (char *)arg;
+    return muffopts_parse(m, 2, argv, &i, err, errlen) == 1 ? 1 : -1;
+}
+
 void muffopts_help(FILE *f)
 {
     symline_muff_config c;
     symline_muff_config_default(&c);
     fprintf(f,
             "  --method tracer|muff  tracer: trace neighbouring line points (default);\n"
-            "                      muff: Muff-space line finder (SPEC 5): line points vote\n"
-            "                      for pairs of border cells, peaks become segments\n"
+            "                      muff: the Muff-space line finder (the paper's first\n"
+            "                      method): line points vote for pairs of border cells,\n"
+            "                      peaks become segments\n"
             "  Muff space only (the line filter options above apply to both methods;\n"
             "  --min-length is the shortest segment):\n"
             "  --cell PX           border cell size, 1..64, 0 = width/80 (%u)\n"

@@ -5,6 +5,7 @@
 #ifndef SYMLINE_CLI_MUFFOPTS_H
 #define SYMLINE_CLI_MUFFOPTS_H
 
+#include <getopt.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -20,6 +21,16 @@ void muffopts_init(muffopts *m);
 /* Like detopts_parse(): 1 when argv[*i] was one of these options (value
  * consumed), 0 when not, -1 on a bad value (message in err). */
 int muffopts_parse(muffopts *m, int argc, char **argv, int *i, char *err, size_t errlen);
+
+/*
+ * The same options for getopt_long (as detopts_longopts(): each takes a
+ * value, val = MUFFOPTS_VAL + k): appends at most cap entries, returns how many.
+ */
+#define MUFFOPTS_VAL 0x4800
+size_t muffopts_longopts(struct option *out, size_t cap);
+
+/* Applies what getopt_long returned: 1 when code was one of these options, 0 when not, -1 on a bad value. */
+int muffopts_apply(muffopts *m, int code, const char *arg, char *err, size_t errlen);
 
 /* The option lines of a --help text. */
 void muffopts_help(FILE *f);

@@ -8,7 +8,7 @@
 #     segment count), F1 against a line mask where one exists, and stability F1 against
 #     the same frame with brightness x0.5, +40 and -40.
 # Every set is run with each filter side by side (default: the paper's A1-S filter
-# and the shipped default). Scoring: SPEC section 7, see docs/evaluation.md.
+# and the shipped default). Scoring: see docs/evaluation.md.
 #
 # usage: tools/eval/evaluate.sh DATA_DIR [options]
 #   --build DIR      build directory (default: REPO/build; configured and built when needed)
@@ -72,7 +72,7 @@ case $OUT in /*) ;; *) OUT=$(pwd)/$OUT ;; esac
 need_pkgs() {
     missing=
     for p in "$@"; do
-        dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+        dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || missing="$missing $p"
     done
     [ -z "$missing" ] && return 0
     echo "evaluate.sh: installing$missing" >&2
@@ -223,7 +223,7 @@ real_frames_table() {
     [ -n "$ANNOTATED" ] || return 0
     echo "## Real frames against hand ground truth ($FIELD)"
     echo
-    echo "The frames with NAME.lines.txt (hand annotations, SOURCES.md there). P, R, F1: SPEC 7"
+    echo "The frames with NAME.lines.txt (hand annotations, SOURCES.md there). P, R, F1: the"
     echo "scoring against NAME.lines.txt, .arcs.txt, .dontcare.txt. segs = reported segments."
     echo "frag = fragmentation: reported segments along each straight ground-truth piece of at"
     echo "least 40 px (a segment lies along one when at least 70 % and at least 8 of its samples"
@@ -299,7 +299,7 @@ fi
 echo "# symline line detection: evaluation"
 echo
 echo "Data: $DATA; rendered sets: seed $SEED, $COUNT images per set and size; build: $BIN"
-echo "Columns per filter: mean per-image F1, precision P, recall R (SPEC 7: samples every"
+echo "Columns per filter: mean per-image F1, precision P, recall R (samples every"
 echo "0.5 px, tolerance max(2, 3*width/640) px); classification of the detected pieces"
 echo "matched to ground truth: line = straight ground truth reported as kind line, curve ="
 echo "circle ground truth reported as kind curve, each as share of pieces / share weighted"

@@ -76,7 +76,7 @@ int ev_read_polylines(const char *path, int tag, int optional, ev_paths *out)
     return 0;
 }
 
-/* ---- a small JSON reader: just enough for SPEC section 7, skipping anything else ---- */
+/* ---- a small JSON reader: just enough for docs/format.md, skipping anything else ---- */
 
 typedef struct jp {
     const char *s;

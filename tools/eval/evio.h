@@ -1,7 +1,7 @@
 /*
- * Reading the evaluation inputs: ground-truth text files (formats of the shared
- * synth/README.md), detection JSON (SPEC section 7, as printed by `symline lines`)
- * and PGM headers. Host-only code.
+ * Reading the evaluation inputs: ground-truth text files and detection JSON (as
+ * printed by `symline lines`), both in the formats of docs/format.md, and PGM
+ * headers. Host-only code.
  */
 #ifndef SYMLINE_EVAL_EVIO_H
 #define SYMLINE_EVAL_EVIO_H

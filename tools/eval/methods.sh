@@ -122,7 +122,7 @@ setmean() { # mean over the synthetic sets of the per-set mean F1
 echo "# Tracer and Muff-space line finder"
 echo
 echo "Data: $DATA; rendered sets: seed $SEED, $COUNT images per set and size; build: $BIN."
-echo "F1, precision P and recall R: mean per image (SPEC 7 scoring, symline-score gt)."
+echo "F1, precision P and recall R: mean per image (the scoring of docs/evaluation.md, symline-score gt)."
 echo
 echo "| set | n | tracer F1 | P | R | muff F1 | P | R |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|"

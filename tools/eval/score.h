@@ -1,5 +1,5 @@
 /*
- * The scorer of SPEC section 7: samples every 0.5 px along detections and ground
+ * The scorer of docs/evaluation.md: samples every 0.5 px along detections and ground
  * truth, tolerance max(2, 3*width/640) px, precision, recall and F1 per image,
  * plus the line/curve classification counts defined in docs/evaluation.md.
  */

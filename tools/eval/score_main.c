@@ -1,5 +1,5 @@
 /*
- * symline-score: scores `symline lines` detections (SPEC section 7) against
+ * symline-score: scores `symline lines` detections (docs/format.md) against
  * ground truth, a binary line mask, or another detection of the same frame.
  */
 #include <stdio.h>

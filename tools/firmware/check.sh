@@ -22,6 +22,7 @@
 #
 #   tools/firmware/check.sh            build dirs ./build-fw-*
 #   SYMLINE_FW_BUILD=/tmp/fw tools/firmware/check.sh   build dirs /tmp/fw-*
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -u
 cd "$(dirname "$0")/../.." || exit 2
 root=$(pwd)
@@ -50,7 +51,7 @@ step "packages"
 need=""
 for p in cmake make gcc libc6-dev binutils gcc-arm-none-eabi libnewlib-arm-none-eabi \
          qemu-system-arm gcc-riscv64-unknown-elf cppcheck clang-tidy; do
-    dpkg -s "$p" >/dev/null 2>&1 || need="$need $p"
+    dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || need="$need $p"
 done
 if [ -n "$need" ]; then
     echo "  installing:$need"

@@ -1,5 +1,6 @@
 /*
- * symline-ref — a deliberately plain reference of SPEC §2–3, written straight
+ * symline-ref — a deliberately plain reference of the operator and its extrema
+ * (docs/algorithm.md), written straight
  * from the formulas for clarity, never for speed. The golden files under
  * tests/golden/ are produced by it, and the tests compare the optimised core
  * against it bit for bit.
@@ -8,8 +9,8 @@
  *   symline-ref features|histogram M IN.pgm OUT.json
  *
  * OUT is a P5 PGM for symmetry and extrema; for energy it is a text file with
- * one line per image row of decimal E values. features and histogram (SPEC
- * §6) write the JSON of `symline features` / `symline histogram`, taken from
+ * one line per image row of decimal E values. features and histogram
+ * (docs/format.md) write the JSON of `symline features` / `symline histogram`, taken from
  * the two whole extrema maps.
  * It shares no code with lib/: even the PGM reader is its own.
  */
@@ -112,7 +113,7 @@ static void put(unsigned char *out, const gray *g, int vertical, int line, int i
     }
 }
 
-/* The whole extrema map of one axis (0, 128, 255 per pixel), straight from SPEC §3. */
+/* The whole extrema map of one axis (0, 128, 255 per pixel), straight from docs/algorithm.md. */
 static unsigned char *extrema_map(const gray *g, int vertical, int m)
 {
     int n = seq_len(g, vertical), lines = vertical ? g->h : g->w;
@@ -142,7 +143,7 @@ static unsigned char *extrema_map(const gray *g, int vertical, int m)
     return out;
 }
 
-/* SPEC §6: feature points (S in both maps, raster order) or the vertical histogram. */
+/* docs/format.md: feature points (S in both maps, raster order) or the vertical histogram. */
 static int paper_features(const char *cmd, int m, const char *in, const char *outpath)
 {
     gray g;

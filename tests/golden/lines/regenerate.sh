@@ -4,6 +4,7 @@
 # Usage: tests/golden/lines/regenerate.sh [BUILD_DIR]
 # (also: cmake --build BUILD_DIR --target golden-lines). Review the diff before
 # committing: a change here means the detector's output changed.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-$here/../../../build}
