@@ -14,6 +14,7 @@
 #include "imgio.h"
 #include "overlay.h"
 #include "segjson.h"
+#include "symline/intersections.h"
 #include "symline/version.h"
 
 /* Detector memory, sized for the current frame size (sources may change it: replay). */
@@ -24,6 +25,8 @@ typedef struct detector {
     symline_segment *segs;
     symline_point *pts;
     symline_result res;
+    symline_intersection items[256]; /* where lines meet, as `symline lines` reports them */
+    symline_intersection_result ix;
 } detector;
 
 static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint32_t h)
@@ -61,6 +64,8 @@ static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint
     d->res.segment_cap = 8192u;
     d->res.points = d->pts;
     d->res.point_cap = point_cap;
+    d->ix.items = d->items;
+    d->ix.cap = sizeof d->items / sizeof d->items[0];
     return 0;
 }
 
@@ -88,7 +93,8 @@ static int emit_frame(line_writer *lw, const capsrc_frame *f, const detector *d,
 {
     size_t i, n;
     rewind(lw->mem);
-    if (segjson_write(lw->mem, f->width, f->height, &d->res) != 0 || fflush(lw->mem) != 0) {
+    if (segjson_write_ix(lw->mem, f->width, f->height, &d->res, &d->ix) != 0 ||
+        fflush(lw->mem) != 0) {
         return -1;
     }
     lw->len = (size_t)ftell(lw->mem);
@@ -192,12 +198,13 @@ static int record_frame(const char *dir, const capsrc_frame *f)
     return 0;
 }
 
-static int snapshot_frame(const char *dir, const capsrc_frame *f, const symline_result *r)
+static int snapshot_frame(const char *dir, const capsrc_frame *f, const detector *d)
 {
     char path[4096], err[512];
     snprintf(path, sizeof path, "%s/snap%06llu.%s", dir, (unsigned long long)f->number,
              imgio_have_png() ? "png" : "ppm");
-    if (overlay_write(path, f->luma, f->width, f->height, f->stride, r, err, sizeof err) != 0) {
+    if (overlay_write_ix(path, f->luma, f->width, f->height, f->stride, &d->res, &d->ix, err,
+                         sizeof err) != 0) {
         fprintf(stderr, "symline-capture: %s\n", err);
         return -1;
     }
@@ -265,6 +272,11 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
         img.data = frame.luma;
         t_det0 = capsrc_now_ns();
         st = symline_detect(&img, o->cfg, det.ws, det.ws_size, &det.res);
+        if (st == SYMLINE_OK) {
+            symline_intersection_config icfg;
+            symline_intersection_config_default(&icfg);
+            st = symline_intersections(&det.res, &icfg, &det.ix);
+        }
         t_det1 = capsrc_now_ns();
         if (st != SYMLINE_OK) {
             fprintf(stderr, "symline-capture: error: detection failed on frame %llu: %s\n",
@@ -281,7 +293,7 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
         if ((o->record_every && frame.number % o->record_every == 0 &&
              record_frame(o->record_dir, &frame) != 0) ||
             (o->snapshot_every && frame.number % o->snapshot_every == 0 &&
-             snapshot_frame(o->snapshot_dir, &frame, &det.res) != 0)) {
+             snapshot_frame(o->snapshot_dir, &frame, &det) != 0)) {
             sigprocmask(SIG_SETMASK, &old_set, NULL);
             stop_reason = "write error";
             status = -1;

@@ -4,6 +4,7 @@
  */
 #include "overlay.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -66,8 +67,35 @@ static int32_t q8_round(int32_t v)
     return (v >= 0) ? (v + 128) >> 8 : -((-v + 128) >> 8);
 }
 
+/* An intersection: its rays as short spokes and a square around the point,
+ * green for L, orange for T, magenta for X. */
+static void draw_intersection(imgio_rgb *o, const symline_intersection *it)
+{
+    static const uint8_t COLOUR[3][3] = {{60, 255, 60}, {255, 160, 0}, {255, 60, 255}};
+    const uint8_t *c = COLOUR[it->type < 3u ? it->type : 2u];
+    const int32_t cx = q8_round(it->x), cy = q8_round(it->y);
+    const int32_t h = 3 + 2 * pen_radius(o), spoke = 6 * h;
+    uint32_t k, phase = 0u;
+    for (k = 0; k < it->ray_count; k++) {
+        const double a = (double)it->rays[k] / 256.0 * 3.14159265358979 / 180.0;
+        draw_line(o, cx, cy, cx + (int32_t)lround(spoke * cos(a)),
+                  cy + (int32_t)lround(spoke * sin(a)), c, 0, &phase);
+    }
+    draw_line(o, cx - h, cy - h, cx + h, cy - h, c, 0, &phase);
+    draw_line(o, cx + h, cy - h, cx + h, cy + h, c, 0, &phase);
+    draw_line(o, cx + h, cy + h, cx - h, cy + h, c, 0, &phase);
+    draw_line(o, cx - h, cy + h, cx - h, cy - h, c, 0, &phase);
+}
+
 int overlay_write(const char *path, const uint8_t *gray, uint32_t width, uint32_t height,
                   uint32_t stride, const symline_result *r, char *err, size_t errlen)
+{
+    return overlay_write_ix(path, gray, width, height, stride, r, NULL, err, errlen);
+}
+
+int overlay_write_ix(const char *path, const uint8_t *gray, uint32_t width, uint32_t height,
+                     uint32_t stride, const symline_result *r,
+                     const symline_intersection_result *ix, char *err, size_t errlen)
 {
     static const uint8_t RED[3] = {255, 40, 40};
     static const uint8_t CYAN[3] = {0, 230, 255};
@@ -107,6 +135,9 @@ int overlay_write(const char *path, const uint8_t *gray, uint32_t width, uint32_
         uint32_t phase = 0u;
         const symline_field_vertex *a = &r->field.v[k - 1u], *b = &r->field.v[k];
         draw_line(&o, a->x, a->y, b->x, b->y, YELLOW, 0, &phase);
+    }
+    for (i = 0; ix != NULL && i < ix->count; i++) {
+        draw_intersection(&o, &ix->items[i]);
     }
     rc = imgio_write_rgb(path, &o, err, errlen);
     free(o.px);

@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 #include "symline/detect.h"
+#include "symline/intersections.h"
 
 /*
  * Writes the gray frame (width x height, `stride` bytes per row), dimmed to
@@ -20,5 +21,12 @@
  */
 int overlay_write(const char *path, const uint8_t *gray, uint32_t width, uint32_t height,
                   uint32_t stride, const symline_result *r, char *err, size_t errlen);
+
+/* The same, and the intersections of ix (when not NULL) over the segments: each
+ * ray a short spoke from the point, and a small square around it, green for L,
+ * orange for T, magenta for X. */
+int overlay_write_ix(const char *path, const uint8_t *gray, uint32_t width, uint32_t height,
+                     uint32_t stride, const symline_result *r,
+                     const symline_intersection_result *ix, char *err, size_t errlen);
 
 #endif

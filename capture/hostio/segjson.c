@@ -13,6 +13,41 @@ static void put_q8(FILE *f, int32_t v)
             hundredths % 100u);
 }
 
+/* Q8 degrees as degrees with two places. */
+static void put_deg(FILE *f, uint32_t v)
+{
+    uint32_t hundredths = (uint32_t)(((uint64_t)v * 100u + 128u) >> 8);
+    if (hundredths >= 36000u) {
+        hundredths -= 36000u; /* 359.998 rounds to 0.00, not 360.00 */
+    }
+    fprintf(f, "%u.%02u", hundredths / 100u, hundredths % 100u);
+}
+
+static void put_intersections(FILE *f, const symline_intersection_result *ix)
+{
+    static const char TYPES[3] = {'L', 'T', 'X'};
+    uint32_t i, k;
+    fputs(",\n \"intersections\": [", f);
+    for (i = 0; i < ix->count; i++) {
+        const symline_intersection *it = &ix->items[i];
+        fputs(i == 0u ? "\n  {\"x\": " : ",\n  {\"x\": ", f);
+        put_q8(f, it->x);
+        fputs(", \"y\": ", f);
+        put_q8(f, it->y);
+        fprintf(f, ", \"type\": \"%c\", \"rays\": [", TYPES[it->type < 3u ? it->type : 2u]);
+        for (k = 0; k < it->ray_count; k++) {
+            fputs(k == 0u ? "" : ", ", f);
+            put_deg(f, it->rays[k]);
+        }
+        fputs("], \"segments\": [", f);
+        for (k = 0; k < it->segment_count; k++) {
+            fprintf(f, "%s%u", k == 0u ? "" : ", ", it->segments[k]);
+        }
+        fputs("]}", f);
+    }
+    fputs(ix->count ? "\n ]" : "]", f);
+}
+
 void segjson_put_string(FILE *f, const char *s)
 {
     fputc('"', f);
@@ -61,11 +96,23 @@ static void put_vertex(FILE *f, const symline_point *p, uint32_t n, uint32_t k, 
 
 int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result *r)
 {
-    return segjson_write_named(f, NULL, width, height, r);
+    return segjson_write_named_ix(f, NULL, width, height, r, NULL);
 }
 
 int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t height,
                         const symline_result *r)
+{
+    return segjson_write_named_ix(f, file, width, height, r, NULL);
+}
+
+int segjson_write_ix(FILE *f, uint32_t width, uint32_t height, const symline_result *r,
+                     const symline_intersection_result *ix)
+{
+    return segjson_write_named_ix(f, NULL, width, height, r, ix);
+}
+
+int segjson_write_named_ix(FILE *f, const char *file, uint32_t width, uint32_t height,
+                           const symline_result *r, const symline_intersection_result *ix)
 {
     uint32_t i, k;
     fputc('{', f);
@@ -114,6 +161,9 @@ int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t heig
                     (long)r->field.v[k].y);
         }
         fputc(']', f);
+    }
+    if (ix != NULL) {
+        put_intersections(f, ix);
     }
     fputs("}\n", f);
     return ferror(f) ? -1 : 0;

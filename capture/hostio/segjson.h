@@ -9,6 +9,7 @@
 #include <stdio.h>
 
 #include "symline/detect.h"
+#include "symline/intersections.h"
 
 /*
  * Writes one JSON object for the result of a width x height frame to f:
@@ -28,6 +29,17 @@ int segjson_write(FILE *f, uint32_t width, uint32_t height, const symline_result
 /* The same object with "file": NAME as its first key (when file is not NULL). */
 int segjson_write_named(FILE *f, const char *file, uint32_t width, uint32_t height,
                         const symline_result *r);
+
+/*
+ * The same with the key "intersections" after the others when ix is not NULL:
+ *   "intersections": [{"x":..,"y":..,"type":"L"|"T"|"X","rays":[deg,..],
+ *                      "segments":[i,..]}, ...]
+ * positions in pixels, rays in degrees (two decimals), ascending.
+ */
+int segjson_write_ix(FILE *f, uint32_t width, uint32_t height, const symline_result *r,
+                     const symline_intersection_result *ix);
+int segjson_write_named_ix(FILE *f, const char *file, uint32_t width, uint32_t height,
+                           const symline_result *r, const symline_intersection_result *ix);
 
 /* s as a JSON string: quoted, with quotes, backslashes and control characters escaped. */
 void segjson_put_string(FILE *f, const char *s);

@@ -1,8 +1,9 @@
 /*
  * The detector's golden JSON (tests/golden/lines/) reproduced on the target:
  * every bundled real frame (608x800, in flash) through symline_detect() with
- * the default configuration, and one with the paper filter, written with the
- * host programs' JSON writer (capture/hostio/segjson.c) over semihosting.
+ * the default configuration, and one with the paper filter, then
+ * symline_intersections() with its defaults, written with the host
+ * programs' JSON writer (capture/hostio/segjson.c) over semihosting.
  * tools/firmware/check.sh splits the output at the "=== NAME" lines and
  * compares each part byte for byte with the golden file.
  */
@@ -11,6 +12,7 @@
 
 #include "segjson.h"
 #include "symline/detect.h"
+#include "symline/intersections.h"
 
 #include "fwdata.h"
 
@@ -21,15 +23,19 @@ extern const fw_frame fw_msl_20250403_r4_cam3_20250403_221433;
 #define WS_BYTES (64u * 1024u)
 #define SEG_CAP 2048u
 #define PT_CAP 65536u
+#define IX_CAP 256u
 
 static uint64_t ws[WS_BYTES / 8u];
 static symline_segment segs[SEG_CAP];
 static symline_point pts[PT_CAP];
+static symline_intersection items[IX_CAP];
 
 static int run(const char *name, const fw_frame *f, int paper)
 {
     const symline_image img = {f->width, f->height, f->width, f->px};
     symline_result res = {segs, SEG_CAP, 0u, pts, PT_CAP, 0u, 0u, {0}, 0u};
+    symline_intersection_result ix = {items, IX_CAP, 0u, 0u};
+    symline_intersection_config icfg;
     symline_config cfg;
     size_t need;
     symline_status st;
@@ -51,7 +57,14 @@ static int run(const char *name, const fw_frame *f, int paper)
         printf("symline_detect: %s\n", symline_status_str(st));
         return 1;
     }
-    return segjson_write(stdout, f->width, f->height, &res) != 0 || res.truncated;
+    symline_intersection_config_default(&icfg);
+    st = symline_intersections(&res, &icfg, &ix);
+    if (st != SYMLINE_OK) {
+        printf("symline_intersections: %s\n", symline_status_str(st));
+        return 1;
+    }
+    return segjson_write_ix(stdout, f->width, f->height, &res, &ix) != 0 || res.truncated ||
+           ix.truncated;
 }
 
 int main(void)

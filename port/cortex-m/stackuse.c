@@ -13,6 +13,7 @@
 
 #include "symline/detect.h"
 #include "symline/extrema.h"
+#include "symline/intersections.h"
 #include "symline/symmetry.h"
 
 #include "fwdata.h"
@@ -26,6 +27,7 @@ static uint64_t ws[65536u / 8u];
 static uint8_t out[320u * 240u];
 static symline_segment segs[256];
 static symline_point pts[16384];
+static symline_intersection items[64];
 
 static inline uintptr_t stack_pointer(void)
 {
@@ -57,6 +59,8 @@ int main(void)
     const symline_image img = {f->width, f->height, f->width, f->px};
     const uint32_t n = f->width * f->height;
     symline_config def, paper;
+    symline_intersection_config icfg;
+    symline_intersection_result ix = {items, 64u, 0u, 0u};
     symline_result r1 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
     symline_result r2 = {segs, 256u, 0u, pts, 16384u, 0u, 0u, {0}, 0u};
     int bad = 0;
@@ -70,5 +74,7 @@ int main(void)
             symline_extrema(&img, SYMLINE_AXIS_HORIZONTAL, 3u, out, f->width, n, ws, sizeof ws));
     MEASURE("symline_detect", symline_detect(&img, &def, ws, sizeof ws, &r1));
     MEASURE("symline_detect", symline_detect(&img, &paper, ws, sizeof ws, &r2));
+    symline_intersection_config_default(&icfg);
+    MEASURE("symline_intersections", symline_intersections(&r2, &icfg, &ix));
     return bad;
 }

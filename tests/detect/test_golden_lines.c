@@ -37,6 +37,9 @@ static void check_frame(const char *name, int paper)
     symline_image img;
     symline_config cfg;
     symline_result r;
+    symline_intersection_config icfg;
+    symline_intersection items[256];
+    symline_intersection_result ix = {items, 256u, 0u, 0u};
     size_t wsn, got_len, want_len;
     void *ws;
     FILE *out, *want;
@@ -64,7 +67,10 @@ static void check_frame(const char *name, int paper)
     assert_true(r.segment_count > 0u);
     out = tmpfile();
     assert_non_null(out);
-    assert_int_equal(segjson_write(out, g.width, g.height, &r), 0);
+    symline_intersection_config_default(&icfg);
+    assert_int_equal(symline_intersections(&r, &icfg, &ix), SYMLINE_OK);
+    assert_int_equal(ix.truncated, 0);
+    assert_int_equal(segjson_write_ix(out, g.width, g.height, &r, &ix), 0);
     got_s = slurp(out, &got_len);
     snprintf(path, sizeof path, "%s/lines/%s%s.json", SYMLINE_GOLDEN, name, paper ? ".paper" : "");
     want = fopen(path, "rb");

@@ -2,6 +2,7 @@
  * `symline lines` and `symline overlay`: the line detector on images.
  */
 #include <errno.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +14,7 @@
 #include "cli.h"
 #include "muffopts.h"
 #include "symline/detect.h"
+#include "symline/intersections.h"
 
 typedef struct lines_args {
     symline_config cfg;
@@ -21,7 +23,28 @@ typedef struct lines_args {
     const char *out;   /* overlay: the image */
     const char *json;  /* where the JSON goes: lines: stdout unless -o; overlay: only with --json */
     uint32_t repeat;   /* detections run on each frame (the output is printed once) */
+    symline_intersection_config icfg;
+    int intersections; /* 0 with --no-intersections */
 } lines_args;
+
+/* Intersection options: name, range, field of symline_intersection_config. */
+typedef struct ix_opt {
+    const char *name;
+    uint32_t lo, hi;
+    size_t offset;
+} ix_opt;
+
+static const ix_opt ix_opts[] = {
+    {"ix-min-angle", 0, 90u * 256u, offsetof(symline_intersection_config, min_angle_q8)},
+    {"ix-gap", 0, 65536u, offsetof(symline_intersection_config, gap_q8)},
+    {"ix-gap-pct", 0, 100u, offsetof(symline_intersection_config, gap_pct)},
+    {"ix-arm", 256u, 65536u, offsetof(symline_intersection_config, arm_q8)},
+    {"ix-merge", 0, 65536u, offsetof(symline_intersection_config, merge_q8)},
+    {"ix-min-length", 0, 65535u << 8, offsetof(symline_intersection_config, min_length_q8)},
+};
+#define IX_OPTS (sizeof ix_opts / sizeof ix_opts[0])
+#define IX_OPT_VAL 0x4900 /* getopt values of the intersection options: IX_OPT_VAL + index */
+#define NO_IX_VAL 0x48FF  /* --no-intersections */
 
 static void lines_usage(FILE *f, const char *cmd)
 {
@@ -35,8 +58,10 @@ static void lines_usage(FILE *f, const char *cmd)
     muffopts_help(f);
     if (ov) {
         fprintf(f, "  IN                  binary PGM, PNG or JPEG (colour becomes luma); - reads stdin\n"
-                   "  OUT, -o OUT         the frame in colour with lines (solid red) and curves\n"
-                   "                      (dotted cyan): .png, .ppm or .pnm; - writes PPM to stdout\n"
+                   "  OUT, -o OUT         the frame in colour with lines (solid red), curves\n"
+                   "                      (dotted cyan) and intersections (a square with a spoke\n"
+                   "                      per ray: L green, T orange, X magenta): .png, .ppm or\n"
+                   "                      .pnm; - writes PPM to stdout\n"
                    "  --json FILE         also write the detection as JSON (keys: docs/format.md);\n"
                    "                      - is stdout\n");
     } else {
@@ -47,6 +72,10 @@ static void lines_usage(FILE *f, const char *cmd)
                    "Prints one JSON object per input (keys: docs/format.md); with several inputs\n"
                    "or a folder, each object starts with \"file\": its input.\n");
     }
+    fprintf(f, "  --no-intersections  leave out where lines meet (JSON key \"intersections\")\n"
+               "  --ix-min-angle Q8DEG, --ix-gap Q8PX, --ix-gap-pct PCT, --ix-arm Q8PX,\n"
+               "  --ix-merge Q8PX, --ix-min-length Q8PX\n"
+               "                      intersection settings (include/symline/intersections.h)\n");
     fprintf(f, "  --repeat N          run the detection N times (1..1000000; default 1) and\n"
                "                      print it once: (cost(N=11) - cost(N=1)) / 10 is one\n"
                "                      detection (tools/bench/icount.sh)\n"
@@ -57,7 +86,7 @@ static void lines_usage(FILE *f, const char *cmd)
 /* 0 ok, 1 --help shown, CLI_USAGE on error. */
 static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
 {
-    struct option longopts[80];
+    struct option longopts[96];
     size_t n;
     int c;
     const char *out_opt = NULL;
@@ -66,9 +95,15 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
     detopts_init(&d);
     memset(a, 0, sizeof *a);
     a->repeat = 1u;
+    a->intersections = 1;
+    symline_intersection_config_default(&a->icfg);
     muffopts_init(&a->method);
     n = detopts_longopts(longopts, 60);
-    n += muffopts_longopts(longopts + n, 75u - n); /* room for 4 more and the end */
+    n += muffopts_longopts(longopts + n, 84u - n); /* room for 11 more and the end */
+    longopts[n++] = (struct option){"no-intersections", no_argument, NULL, NO_IX_VAL};
+    for (c = 0; c < (int)IX_OPTS; c++) {
+        longopts[n++] = (struct option){ix_opts[c].name, required_argument, NULL, IX_OPT_VAL + c};
+    }
     longopts[n++] = (struct option){"output", required_argument, NULL, 'o'};
     longopts[n++] = (struct option){"json", required_argument, NULL, 'j'};
     longopts[n++] = (struct option){"repeat", required_argument, NULL, 'R'};
@@ -86,6 +121,15 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
             if (detopts_u32(optarg, 1u, 1000000u, &a->repeat) != 0) {
                 return cli_error("%s: --repeat needs a number 1..1000000", argv[0]);
             }
+        } else if (c == NO_IX_VAL) {
+            a->intersections = 0;
+        } else if (c >= IX_OPT_VAL && c < IX_OPT_VAL + (int)IX_OPTS) {
+            const ix_opt *o = &ix_opts[c - IX_OPT_VAL];
+            uint32_t v;
+            if (detopts_u32(optarg, o->lo, o->hi, &v) != 0) {
+                return cli_error("%s: --%s needs a number in %u..%u", argv[0], o->name, o->lo, o->hi);
+            }
+            memcpy((char *)&a->icfg + o->offset, &v, sizeof v);
         } else if (c == 'j' && overlay) {
             a->json = optarg;
         } else if (c == 'j') {
@@ -132,6 +176,8 @@ typedef struct det_buffers {
     void *ws;
     size_t ws_size;
     symline_result res;
+    symline_intersection items[256];
+    symline_intersection_result ix; /* where the lines meet, unless left out */
 } det_buffers;
 
 /* The tracer (symline_detect) or the Muff-space finder with its accumulator. */
@@ -154,8 +200,9 @@ static symline_status run_method(const symline_config *cfg, const muffopts *meth
     return st;
 }
 
+/* The detection of one frame, then (icfg not NULL) its intersections. */
 static int detect_one(const char *cmd, const imgio_gray *in, const symline_config *cfg, muffopts *method,
-                      uint32_t repeat, det_buffers *b)
+                      uint32_t repeat, const symline_intersection_config *icfg, det_buffers *b)
 {
     uint32_t r;
     symline_image view;
@@ -197,6 +244,11 @@ static int detect_one(const char *cmd, const imgio_gray *in, const symline_confi
     for (r = 0u; r < repeat && st == SYMLINE_OK; r++) {
         st = run_method(cfg, method, &view, b->ws, b->ws_size, &b->res);
     }
+    if (st == SYMLINE_OK && icfg != NULL) {
+        b->ix.items = b->items;
+        b->ix.cap = sizeof b->items / sizeof b->items[0];
+        st = symline_intersections(&b->res, icfg, &b->ix);
+    }
     if (st != SYMLINE_OK) {
         cli_error("%s: %s", cmd, symline_status_str(st));
         return CLI_FAIL;
@@ -205,10 +257,11 @@ static int detect_one(const char *cmd, const imgio_gray *in, const symline_confi
 }
 
 /* The JSON of one input into f; CLI_OK, or what cli_write_failed() says. */
-static int write_json(FILE *f, const char *name, const char *file, const imgio_gray *in, const symline_result *r)
+static int write_json(FILE *f, const char *name, const char *file, const imgio_gray *in, const symline_result *r,
+                      const symline_intersection_result *ix)
 {
     errno = 0;
-    if (segjson_write_named(f, file, in->width, in->height, r) != 0 || fflush(f) != 0) {
+    if (segjson_write_named_ix(f, file, in->width, in->height, r, ix) != 0 || fflush(f) != 0) {
         return cli_write_failed(name);
     }
     return CLI_OK;
@@ -253,9 +306,10 @@ static int run_lines(int argc, char **argv, int overlay)
             rc = cli_error("%s", err);
             break;
         }
-        rc = detect_one(argv[0], &in, &a.cfg, &a.method, a.repeat, &b);
+        rc = detect_one(argv[0], &in, &a.cfg, &a.method, a.repeat, a.intersections ? &a.icfg : NULL,
+                        &b);
         if (rc == CLI_OK && json != NULL) {
-            rc = write_json(json, json_name, file, &in, &b.res);
+            rc = write_json(json, json_name, file, &in, &b.res, a.intersections ? &b.ix : NULL);
             if (rc == CLI_OK && errno == EPIPE) {
                 imgio_free(&in);
                 break; /* closed pipe: stop quietly */
@@ -263,7 +317,8 @@ static int run_lines(int argc, char **argv, int overlay)
         }
         errno = 0;
         if (rc == CLI_OK && overlay &&
-            overlay_write(a.out, in.px, in.width, in.height, in.width, &b.res, err, sizeof err) != 0) {
+            overlay_write_ix(a.out, in.px, in.width, in.height, in.width, &b.res,
+                             a.intersections ? &b.ix : NULL, err, sizeof err) != 0) {
             rc = cli_image_write_failed(err);
         }
         imgio_free(&in);
