@@ -167,6 +167,12 @@ symline_axis sl_axis_of(const symline_config *c, uint32_t index)
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
 }
 
+/* Workspace of the detection's own state (sl_run), within the fixed part of
+ * SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) on every target. */
+#define SL_RUN_WS_SIZE (sl_align_up(sizeof(sl_run)) + SL_ALIGN)
+typedef char
+    sl_run_fits_ws_budget[(sizeof(sl_run) + 2u * SL_ALIGN <= SYMLINE_DETECT_WS_RUN) ? 1 : -1];
+
 /* Workspace of the per-column rows of the field boundary (sl_run.field_rows). */
 static size_t field_rows_size(uint32_t width)
 {
@@ -203,7 +209,8 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
         const size_t st = field_rows_size(width) + sl_align_up(SL_STATS_HIST_BYTES) + SL_ALIGN;
         best = st > best ? st : best;
     }
-    return best;
+    /* The detection's own state comes first, for the whole call. */
+    return best + SL_RUN_WS_SIZE;
 }
 
 /* The adaptive thresholds' statistics: of the field where a boundary was
@@ -264,7 +271,8 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
                              size_t ws_size, symline_result *out)
 {
     symline_status st = symline_image_check(img);
-    sl_run d;
+    uint8_t *cur = (uint8_t *)ws, *end;
+    sl_run *d;
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -282,30 +290,37 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
     if (ws_size < symline_detect_workspace_size(img->width, img->height, cfg)) {
         return SYMLINE_ERR_BUFFER;
     }
-    d.cfg = cfg;
-    d.img = img;
-    d.r = out;
-    d.nseg = 0u;
-    d.prev_seg = 0u;
-    d.npts = 0u;
+    /* The run's state lives in the workspace, not on the stack: the deepest
+     * path of a detection runs below this call. */
+    end = cur + ws_size;
+    d = (sl_run *)sl_carve(&cur, end, sizeof(sl_run));
+    if (d == NULL) {
+        return SYMLINE_ERR_BUFFER; /* not reached: the workspace size was checked */
+    }
+    d->cfg = cfg;
+    d->img = img;
+    d->r = out;
+    d->nseg = 0u;
+    d->prev_seg = 0u;
+    d->npts = 0u;
     out->points_needed = 0u; /* raised by every pass (pass.c) */
-    d.truncated = false;
-    d.stats.mean = 0u;
-    d.stats.sigma_q4 = 0u;
+    d->truncated = false;
+    d->stats.mean = 0u;
+    d->stats.sigma_q4 = 0u;
     out->field.count = 0u;
     if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
         SL_STAGE(FIELD);
-        sl_field_run(img, &cfg->field, (uint8_t *)ws, ws_size, &out->field);
+        sl_field_run(img, &cfg->field, cur, (size_t)(end - cur), &out->field);
     }
     if (cfg->adaptive) {
         SL_STAGE(STATS);
         /* Detections kept above the field are measured against the whole frame. */
-        field_stats(img, cfg->field_boundary == SYMLINE_FIELD_DROP ? &out->field : NULL,
-                    (uint8_t *)ws, ws_size, &d.stats);
+        field_stats(img, cfg->field_boundary == SYMLINE_FIELD_DROP ? &out->field : NULL, cur,
+                    (size_t)(end - cur), &d->stats);
     }
-    run_passes(cfg, (uint8_t *)ws, ws_size, &d);
-    out->point_count = d.npts;
-    out->segment_count = d.nseg;
+    run_passes(cfg, cur, (size_t)(end - cur), d);
+    out->point_count = d->npts;
+    out->segment_count = d->nseg;
     SL_STAGE(MERGE);
     if (cfg->merge_gap != 0u) {
         const uint32_t gap =
@@ -316,7 +331,7 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
     if (cfg->curve_bend_q8 != 0u) {
         sl_curve_join(out);
     }
-    out->truncated = d.truncated;
+    out->truncated = d->truncated;
     return SYMLINE_OK;
 }
 

@@ -287,10 +287,12 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
  * than once.
  */
 #define SYMLINE_DETECT_WORKSPACE_SIZE(width, height, radius, a_distance, levels)                   \
-    SYMLINE_DETECT_WS_MAX_(SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels) +  \
-                               2u * (size_t)(width) + 16u,                                         \
-                           SYMLINE_DETECT_WS_MAX_(2u * (size_t)(width) + 1056u,                    \
-                                                  SYMLINE_DETECT_WS_FIELD_(width, height)))
+    (size_t) SYMLINE_DETECT_WS_RUN +                                                               \
+        SYMLINE_DETECT_WS_MAX_(                                                                    \
+            SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels) +                 \
+                2u * (size_t)(width) + 16u,                                                        \
+            SYMLINE_DETECT_WS_MAX_(2u * (size_t)(width) + 1056u,                                   \
+                                   SYMLINE_DETECT_WS_FIELD_(width, height)))
 /* The passes over axes and scales (lib/pass.h), the largest of them. */
 #define SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels)                       \
     ((size_t)SYMLINE_DETECT_WS_FIXED + (size_t)4u * ((size_t)(height) + 1u) +                      \
@@ -321,6 +323,8 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
          ? ((size_t)(width) / 2u) * (21u + 3u * (size_t)(a_distance) + 4u * (size_t)(radius)) +    \
                2u * (size_t)(width)                                                                \
          : (size_t)0u)
+/* Bytes of the detection's own state within that bound (checked when the library is compiled). */
+#define SYMLINE_DETECT_WS_RUN 96u
 /* Bytes of a pass's fixed state within that bound (checked when the library is compiled). */
 #define SYMLINE_DETECT_WS_FIXED 512u
 #define SYMLINE_DETECT_WS_MAX_(a, b) ((a) > (b) ? (a) : (b))
