@@ -170,8 +170,9 @@ symline_axis sl_axis_of(const symline_config *c, uint32_t index)
 /* Workspace of the detection's own state (sl_run), within the fixed part of
  * SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) on every target. */
 #define SL_RUN_WS_SIZE (sl_align_up(sizeof(sl_run)) + SL_ALIGN)
-typedef char
-    sl_run_fits_ws_budget[(sizeof(sl_run) + 2u * SL_ALIGN <= SYMLINE_DETECT_WS_RUN) ? 1 : -1];
+typedef char sl_run_fits_ws_budget[(sizeof(sl_run) + (size_t)2u * SL_ALIGN <= SYMLINE_DETECT_WS_RUN)
+                                       ? 1
+                                       : -1];
 
 /* Workspace of the per-column rows of the field boundary (sl_run.field_rows). */
 static size_t field_rows_size(uint32_t width)

@@ -287,12 +287,11 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
  * than once.
  */
 #define SYMLINE_DETECT_WORKSPACE_SIZE(width, height, radius, a_distance, levels)                   \
-    (size_t) SYMLINE_DETECT_WS_RUN +                                                               \
-        SYMLINE_DETECT_WS_MAX_(                                                                    \
-            SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels) +                 \
-                2u * (size_t)(width) + 16u,                                                        \
-            SYMLINE_DETECT_WS_MAX_(2u * (size_t)(width) + 1056u,                                   \
-                                   SYMLINE_DETECT_WS_FIELD_(width, height)))
+    ((size_t)SYMLINE_DETECT_WS_RUN +                                                               \
+     SYMLINE_DETECT_WS_MAX_(SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels) + \
+                                2u * (size_t)(width) + 16u,                                        \
+                            SYMLINE_DETECT_WS_MAX_(2u * (size_t)(width) + 1056u,                   \
+                                                   SYMLINE_DETECT_WS_FIELD_(width, height))))
 /* The passes over axes and scales (lib/pass.h), the largest of them. */
 #define SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels)                       \
     ((size_t)SYMLINE_DETECT_WS_FIXED + (size_t)4u * ((size_t)(height) + 1u) +                      \
