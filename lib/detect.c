@@ -268,6 +268,19 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
     }
 }
 
+symline_status sl_config_ws_check(const symline_image *img, const symline_config *cfg,
+                                  size_t ws_size)
+{
+    const symline_status st = sl_config_check(cfg);
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (ws_size < symline_detect_workspace_size(img->width, img->height, cfg)) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    return SYMLINE_OK;
+}
+
 static symline_status detect(const symline_image *img, const symline_config *cfg, void *ws,
                              size_t ws_size, symline_result *out)
 {
@@ -284,12 +297,9 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
         (out->points == NULL && out->point_cap != 0u)) {
         return SYMLINE_ERR_NULL;
     }
-    st = sl_config_check(cfg);
+    st = sl_config_ws_check(img, cfg, ws_size);
     if (st != SYMLINE_OK) {
         return st;
-    }
-    if (ws_size < symline_detect_workspace_size(img->width, img->height, cfg)) {
-        return SYMLINE_ERR_BUFFER;
     }
     /* The run's state lives in the workspace, not on the stack: the deepest
      * path of a detection runs below this call. */

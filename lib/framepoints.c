@@ -96,12 +96,9 @@ symline_status symline_line_points(const symline_image *img, const symline_confi
     if (cfg == NULL || ws == NULL || count == NULL || truncated == NULL || pts == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    st = sl_config_check(cfg);
+    st = sl_config_ws_check(img, cfg, ws_size);
     if (st != SYMLINE_OK) {
         return st;
-    }
-    if (ws_size < symline_detect_workspace_size(img->width, img->height, cfg)) {
-        return SYMLINE_ERR_BUFFER;
     }
     *truncated = false;
     stats.mean = 0u;

@@ -12,6 +12,11 @@
 /* SYMLINE_OK, or SYMLINE_ERR_CONFIG when a field is out of its range. */
 symline_status sl_config_check(const symline_config *c);
 
+/* The configuration's ranges, then ws_size against the workspace query:
+ * SYMLINE_OK, SYMLINE_ERR_CONFIG or SYMLINE_ERR_BUFFER (img already checked). */
+symline_status sl_config_ws_check(const symline_image *img, const symline_config *cfg,
+                                  size_t ws_size);
+
 /* Number of scales for a width x height frame (1 = full resolution only). */
 uint32_t sl_level_count(const symline_config *c, uint32_t width, uint32_t height);
 
