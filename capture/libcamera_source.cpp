@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * libcamera source: a C++17 shim behind the C frame-source interface.
  *

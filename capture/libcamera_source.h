@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * libcamera source (built when pkg-config finds libcamera): the same frame
  * interface as the V4L2 source for cameras that libcamera drives (Raspberry

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The capture loop (loop.h): detection, frame records and summaries.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The capture loop: frames from a source (source.h), the line detector on
  * each, one JSON record per frame on stdout, rate and latency summaries on

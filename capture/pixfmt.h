@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Pixel formats the capture sources accept, and how to get 8-bit luma out of
  * them. Host/Linux code; the core library never includes it.

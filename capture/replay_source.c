@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Replay source: reads one file per frame with imgio (or one frame of a Y4M
  * stream), on demand, so a long recording needs the memory of one frame.

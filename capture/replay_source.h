@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Replay source: frames from PGM/PNG files, for the demo and for machines
  * without a camera.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * A frame source: the one interface the capture loop sees, whether frames
  * come from a V4L2 device, a libcamera camera or files on disk.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * V4L2 source: a video capture device with mmap streaming I/O (single- or
  * multi-planar API), luma of GREY / planar YUV read in place, packed 4:2:2

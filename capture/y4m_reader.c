@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * YUV4MPEG2 reader: header "YUV4MPEG2 W<w> H<h> [C<tag>] ...", then per frame
  * "FRAME[ params]\n" followed by the planes.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * YUV4MPEG2 (.y4m) reader: the luma plane of each frame of a recording
  * (e.g. `ffmpeg -i clip.mp4 -pix_fmt gray clip.y4m`). 8-bit 4:2:0, 4:2:2,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The few macros and inline helpers every module of the core shares:
  * workspace carving and argument checks. Not part of the public API; each

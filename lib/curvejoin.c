@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Curve continuation: a line piece that continues a curve smoothly is part of
  * that curve. The flat top and bottom of the centre circle seen from a robot's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Curve continuation (curvejoin.c): a line piece that continues a curve
  * smoothly becomes part of that curve.

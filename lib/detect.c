@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline_detect(): configuration, workspace, the loop over the passes
  * (axes and scales, pass.c), the final merge (merge.c) and the curve

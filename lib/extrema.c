@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Extrema of symmetry on the exact energies, with the plateau rule.
  *

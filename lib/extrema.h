@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The extrema stage's private interface (extrema.c): the one routine for the
  * run rule of docs/algorithm.md along a row, used by the public

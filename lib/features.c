@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Symmetry feature points: S points of both extrema maps at one radius.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The field boundary from gray alone (include/symline/field.h).
  *

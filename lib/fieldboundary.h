@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The field boundary stage (fieldboundary.c): private interface for the
  * detector, which runs the stage before its passes and drops line points

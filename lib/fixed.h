@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Fixed-point helpers of the detector (fixed.c): Q8 pixel coordinates, the
  * scale grids' block geometry, the position of a point with its sub-pixel

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline_line_points(): the line filter's output of every pass of a
  * configuration, without tracing. The Muff-space finder votes with it; a

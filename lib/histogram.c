@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Vertical symmetry histogram: S points of the vertical-axis extrema map,
  * counted per column, one row at a time (a row's extrema need only that row).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Intersections of detected segments (L, T, X): every line is crossed with
  * every other line and with every curve (a polyline through every few of its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Intersections stage (intersections.c): the integer helpers it shares with
  * its tests. Not part of the public API.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The line filter: which S points (symmetry maxima) are line points.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The line filter (linefilter.c): which S points (symmetry maxima) are line
  * points. Its thresholds for one pass, the frame statistics that adapt them,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Line points of one pass (linepoints.c): the scale grid's rows, symmetry
  * energies, extrema with the plateau limit and the line filter, streamed

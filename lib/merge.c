@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The merge of collinear line pieces that an occluder (a robot, a ball) or a
  * junction split: close ends, each piece on the other's line, and the joined

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline_muff_find(): configuration, memory, and the order of the work:
  * vote (muff_vote.c), peaks strongest first, and for each peak its segment

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline_detect_muff(): the line filter's points into the Muff-space finder.
  * A file of its own so that a caller who brings its own points links the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Muff lines as segments: which line points support a peak's line, where
  * along the line they lie, and the fitted segment over their extent.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Internal interfaces of the Muff-space line finder (muff.c, muff_vote.c,
  * muff_extent.c). Not part of the public API.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Muff space: perimeter coordinates, voting and the accumulator's peaks.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * One pass (an axis at one scale) of the detector. It collects its line
  * points into the caller's point storage (raster order, strip processing),

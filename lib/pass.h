@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * One pass of the detector (pass.c): an axis at one scale, from the frame to
  * the pass's segments. It collects its line points (linepoints.c), traces

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The passes a detector configuration runs (detect.c): its range check, the
  * number of scales for a frame, and the axes. Shared by symline_detect() and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Stage names for profiling (include/symline/profile.h), built into the
  * profiled library only, so that the plain core carries no profiling code. The

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The grid of earlier segments (segindex.h). Built once per pass in two
  * sweeps over the segments: count the cells each one touches, then enter its

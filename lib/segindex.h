@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * A coarse grid of the segments found so far, so that a pass asks "is this
  * point near an earlier segment?" of the few segments near the point instead

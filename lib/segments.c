@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * From traced chains to segments: corner cuts, fit and classification, and
  * nearness to earlier segments.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * From traced chains to segments (segments.c): corner cuts, the fit and the
  * line/curve decision, and the geometry the later stages share (distances

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * SL_STAGE(s): the detection moves on to stage s (include/symline/profile.h).
  * A call of the application's symline_profile_mark() in a library built with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Sub-pixel position of line points across the line: see subpixel.h.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The reflective symmetry operator: exact energies E and the 8-bit image S8.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The symmetry operator's private interface (symmetry.c): the common start
  * of the whole-frame operator calls. The row and frame calls themselves are

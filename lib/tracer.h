@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The line tracer (tracer.c): chains of neighbouring line points, read from a
  * raster-ordered point list with its per-row index.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # The main job on a bundled real frame: builds symline (installing what it needs
 # when missing), detects the field lines, and writes
 #   out/lines.json     the segments (JSON of docs/format.md, as printed by `symline lines`)

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Makes sure what a step needs is there.
 #  - On Debian and derivatives (dpkg present): installs the missing packages
 #    with apt-get (as root; otherwise prints the apt-get command).

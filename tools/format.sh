@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # C sources against .clang-format (clang-format 14).
 #   tools/format.sh [--check] [DIR|FILE ...]     default: lib include
 # Without --check the files are rewritten in place; with it, every file that

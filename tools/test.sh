@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # The whole test suite, as CI runs it:
 #   1. host build and every CTest test but the qemu one of step 4 (preset default);
 #   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (preset asan);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Detector options of the host programs: one parser and one help text for
  * `symline lines|overlay` and `symline-capture`, so both accept exactly the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * PGM, PPM, PNG and JPEG reading and writing for the host tools.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Image files for the host programs (tools/, capture/): binary PGM and PPM
  * always, PNG when built with libpng, JPEG input when built with libturbojpeg.

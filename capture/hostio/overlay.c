@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Detections drawn over a frame, like the paper's Fig. 8: lines solid red,
  * curves dotted cyan along their points, on the dimmed gray frame.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Host I/O: detections drawn over a frame (symline overlay, symline-capture
  * --snapshot-every). Host-only code: allocates and writes files.

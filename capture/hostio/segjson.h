@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The JSON form of a detection (docs/format.md), shared by the CLI, the capture
  * loop, the tests and the Cortex-M golden check. Needs only stdio.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * capture-check: checks used by the integration test inside the emulated
  * machine (busybox only, so the checks are here, in C).

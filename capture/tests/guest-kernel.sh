@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Fetches Debian's amd64 kernel package (the one linux-image-amd64 depends on
 # today), extracts it into CACHE/kernel-ABI and builds its modules.dep.
 # Prints the extracted tree's path. Reruns reuse the cache.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Sourced by the guest's /init after the vivid checks when the image holds a
 # libcamera build: loads vimc and runs symline-capture through libcamera.
 # (The vivid module chain already loaded everything vimc depends on.)

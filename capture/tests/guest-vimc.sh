@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Builds the vimc driver (which Debian's kernel does not ship) out of tree for
 # the guest kernel: sources from linux-source-6.1, the matching
 # linux-headers-ABI tree. Prints the path of vimc.ko. Reruns reuse the cache.

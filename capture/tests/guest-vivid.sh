@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # /init of the emulated machine: loads vivid with error injection enabled and
 # runs symline-capture against it. Every check prints one marker line,
 #   SYMLINE-CHECK <name> PASS|FAIL

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * A strict JSON validator for the per-frame lines of symline-capture (RFC 8259
  * grammar, nesting up to 32 levels), used by the tests.

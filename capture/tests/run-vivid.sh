@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Integration test of the capture layer against real kernel drivers: boots
 # Debian's own kernel under qemu (TCG), loads vivid (and vimc when libcamera is
 # built), and runs a statically linked symline-capture inside the guest.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The integration test's JSON checker must reject what is not well formed.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The V4L2 source against a fake driver: open, ioctl, mmap, munmap, poll and
  * close are wrapped at link time (-Wl,--wrap), so buffer ownership, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — the line detector: from a gray frame to field-line segments (docs/detector.md).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — extrema of symmetry (docs/algorithm.md).
  *

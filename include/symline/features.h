@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — symmetry feature points (docs/format.md): crossings of symmetry axes.
  *

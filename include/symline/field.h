@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — the field boundary: where the field (the carpet) ends in a gray
  * frame, per image column, without colour.

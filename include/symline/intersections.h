@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — intersections: where detected field lines meet (L, T, X).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — the Muff-space line finder (the paper's first method; R.S. Wallace, "A Modified
  * Hough Transform for Lines", CVPR 1985), the paper's first method, as an

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — stage marks for profiling a detection (optional; off by default).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — the one-dimensional reflective symmetry operator (docs/algorithm.md).
  *

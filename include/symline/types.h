@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — common types: status codes, the image view, the symmetry axis.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline — the library's version (semantic versioning). The build takes its
  * version from here (CMakeLists.txt), so the numbers exist once.

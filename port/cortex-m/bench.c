@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Instructions per pixel of the core on the target, for two real frame
  * windows (160x120 and 320x240, cut from a bundled MSL frame) at m = 3.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The detector over the embedded frames (the golden crops and two windows of
  * a bundled MSL frame) with the default and the paper configuration, printed

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline in a firmware: one 320x240 camera frame (here a window of a real
  * RoboCup MSL frame, stored in flash) through the line detector, with every

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * A program that crashes on purpose (permanently undefined instruction): the
  * start-up's fault handler must turn this into a non-zero exit of qemu, so a

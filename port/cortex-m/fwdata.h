@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Frames embedded in flash by tools/firmware/pgm2c.c (generated at build
  * time from the repository's PGM files).

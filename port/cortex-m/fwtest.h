@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Checks for programs that run on the target: a failed check is printed over
  * semihosting and counted; fw_test_end() exits 1 when any check failed, so

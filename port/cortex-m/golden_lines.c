@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The detector's golden JSON (tests/golden/lines/) reproduced on the target:
  * every bundled real frame (608x800, in flash) through symline_detect() with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Text form of a detection result (see segprint.h). */
 #include "segprint.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Prints a detection result as plain text, every field as the exact integer
  * the core produced, so a target run and a host run of the same program can

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Stack actually used by the core's main entry points on the target, to
  * cross-check the static bounds of tools/firmware/stack.awk (a measured value

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Minimal Cortex-M start-up for the mps2-an386 examples and target tests:
  * vector table, FPU enable, and fault handlers that end the program with a

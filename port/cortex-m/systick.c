@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* SysTick as a free-running 64-bit counter (see systick.h). */
 #include "systick.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * A 64-bit tick counter from SysTick (24-bit, processor clock, wraps counted
  * in the SysTick interrupt). Under `qemu -icount shift=0` every instruction

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The core's golden and argument checks, run on the target (Cortex-M under
  * qemu): every golden case of tests/golden/core (symmetry images and

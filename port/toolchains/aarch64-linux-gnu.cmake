@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cross toolchain for 64-bit Arm Linux (Raspberry Pi 3/4/5 class single-board
 # computers) with Debian's cross compiler (gcc-aarch64-linux-gnu). Libraries for
 # the target come from Debian's multiarch packages (dpkg --add-architecture arm64;

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cross toolchain for Arm Cortex-M with the GNU Arm Embedded compiler
 # (Debian: gcc-arm-none-eabi, libnewlib-arm-none-eabi).
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cross toolchain for 32-bit RISC-V microcontrollers (rv32imac, ilp32) with
 # Debian's gcc-riscv64-unknown-elf, which carries the rv32 multilibs.
 #

@@ -1,8 +1,9 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # GCC's static analyzer (-fanalyzer) over every file of lib/: no warning
 # (docs/hardening.md). Exit 77 (skipped) when the compiler is not GCC >= 10.
 # usage: check_analyzer.sh SOURCE-DIR [CC]
-case "${1:-}" in -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
+case "${1:-}" in -h | --help) sed -n '3,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -u
 src=$1 cc=${2:-gcc}
 "$cc" -fanalyzer -x c -c -o /dev/null /dev/null 2>/dev/null || { echo "SKIPPED: $cc has no -fanalyzer"; exit 77; }

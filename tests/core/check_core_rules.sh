@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # The core's rules, checked twice: in the sources (grep) and in what the
 # compiler produced (undefined symbols of the built library, and a build of
 # lib/ with the FPU registers forbidden, which fails on any float arithmetic);

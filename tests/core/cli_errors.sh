@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # The CLI's exit codes and messages: 0 ok, 2 usage or input error, and
 # messages that name the file and the problem.
 # Usage: cli_errors.sh SYMLINE DATA_DIR

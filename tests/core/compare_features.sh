@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # `symline features` and `symline histogram` against the plain reference, byte
 # for byte, on every bundled real frame at radii 1, 3 and 10.
 # Usage: compare_features.sh SYMLINE SYMLINE_REF DATA_DIR

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # The CLI against the plain reference, byte for byte, on every bundled real frame,
 # both axes, the golden radii, symmetry and extrema.
 # Usage: compare_reference.sh SYMLINE SYMLINE_REF DATA_DIR

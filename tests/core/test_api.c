@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Argument checking and memory discipline of the operator and extrema API:
  * every bad argument gets its specific status and nothing is written; static

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Bad image files and sizes in the host tools (docs/errors.md): damaged PNGs
  * leak nothing, headers larger than the pixel limit are refused before any

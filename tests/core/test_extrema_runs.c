@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The run rule (lib/extrema.c, docs/algorithm.md): the one routine behind
  * symline_extrema_row() and the detector's rows, with and without the

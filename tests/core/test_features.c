@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Symmetry feature points and the vertical symmetry histogram (docs/format.md):
  * hand-made images with known answers, the definition (two extrema maps of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Golden tests: the optimised core against images produced by the plain
  * reference (tests/golden/regenerate.sh), bit for bit, for both axes and

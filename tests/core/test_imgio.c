@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The host tools' image reader and writer: PGM header rules, error messages
  * that name the file and the problem, PNG round trips and the luma formula,

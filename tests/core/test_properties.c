@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Properties the operator must have whatever the picture, checked on
  * pseudo-random images of many sizes and radii, plus a differential check of

@@ -1,9 +1,10 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # The CLI and the capture app under valgrind (memcheck) on the bundled frames
 # and on damaged files: any invalid read or write, use of uninitialised
 # memory or definite leak fails (valgrind --error-exitcode=1).
 # usage: valgrind_cli.sh SYMLINE SYMLINE-CAPTURE|- DATA-DIR   (exit 77: valgrind missing)
-case "${1:-}" in -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
+case "${1:-}" in -h | --help) sed -n '3,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -u
 cli=$1 app=$2 data=$3
 command -v valgrind >/dev/null 2>&1 || { echo "SKIPPED: valgrind not installed"; exit 77; }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The stage-mark receiver the golden test needs when it is linked with the
  * profiled core (detect_golden_profiled): it ignores the marks, so the test

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The synthetic field frame of the detector tests (synth_frame.h).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * A synthetic field frame for the detector tests: noise on a gray carpet,
  * lines 2, 9 and 3 px wide (one slanted), a vertical line, a ring and a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Curve continuation (lib/curvejoin.c): a line that continues a curve
  * smoothly becomes a curve; one that leaves it across, or a merged line,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline_detect() (lib/detect.c): arguments and errors, workspace figures,
  * truncation without overflow, lines found and reported once. The strip

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The error contract of the public entry points (docs/errors.md): each bad
  * argument gives its status code, and a call that fails leaves every

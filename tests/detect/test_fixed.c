@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Fixed-point helpers (lib/fixed.c): Q8 coordinates of grid points, block
  * offsets, the integer square root and the 32-bit Q8 division.

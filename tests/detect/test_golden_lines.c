@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Golden JSON of the bundled real frames: symline_detect() + the JSON
  * writer of docs/format.md must reproduce tests/golden/lines/NAME.json byte for byte

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline_intersections(): L, T and X on hand-made segment sets and on
  * hand-made frames run through symline_detect(); what must not be an

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The field-line checks (linecheck.c) and what they do in symline_detect():
  * a wide piece high in the field (a post standing on the carpet) is dropped,

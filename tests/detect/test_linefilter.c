@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The line filter (lib/linefilter.c): thresholds from the configuration,
  * frame statistics and the adaptive thresholds, the gray-value and A-point

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Line points of one pass (lib/linepoints.c): the strip processing over a
  * ring of rows gives exactly the points of a plain full-frame path (whole

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The Muff-space line finder (the paper's first method): two known lines give two accumulator
  * peaks at the perimeter cells where they cross the border, and two segments

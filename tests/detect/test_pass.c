@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * One pass of the detector (lib/pass.c): set-up from the configuration, and
  * a whole pass over a frame: its segments, their points compacted behind

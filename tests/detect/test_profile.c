@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The profiled core (SYMLINE_PROFILE, include/symline/profile.h): the stage
  * marks of a default detection on a bundled real frame. Every stage of the

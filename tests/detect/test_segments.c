@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * From chains to segments (lib/segments.c): corner cuts, the least-squares
  * fit and the line/curve decision, the bend of flat arcs, distances to

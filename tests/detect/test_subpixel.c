@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Sub-pixel position across the line, on hand-made frames whose ridge middle is
  * known: lines an even and an odd number of pixels wide, a blurred line between

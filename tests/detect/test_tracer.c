@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The line tracer (lib/tracer.c) on hand-made line-point maps: chains,
  * junctions, loops, classification by neighbours, storage exhaustion.

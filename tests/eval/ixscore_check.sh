@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # symline-ixscore on a hand-made scene: an L of two ground-truth lines and a T
 # (a line ending on another's middle), scored against detections that match,
 # have the wrong type, lie too far away, or are missing.
@@ -6,7 +7,7 @@
 set -eu
 case ${1:-} in
 -h | --help)
-    sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'
+    sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'
     exit 0
     ;;
 esac

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # The renderer is deterministic for a seed, different seeds give different scenes,
 # ground-truth points lie inside the image, and the ground truth scored against
 # itself (as a detection) is perfect.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The renderer's ground truth agrees with its image: on clean renders (no noise,
  * blur, lighting or texture) the pixel under every ground-truth sample is painted,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The scorer on hand-made ground truth and detections whose scores are known
  * exactly (docs/evaluation.md: samples every 0.5 px, tolerance max(2, 3*W/640)).

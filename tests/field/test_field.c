@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The field boundary (symline/field.h) on hand-made frames with known
  * answers: a boundary at a known row, at a known slant, bent once by a field

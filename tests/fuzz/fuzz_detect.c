@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Fuzz target: symline_detect() with fuzzer-chosen geometry, every
  * configuration field (its default, inside its range, just outside it, or

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Fuzz target: the operator and extrema entry points with fuzzer-chosen
  * width, height, strides, radius, axis, NULL pointers and buffer sizes

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Fuzz target: the PGM reader of the host tools (imgio_parse_pgm). Any input
  * gives an image or an error message, never a crash, leak or overread.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Fuzz target: the PNG (and PGM) reader of the host tools by signature
  * (imgio_parse_image). Damaged, truncated and oversized PNGs give an error

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Helpers of the fuzz targets: the fuzzer's bytes read as choices, and
  * caller buffers followed by guard bytes that must stay untouched.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Fuzz target: the YUV4MPEG2 reader of the capture app (y4m_open_stream,
  * y4m_read, y4m_rewind) on an in-memory stream: every frame it returns is

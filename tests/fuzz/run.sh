@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Builds the libFuzzer targets (clang, ASan + UBSan, preset "fuzz") and runs
 # each for SECONDS (default 60), one after the other on one core, starting
 # from the seed corpus in tests/fuzz/corpus/ (copied: the repository stays
@@ -8,7 +9,7 @@
 # Exit status: 0 all ran clean, 1 a finding or a build error, 77 skipped
 # (clang or its fuzzer runtime missing and not installable).
 # Findings are kept in build-fuzz/findings/TARGET/ (reproduce: build-fuzz/fuzz/TARGET FILE).
-case "${1:-}" in -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
+case "${1:-}" in -h | --help) sed -n '3,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -u
 cd "$(dirname "$0")/../.."
 secs=${1:-60}

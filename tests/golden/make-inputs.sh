@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Writes the inputs of the golden tests: hand-made cases (tests/data/cases/) and
 # 96x72 cut-outs of the bundled real frames (tests/data/crops/). Deterministic;
 # the outputs are committed, so this only needs to run when a case is added.

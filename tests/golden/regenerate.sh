@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Regenerates the golden operator and extrema images, feature points and
 # histograms (tests/golden/features/) from the plain reference
 # (tools/reference/symref.c). Usage: tests/golden/regenerate.sh [BUILD_DIR]

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Installs the library component ("dev") of the built tree into a temporary
 # prefix, checks that it holds only what a consumer needs (library, headers,
 # CMake package, pkg-config file), then builds a consumer with

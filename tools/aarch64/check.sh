@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # 64-bit Arm Linux (Raspberry Pi class single-board computers): a cross build
 # with Debian's gcc-aarch64-linux-gnu (port/toolchains/aarch64-linux-gnu.cmake)
 # and the host suite's cmocka tests, the golden ones among them, run under
@@ -17,7 +18,7 @@
 # Exit status: 0 passed, 1 failed, 77 SKIPPED (a package could not be installed).
 set -u
 
-usage() { sed -n '2,/^set -u/p' "$0" | sed -e '/^set -u/d' -e 's/^# \{0,1\}//'; }
+usage() { sed -n '3,/^set -u/p' "$0" | sed -e '/^set -u/d' -e 's/^# \{0,1\}//'; }
 
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$REPO/build-aarch64

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Detection cost on adversarial frames (symline-advframes: rings, noise,
 # dashes, checker) from 640x480 to 2560x1920: instructions of symline_detect()
 # counted by callgrind (deterministic; default configuration), the segments
@@ -7,7 +8,7 @@
 # point, pieces from 2 px; the worst case we know). Fails when the 2560x1920
 # ring frame costs more than 20x the 640x480 one (linear: 16x).
 # Usage: tools/bench/adversarial.sh [BUILD_DIR] [OUT_DIR]
-case "${1:-}" in -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
+case "${1:-}" in -h | --help) sed -n '3,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-$here/../../build}

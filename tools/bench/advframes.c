@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-advframes — writes adversarial frames for the detector's time
  * benchmark (tools/bench/adversarial.sh): patterns that give many line points

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-bench — speed of symline_detect() on given frames: ms/frame, frames
  * per second, instructions per pixel (where the CPU's counters can be read)

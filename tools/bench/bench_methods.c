@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-bench-methods — the tracer (symline_detect) and the Muff-space
  * finder (symline_detect_muff) at default settings on one frame: time per

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-bench-operator — runs the operator or the extrema over a frame a
  * number of times, for instruction counting under callgrind (see

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Instructions per pixel of one full detection (`symline lines`), counted by
 # callgrind: deterministic for a binary and its input, unlike seconds on a shared
 # machine. Reading the frame, allocating and printing JSON cost the same at every
@@ -12,7 +13,7 @@
 # detection per pixel (and in millions per frame).
 set -eu
 
-usage() { sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
+usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
 
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$REPO/build

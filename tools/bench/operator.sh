@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Instructions per pixel of the operator and the extrema on the host, counted by
 # callgrind (deterministic, unlike seconds on a shared machine): inclusive cost of
 # symline_symmetry() / symline_extrema() divided by the pixels processed.

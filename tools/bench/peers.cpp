@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-peers — symline and OpenCV's line detectors on the same frames, in
  * one run, one thread, image in memory: the time of the detection call alone,

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # symline beside OpenCV's line detectors (EDLines, FastLineDetector, LSD, Canny +
 # HoughLinesP) in one run on the same synthetic frames: the time of the detection
 # call (one thread, image in memory; symline-peers, tools/bench/peers.cpp) and the
@@ -18,7 +19,7 @@
 # to symline's default, mean per-image F1 over all synthetic frames of each size.
 set -eu
 
-usage() { sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
+usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
 
 [ $# -ge 1 ] || { usage >&2; exit 2; }
 case $1 in -h|--help) usage; exit 0 ;; esac

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Instructions per pixel of every stage of the detection, counted by callgrind:
 # symline-bench --callgrind-stage STAGE runs the detections with callgrind
 # counting only while that stage runs (the profiled core's stage marks toggle
@@ -13,7 +14,7 @@
 # Prints one table per frame: stage, then per column instructions per pixel.
 set -eu
 
-usage() { sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
+usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
 
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$REPO/build

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # symline-capture on bad input and stop signals (docs/errors.md):
 #   - a replay path that is a device (/dev/zero, /dev/urandom) is refused at
 #     once instead of read forever;
@@ -10,7 +11,7 @@
 #   - with SYMLINE-ADVFRAMES: SIGTERM in the middle of slow, cluttered
 #     frames (2560x1920 rings) ends the loop within one frame time.
 # usage: hardening.sh SYMLINE-CAPTURE CAPTURE-CHECK SYMLINE DATA-DIR [SYMLINE-ADVFRAMES]
-case "${1:-}" in -h | --help) sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
+case "${1:-}" in -h | --help) sed -n '3,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -u
 app=$1 check=$2 cli=$3 data=$(cd "$4" && pwd) adv=${5:-}
 tmp=$(mktemp -d)

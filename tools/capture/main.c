@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-capture: the front end of the on-robot loop (capture/loop.h).
  * Frames from a V4L2 device, a libcamera camera or files; the line detector

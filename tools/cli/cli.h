@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The host CLI `symline`: shared helpers of the subcommands.
  */

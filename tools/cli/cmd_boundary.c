@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * `symline boundary`: the field boundary alone (include/symline/field.h).
  */

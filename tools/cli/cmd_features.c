@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * `symline features` and `symline histogram`: the paper's symmetry feature
  * points and vertical symmetry histogram (docs/format.md) as JSON.

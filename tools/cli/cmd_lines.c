@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * `symline lines` and `symline overlay`: the line detector on images.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * `symline symmetry` and `symline extrema`: the operator and its extrema as images.
  */

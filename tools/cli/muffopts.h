@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * `symline lines|overlay --method muff|tracer` and the Muff-space finder's
  * options (symline/muff.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-bright: brightness transforms for the stability check
  * (out = clip(round(in * MUL + ADD), 0, 255)); also converts between PGM and PNG.

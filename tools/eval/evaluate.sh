@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Evaluates `symline lines` on every set and prints one table per set kind:
 #   - the given synthetic scenes DATA_DIR/synth (ground truth in the synth README formats),
 #   - the rendered sets normal, dark, overexposed, occluded, circle at 320x240 and
@@ -26,7 +27,7 @@
 #                    REPO/out/eval-real)
 set -eu
 
-usage() { sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
+usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
 
 [ $# -ge 1 ] || { usage >&2; exit 2; }
 case $1 in -h|--help) usage; exit 0 ;; esac

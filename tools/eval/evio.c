@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Readers for ground truth text files, detection JSON and PGM headers.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Reading the evaluation inputs: ground-truth text files and detection JSON (as
  * printed by `symline lines`), both in the formats of docs/format.md, and PGM

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Scores the intersections `symline lines` reports (JSON key "intersections")
 # against those of the ground-truth segments (symline-ixscore), per set:
 #   - the given synthetic scenes DATA_DIR/synth,
@@ -20,7 +21,7 @@
 #   --jobs N      parallel jobs (default 2)
 set -eu
 
-usage() { sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
+usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
 
 [ $# -ge 1 ] || { usage >&2; exit 2; }
 case $1 in -h|--help) usage; exit 0 ;; esac

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-ixscore: scores the "intersections" of a `symline lines` JSON
  * against the intersections of a scene's ground-truth segments.

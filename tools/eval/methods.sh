@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # The tracer against the Muff-space line finder, as the paper compared them:
 # accuracy (mean F1 per synthetic set and on the annotated real frames),
 # time per frame, instructions per pixel (callgrind), working memory and code
@@ -17,7 +18,7 @@
 # --axis both (the default); the Muff finder with `symline lines --method muff`.
 set -eu
 
-usage() { sed -n '2,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
+usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
 [ $# -ge 1 ] || { usage >&2; exit 2; }
 case $1 in -h|--help) usage; exit 0 ;; esac
 DATA=$1

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Polyline sets, sampling and an exact "within tolerance" query (uniform grid).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Polylines in image coordinates (pixels, x right, y down, integer values at
  * pixel centres) for the evaluation tools: ground truth, don't-care parts and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The synthetic field renderer: an SPL field seen by a pinhole camera, with exact
  * ground truth for the painted lines. Field coordinates in metres: origin at the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Exact ground truth: every field centre line (and the centre circle) is walked
  * in small steps (0.2 px in the image), each point classified as hidden (behind

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Image synthesis: every pixel averages 4x4 rays, each intersected exactly with
  * the ground, the walls and the cylinders; painted lines are tested in field

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-render: writes seeded synthetic field views with exact ground truth in
  * the formats of the shared synth README (NAME.pgm, NAME.lines.txt,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Field geometry, camera, cylinders and the random choice of a scene.
  */

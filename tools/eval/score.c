@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Precision, recall, F1 and classification counts for one image.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The scorer of docs/evaluation.md: samples every 0.5 px along detections and ground
  * truth, tolerance max(2, 3*width/640) px, precision, recall and F1 per image,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-score: scores `symline lines` detections (docs/format.md) against
  * ground truth, a binary line mask, or another detection of the same frame.

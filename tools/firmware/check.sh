@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Firmware readiness of the core (lib/), as CI runs it:
 #   1. cross builds of libsymline.a: Cortex-M0+ (soft float), M4 and M7 (hard
 #      float), RV32IMAC (freestanding compile-and-link check);

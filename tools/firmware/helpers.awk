@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Stack bound of every function in a disassembled Arm library (libgcc.a), for
 # the compiler helpers the core calls (__aeabi_uldivmod, __aeabi_lmul, ...).
 #

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * pgm2c — turns 8-bit PGM (P5) images into C arrays for firmware that has no
  * file system (the target tests and the example embed their frames in flash).

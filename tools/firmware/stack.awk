@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Worst-case stack depth of every public entry point (symline_*) of the core,
 # from GCC's call-graph files (-fcallgraph-info=su, one .ci per object).
 #

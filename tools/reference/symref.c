@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * symline-ref — a deliberately plain reference of the operator and its extrema
  * (docs/algorithm.md), written straight

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Regenerates the golden line-detector JSON: `symline lines` with default
 # settings (and the paper filter baseline) on every bundled frame.
 # Usage: tests/golden/lines/regenerate.sh [BUILD_DIR]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Uses the installed headers and library: one symmetry row with static buffers. */
 #include <stdio.h>
 
