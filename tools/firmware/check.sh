@@ -30,7 +30,7 @@ prefix=${SYMLINE_FW_BUILD:-$root/build-fw}
 jobs=2
 stack_budget=512
 # 12 KiB before this round; its target for the core with the field-line stages was
-# 16 KiB, which the core exceeds (18.2 KiB: field boundary 3.0, the earlier-segment
+# 16 KiB, which the core exceeds (18.3 KiB: field boundary 3.0, the earlier-segment
 # index 1.2, sub-pixel 0.8 KiB; docs/RESULTS.md). The budget holds it where it is,
 # so that it cannot grow unnoticed.
 size_budget=19456
