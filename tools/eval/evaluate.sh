@@ -70,18 +70,8 @@ case $BUILD in /*) ;; *) BUILD=$(pwd)/$BUILD ;; esac
 case $OUT in /*) ;; *) OUT=$(pwd)/$OUT ;; esac
 
 # ---- tools: Debian packages, then an incremental build of the four binaries ----
-need_pkgs() {
-    missing=
-    for p in "$@"; do
-        dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || missing="$missing $p"
-    done
-    [ -z "$missing" ] && return 0
-    echo "evaluate.sh: installing$missing" >&2
-    SUDO=
-    [ "$(id -u)" -eq 0 ] || SUDO=sudo
-    # shellcheck disable=SC2086
-    $SUDO apt-get install -y $missing >&2 || { $SUDO apt-get update >&2 && $SUDO apt-get install -y $missing >&2; }
-}
+# shellcheck source=../pkgs.sh
+. "$REPO/tools/pkgs.sh"
 if command -v dpkg >/dev/null 2>&1; then
     need_pkgs cmake make gcc libc6-dev pkg-config libpng-dev libcmocka-dev
 fi
