@@ -34,13 +34,13 @@
 /* Alignment every workspace carve-out is rounded to. */
 #define SL_ALIGN 8u
 
-static inline size_t sl_align_up(size_t n)
+static inline size_t symline_i_align_up(size_t n)
 {
     return (n + (SL_ALIGN - 1u)) & ~(size_t)(SL_ALIGN - 1u);
 }
 
 /* Carves `bytes` from a workspace cursor, aligned; NULL if it does not fit. */
-static inline void *sl_carve(uint8_t **cur, uint8_t *end, size_t bytes)
+static inline void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes)
 {
     uintptr_t p = ((uintptr_t)*cur + (SL_ALIGN - 1u)) & ~(uintptr_t)(SL_ALIGN - 1u);
     if (p > (uintptr_t)end || bytes > (size_t)((uintptr_t)end - p)) {
@@ -54,8 +54,8 @@ static inline void *sl_carve(uint8_t **cur, uint8_t *end, size_t bytes)
  * Checks that a caller buffer of `len` elements holds `rows` rows of `cols`
  * elements `stride` apart. Computed in 64 bits so no size can wrap.
  */
-static inline symline_status sl_check_plane(uint32_t cols, uint32_t rows, uint32_t stride,
-                                            size_t len)
+static inline symline_status symline_i_check_plane(uint32_t cols, uint32_t rows, uint32_t stride,
+                                                   size_t len)
 {
     uint64_t need;
     if (stride < cols) {
@@ -68,22 +68,23 @@ static inline symline_status sl_check_plane(uint32_t cols, uint32_t rows, uint32
     return SYMLINE_OK;
 }
 
-static inline symline_status sl_check_radius(uint32_t m)
+static inline symline_status symline_i_check_radius(uint32_t m)
 {
     return (m >= 1u && m <= SYMLINE_MAX_RADIUS) ? SYMLINE_OK : SYMLINE_ERR_RADIUS;
 }
 
-static inline symline_status sl_check_axis(symline_axis axis)
+static inline symline_status symline_i_check_axis(symline_axis axis)
 {
     return (axis == SYMLINE_AXIS_HORIZONTAL || axis == SYMLINE_AXIS_VERTICAL) ? SYMLINE_OK
                                                                               : SYMLINE_ERR_AXIS;
 }
 
 /* True when a workspace query's arguments are valid (sizes 1..65535, known axis, radius 1..255). */
-static inline bool sl_query_ok(uint32_t width, uint32_t height, symline_axis axis, uint32_t m)
+static inline bool symline_i_query_ok(uint32_t width, uint32_t height, symline_axis axis,
+                                      uint32_t m)
 {
     return width != 0u && width <= SYMLINE_MAX_DIM && height != 0u && height <= SYMLINE_MAX_DIM &&
-           sl_check_axis(axis) == SYMLINE_OK && sl_check_radius(m) == SYMLINE_OK;
+           symline_i_check_axis(axis) == SYMLINE_OK && symline_i_check_radius(m) == SYMLINE_OK;
 }
 
 #endif /* SYMLINE_COMMON_H */

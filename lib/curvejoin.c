@@ -44,8 +44,8 @@ static bool continues(const symline_segment *s, const symline_segment *c, const 
         /* e & 1: c's end (else its start); e & 2: s's end x1 (else x0). */
         const int32_t at = (e & 1) ? last : 0, in = (e & 1) ? last - j : j;
         const int32_t cdx = (int32_t)p[at].x - p[in].x, cdy = (int32_t)p[at].y - p[in].y;
-        const int32_t gx = ((e & 2) ? s->x1 : s->x0) - sl_pt_q8x(&p[at], 0u);
-        const int32_t gy = ((e & 2) ? s->y1 : s->y0) - sl_pt_q8y(&p[at], 0u);
+        const int32_t gx = ((e & 2) ? s->x1 : s->x0) - symline_i_pt_q8x(&p[at], 0u);
+        const int32_t gy = ((e & 2) ? s->y1 : s->y0) - symline_i_pt_q8y(&p[at], 0u);
         /* s leaves its end x1 along +dir, its end x0 along -dir; continuing c
          * means leaving against c's outward direction. */
         const int32_t dot = (e & 2) ? -(ldx * cdx + ldy * cdy) : ldx * cdx + ldy * cdy;
@@ -59,14 +59,14 @@ static bool continues(const symline_segment *s, const symline_segment *c, const 
     return false;
 }
 
-void sl_curve_join(symline_result *r)
+void symline_i_curve_join(symline_result *r)
 {
     uint32_t i, k;
     /* One round in storage order: passes run fine scale first, horizontal
      * before vertical, so most flat pieces come after the curve they continue. */
     for (i = 0; i < r->segment_count; i++) {
         symline_segment *s = &r->segments[i];
-        const int32_t tol = (int32_t)(SL_JOIN_TOL_Q8 + sl_block_q8(s->level));
+        const int32_t tol = (int32_t)(SL_JOIN_TOL_Q8 + symline_i_block_q8(s->level));
         /* A merged line has its points piece after piece, not in one run a
          * curve could be drawn through. */
         for (k = 0; s->kind == SYMLINE_KIND_LINE && !s->merged && k < r->segment_count; k++) {

@@ -11,6 +11,6 @@
 
 /* Line segments of r that continue a curve smoothly (ends within 3 px,
  * directions within 30 degrees) become curves; merged lines stay lines. */
-void sl_curve_join(symline_result *r);
+void symline_i_curve_join(symline_result *r);
 
 #endif /* SYMLINE_LIB_CURVEJOIN_H */

@@ -111,13 +111,13 @@ static symline_config_field bad_field(const symline_config *c)
     if (c->field_margin > SYMLINE_MAX_DIM) {
         return SYMLINE_CFG_FIELD_MARGIN;
     }
-    if (!sl_field_config_ok(&c->field)) {
+    if (!symline_i_field_config_ok(&c->field)) {
         return SYMLINE_CFG_FIELD;
     }
     return SYMLINE_CFG_NONE;
 }
 
-symline_status sl_config_check(const symline_config *c)
+symline_status symline_i_config_check(const symline_config *c)
 {
     return bad_field(c) == SYMLINE_CFG_NONE ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
 }
@@ -137,7 +137,7 @@ symline_status symline_config_check(const symline_config *cfg, symline_config_fi
 /* Number of scales (levels): as configured, or enough that the coarsest one reaches
  * lines width/16 px wide (radius m spans lines up to about 2m+1 px); never
  * a grid smaller than the operator's window. */
-uint32_t sl_level_count(const symline_config *c, uint32_t width, uint32_t height)
+uint32_t symline_i_level_count(const symline_config *c, uint32_t width, uint32_t height)
 {
     uint32_t levels = c->levels;
     const uint32_t span = 2u * c->radius + 1u;
@@ -155,12 +155,12 @@ uint32_t sl_level_count(const symline_config *c, uint32_t width, uint32_t height
 }
 
 /* The axes of a detection: how many, and the index-th (horizontal first). */
-uint32_t sl_axis_count(const symline_config *c)
+uint32_t symline_i_axis_count(const symline_config *c)
 {
     return c->axes == SYMLINE_AXES_BOTH ? 2u : 1u;
 }
 
-symline_axis sl_axis_of(const symline_config *c, uint32_t index)
+symline_axis symline_i_axis_of(const symline_config *c, uint32_t index)
 {
     if (c->axes == SYMLINE_AXES_BOTH) {
         return index == 0u ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL;
@@ -168,17 +168,16 @@ symline_axis sl_axis_of(const symline_config *c, uint32_t index)
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
 }
 
-/* Workspace of the detection's own state (sl_run), within the fixed part of
+/* Workspace of the detection's own state (symline_i_run), within the fixed part of
  * SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) on every target. */
-#define SL_RUN_WS_SIZE (sl_align_up(sizeof(sl_run)) + SL_ALIGN)
-typedef char sl_run_fits_ws_budget[(sizeof(sl_run) + (size_t)2u * SL_ALIGN <= SYMLINE_DETECT_WS_RUN)
-                                       ? 1
-                                       : -1];
+#define SL_RUN_WS_SIZE (symline_i_align_up(sizeof(symline_i_run)) + SL_ALIGN)
+typedef char symline_i_run_fits_ws_budget
+    [(sizeof(symline_i_run) + (size_t)2u * SL_ALIGN <= SYMLINE_DETECT_WS_RUN) ? 1 : -1];
 
-/* Workspace of the per-column rows of the field boundary (sl_run.field_rows). */
+/* Workspace of the per-column rows of the field boundary (symline_i_run.field_rows). */
 static size_t field_rows_size(uint32_t width)
 {
-    return sl_align_up((size_t)width * sizeof(uint16_t)) + SL_ALIGN;
+    return symline_i_align_up((size_t)width * sizeof(uint16_t)) + SL_ALIGN;
 }
 
 SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height,
@@ -187,16 +186,16 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
     uint32_t levels, level, axis;
     size_t best = 0u;
     if (cfg == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
-        height > SYMLINE_MAX_DIM || sl_config_check(cfg) != SYMLINE_OK) {
+        height > SYMLINE_MAX_DIM || symline_i_config_check(cfg) != SYMLINE_OK) {
         return 0u;
     }
-    levels = sl_level_count(cfg, width, height);
+    levels = symline_i_level_count(cfg, width, height);
     for (level = 0; level < levels; level++) {
-        for (axis = 0; axis < sl_axis_count(cfg); axis++) {
-            sl_pass p;
+        for (axis = 0; axis < symline_i_axis_count(cfg); axis++) {
+            symline_i_pass p;
             size_t n;
-            sl_pass_setup(&p, cfg, sl_axis_of(cfg, axis), level, width, height);
-            n = sl_pass_ws_size(&p, width, height);
+            symline_i_pass_setup(&p, cfg, symline_i_axis_of(cfg, axis), level, width, height);
+            n = symline_i_pass_ws_size(&p, width, height);
             best = n > best ? n : best;
         }
     }
@@ -208,7 +207,8 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
     }
     if (cfg->adaptive) {
         /* Then the statistics: the field's rows and the histogram. */
-        const size_t st = field_rows_size(width) + sl_align_up(SL_STATS_HIST_BYTES) + SL_ALIGN;
+        const size_t st =
+            field_rows_size(width) + symline_i_align_up(SL_STATS_HIST_BYTES) + SL_ALIGN;
         best = st > best ? st : best;
     }
     /* The detection's own state comes first, for the whole call. */
@@ -219,23 +219,23 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
  * found (lights, walls and people above it would set the thresholds for lines
  * on the carpet), else (field NULL or empty) of the whole frame. */
 SL_NOINLINE static void field_stats(const symline_image *img, const symline_field_boundary *field,
-                                    uint8_t *ws, size_t ws_size, sl_frame_stats *st)
+                                    uint8_t *ws, size_t ws_size, symline_i_frame_stats *st)
 {
     uint8_t *cur = ws;
     uint16_t *top =
         field != NULL && field->count != 0u
-            ? (uint16_t *)sl_carve(&cur, ws + ws_size, (size_t)img->width * sizeof(uint16_t))
+            ? (uint16_t *)symline_i_carve(&cur, ws + ws_size, (size_t)img->width * sizeof(uint16_t))
             : NULL;
-    uint32_t *hist = (uint32_t *)sl_carve(&cur, ws + ws_size, SL_STATS_HIST_BYTES);
+    uint32_t *hist = (uint32_t *)symline_i_carve(&cur, ws + ws_size, SL_STATS_HIST_BYTES);
     if (hist == NULL) {
         return; /* not reached: the workspace size holds both */
     }
     if (top != NULL) {
-        sl_field_rows(field, 0u, img->width, img->width, 0u, top);
+        symline_i_field_rows(field, 0u, img->width, img->width, 0u, top);
     }
-    sl_frame_stats_measure(img, top, hist, st);
+    symline_i_frame_stats_measure(img, top, hist, st);
     if (st->mean == 0u && st->sigma_q4 == 0u && top != NULL) {
-        sl_frame_stats_measure(img, NULL, hist, st); /* no field in view */
+        symline_i_frame_stats_measure(img, NULL, hist, st); /* no field in view */
     }
 }
 
@@ -243,36 +243,38 @@ SL_NOINLINE static void field_stats(const symline_image *img, const symline_fiel
  * symline_detect() so that the pass state and the merge are never on the
  * stack together. */
 SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_t ws_size,
-                                   sl_run *d)
+                                   symline_i_run *d)
 {
     uint32_t levels, level, axis;
     uint8_t *cur = ws, *const end = ws + ws_size;
-    sl_pass *p;
+    symline_i_pass *p;
     /* The field boundary's rows stay through the passes (the boundary's own
      * workspace is free again). */
-    d->field_rows = cfg->field_boundary == SYMLINE_FIELD_DROP
-                        ? (uint16_t *)sl_carve(&cur, end, (size_t)d->img->width * sizeof(uint16_t))
-                        : NULL;
-    p = (sl_pass *)sl_carve(&cur, end, sizeof(sl_pass));
-    levels = sl_level_count(cfg, d->img->width, d->img->height);
+    d->field_rows =
+        cfg->field_boundary == SYMLINE_FIELD_DROP
+            ? (uint16_t *)symline_i_carve(&cur, end, (size_t)d->img->width * sizeof(uint16_t))
+            : NULL;
+    p = (symline_i_pass *)symline_i_carve(&cur, end, sizeof(symline_i_pass));
+    levels = symline_i_level_count(cfg, d->img->width, d->img->height);
     for (level = 0; level < levels && p != NULL; level++) {
-        for (axis = 0; axis < sl_axis_count(cfg); axis++) {
+        for (axis = 0; axis < symline_i_axis_count(cfg); axis++) {
             SL_STAGE(SETUP);
-            sl_pass_setup(p, cfg, sl_axis_of(cfg, axis), level, d->img->width, d->img->height);
+            symline_i_pass_setup(p, cfg, symline_i_axis_of(cfg, axis), level, d->img->width,
+                                 d->img->height);
             if (cfg->adaptive) {
-                sl_linefilter_adapt(&p->filter, cfg, &d->stats);
+                symline_i_linefilter_adapt(&p->filter, cfg, &d->stats);
             }
-            if (sl_pass_run(d, p, cur, end) != SYMLINE_OK) {
+            if (symline_i_pass_run(d, p, cur, end) != SYMLINE_OK) {
                 return; /* not reached: the workspace size was checked */
             }
         }
     }
 }
 
-symline_status sl_config_ws_check(const symline_image *img, const symline_config *cfg,
-                                  size_t ws_size)
+symline_status symline_i_config_ws_check(const symline_image *img, const symline_config *cfg,
+                                         size_t ws_size)
 {
-    const symline_status st = sl_config_check(cfg);
+    const symline_status st = symline_i_config_check(cfg);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -287,7 +289,7 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
 {
     symline_status st = symline_image_check(img);
     uint8_t *cur = (uint8_t *)ws, *end;
-    sl_run *d;
+    symline_i_run *d;
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -298,14 +300,14 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
         (out->points == NULL && out->point_cap != 0u)) {
         return SYMLINE_ERR_NULL;
     }
-    st = sl_config_ws_check(img, cfg, ws_size);
+    st = symline_i_config_ws_check(img, cfg, ws_size);
     if (st != SYMLINE_OK) {
         return st;
     }
     /* The run's state lives in the workspace, not on the stack: the deepest
      * path of a detection runs below this call. */
     end = cur + ws_size;
-    d = (sl_run *)sl_carve(&cur, end, sizeof(sl_run));
+    d = (symline_i_run *)symline_i_carve(&cur, end, sizeof(symline_i_run));
     if (d == NULL) {
         return SYMLINE_ERR_BUFFER; /* not reached: the workspace size was checked */
     }
@@ -322,7 +324,7 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
     out->field.count = 0u;
     if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
         SL_STAGE(FIELD);
-        sl_field_run(img, &cfg->field, cur, (size_t)(end - cur), &out->field);
+        symline_i_field_run(img, &cfg->field, cur, (size_t)(end - cur), &out->field);
     }
     if (cfg->adaptive) {
         SL_STAGE(STATS);
@@ -337,11 +339,11 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
     if (cfg->merge_gap != 0u) {
         const uint32_t gap =
             cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? img->width / 8u : cfg->merge_gap;
-        sl_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
+        symline_i_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
     }
     SL_STAGE(CURVEJOIN);
     if (cfg->curve_bend_q8 != 0u) {
-        sl_curve_join(out);
+        symline_i_curve_join(out);
     }
     out->truncated = d->truncated;
     return SYMLINE_OK;

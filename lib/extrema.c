@@ -38,7 +38,7 @@ static SL_ALWAYS_INLINE void mark_runs(const uint32_t *E, uint32_t n, uint32_t l
     }
 }
 
-void sl_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
+void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
 {
     mark_runs(E, n, lag, map);
 }
@@ -60,8 +60,9 @@ size_t symline_colrun_buffer_size(uint32_t width)
     if (width == 0u || width > SYMLINE_MAX_DIM) {
         return 0u;
     }
-    return sl_align_up((size_t)width * sizeof(uint32_t)) +
-           sl_align_up((size_t)width * sizeof(uint16_t)) + sl_align_up((size_t)width) + SL_ALIGN;
+    return symline_i_align_up((size_t)width * sizeof(uint32_t)) +
+           symline_i_align_up((size_t)width * sizeof(uint16_t)) +
+           symline_i_align_up((size_t)width) + SL_ALIGN;
 }
 
 symline_status symline_colrun_init(symline_colrun *cr, uint32_t width, void *buf, size_t buf_size)
@@ -75,9 +76,9 @@ symline_status symline_colrun_init(symline_colrun *cr, uint32_t width, void *buf
     }
     cur = (uint8_t *)buf;
     end = cur + buf_size;
-    cr->prev_e = (uint32_t *)sl_carve(&cur, end, (size_t)width * sizeof(uint32_t));
-    cr->run_start = (uint16_t *)sl_carve(&cur, end, (size_t)width * sizeof(uint16_t));
-    cr->left = (int8_t *)sl_carve(&cur, end, (size_t)width);
+    cr->prev_e = (uint32_t *)symline_i_carve(&cur, end, (size_t)width * sizeof(uint32_t));
+    cr->run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)width * sizeof(uint16_t));
+    cr->left = (int8_t *)symline_i_carve(&cur, end, (size_t)width);
     if (cr->prev_e == NULL || cr->run_start == NULL || cr->left == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
@@ -138,13 +139,13 @@ size_t symline_extrema_workspace_size(uint32_t width, uint32_t height, symline_a
                                       uint32_t m)
 {
     size_t n;
-    if (!sl_query_ok(width, height, axis, m)) {
+    if (!symline_i_query_ok(width, height, axis, m)) {
         return 0u;
     }
-    n = sl_align_up((size_t)width * sizeof(uint32_t)) + SL_ALIGN;
+    n = symline_i_align_up((size_t)width * sizeof(uint32_t)) + SL_ALIGN;
     if (axis == SYMLINE_AXIS_HORIZONTAL) {
         n += symline_colrun_buffer_size(width) +
-             sl_align_up((size_t)width * sizeof(symline_extremum)) + SL_ALIGN;
+             symline_i_align_up((size_t)width * sizeof(symline_extremum)) + SL_ALIGN;
     }
     return n;
 }
@@ -158,7 +159,7 @@ symline_status symline_extrema(const symline_image *img, symline_axis axis, uint
     symline_colrun cr;
     symline_extremum *ev = NULL;
     symline_status st =
-        sl_frame_begin(img, axis, m, map, map_stride, map_len, ws, ws_size, &cur, &end, &E);
+        symline_i_frame_begin(img, axis, m, map, map_stride, map_len, ws, ws_size, &cur, &end, &E);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -171,8 +172,9 @@ symline_status symline_extrema(const symline_image *img, symline_axis axis, uint
     }
     {
         const size_t cr_bytes = symline_colrun_buffer_size(img->width);
-        void *cr_buf = sl_carve(&cur, end, cr_bytes);
-        ev = (symline_extremum *)sl_carve(&cur, end, (size_t)img->width * sizeof(symline_extremum));
+        void *cr_buf = symline_i_carve(&cur, end, cr_bytes);
+        ev = (symline_extremum *)symline_i_carve(&cur, end,
+                                                 (size_t)img->width * sizeof(symline_extremum));
         if (cr_buf == NULL || ev == NULL ||
             symline_colrun_init(&cr, img->width, cr_buf, cr_bytes) != SYMLINE_OK) {
             return SYMLINE_ERR_BUFFER;

@@ -11,7 +11,7 @@
 #include "common.h"
 #include "symline/extrema.h"
 
-/* Plateau limit of sl_extrema_runs() that marks runs of any length. */
+/* Plateau limit of symline_i_extrema_runs() that marks runs of any length. */
 #define SL_RUN_ANY_LENGTH UINT32_MAX
 
 /*
@@ -22,6 +22,6 @@
  * whose middle lies more than `lag` entries before its end is not marked
  * either (the detector's plateau limit; SL_RUN_ANY_LENGTH for none).
  */
-void sl_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map);
+void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map);
 
 #endif /* SYMLINE_LIB_EXTREMA_H */

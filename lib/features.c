@@ -34,12 +34,12 @@ typedef struct vcache {
 size_t symline_features_workspace_size(uint32_t width, uint32_t height, uint32_t m)
 {
     const size_t w = width;
-    if (!sl_query_ok(width, height, SYMLINE_AXIS_HORIZONTAL, m)) {
+    if (!symline_i_query_ok(width, height, SYMLINE_AXIS_HORIZONTAL, m)) {
         return 0u;
     }
-    return sl_align_up(sizeof(vcache)) + sl_align_up(sizeof(symline_colrun)) +
-           2u * sl_align_up(w * sizeof(uint32_t)) + symline_colrun_buffer_size(width) +
-           sl_align_up(w * sizeof(symline_extremum)) + sl_align_up(w * SL_FEAT_ROWS) +
+    return symline_i_align_up(sizeof(vcache)) + symline_i_align_up(sizeof(symline_colrun)) +
+           2u * symline_i_align_up(w * sizeof(uint32_t)) + symline_colrun_buffer_size(width) +
+           symline_i_align_up(w * sizeof(symline_extremum)) + symline_i_align_up(w * SL_FEAT_ROWS) +
            (size_t)8u * SL_ALIGN;
 }
 
@@ -138,7 +138,7 @@ symline_status symline_features(const symline_image *img, uint32_t m, void *ws, 
     if (ws == NULL || count == NULL || (pts == NULL && cap != 0u)) {
         return SYMLINE_ERR_NULL;
     }
-    st = sl_check_radius(m);
+    st = symline_i_check_radius(m);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -148,18 +148,19 @@ symline_status symline_features(const symline_image *img, uint32_t m, void *ws, 
     cur = (uint8_t *)ws;
     end = cur + ws_size;
     cr_bytes = symline_colrun_buffer_size(img->width);
-    vc = (vcache *)sl_carve(&cur, end, sizeof(vcache));
-    cr = (symline_colrun *)sl_carve(&cur, end, sizeof(symline_colrun));
-    E = (uint32_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint32_t));
-    cr_buf = sl_carve(&cur, end, cr_bytes);
-    ev = (symline_extremum *)sl_carve(&cur, end, (size_t)img->width * sizeof(symline_extremum));
+    vc = (vcache *)symline_i_carve(&cur, end, sizeof(vcache));
+    cr = (symline_colrun *)symline_i_carve(&cur, end, sizeof(symline_colrun));
+    E = (uint32_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint32_t));
+    cr_buf = symline_i_carve(&cur, end, cr_bytes);
+    ev = (symline_extremum *)symline_i_carve(&cur, end,
+                                             (size_t)img->width * sizeof(symline_extremum));
     if (vc == NULL || cr == NULL || E == NULL || cr_buf == NULL || ev == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
     vc->img = img;
     vc->m = m;
-    vc->E = (uint32_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint32_t));
-    vc->rows = (uint8_t *)sl_carve(&cur, end, (size_t)img->width * SL_FEAT_ROWS);
+    vc->E = (uint32_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint32_t));
+    vc->rows = (uint8_t *)symline_i_carve(&cur, end, (size_t)img->width * SL_FEAT_ROWS);
     if (vc->E == NULL || vc->rows == NULL ||
         symline_colrun_init(cr, img->width, cr_buf, cr_bytes) != SYMLINE_OK) {
         return SYMLINE_ERR_BUFFER;

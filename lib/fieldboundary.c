@@ -58,7 +58,7 @@ void symline_field_config_default(symline_field_config *fc)
     fc->edge_slope_pct = 50u;
 }
 
-bool sl_field_config_ok(const symline_field_config *fc)
+bool symline_i_field_config_ok(const symline_field_config *fc)
 {
     const uint32_t c = fc->cell;
     return (c == 0u || (c >= 2u && c <= 64u && (c & (c - 1u)) == 0u)) && fc->band_pct >= 1u &&
@@ -69,7 +69,7 @@ bool sl_field_config_ok(const symline_field_config *fc)
            fc->col_cells >= 1u && fc->col_cells <= 4u && fc->edge_slope_pct <= 10000u;
 }
 
-uint32_t sl_field_cell(uint32_t width, const symline_field_config *fc)
+uint32_t symline_i_field_cell(uint32_t width, const symline_field_config *fc)
 {
     /* A cell's texture needs a few neighbour differences to be stable: at
      * least 8 px, 16 px from 1024 px wide on. */
@@ -80,15 +80,15 @@ uint32_t sl_field_cell(uint32_t width, const symline_field_config *fc)
 }
 
 /* Per grid column: scan state, then the column top (pixels), then the hull. */
-typedef struct sl_fcol {
+typedef struct symline_i_fcol {
     int32_t cur;  /* score of the run ending at the current row */
     int32_t best; /* best score seen */
     int32_t top;  /* its top row (grid rows from the bottom), -1 = none */
     int32_t ema;  /* running mean of the column's carpet cells, Q4 */
     uint32_t gap; /* non-carpet cells since the last carpet cell */
-} sl_fcol;
+} symline_i_fcol;
 
-typedef struct sl_fstate {
+typedef struct symline_i_fstate {
     uint32_t s, k, nc, nr;
     uint32_t sx;             /* column spacing: s * col_cells */
     uint32_t lo, hi;         /* accepted cell means */
@@ -97,16 +97,16 @@ typedef struct sl_fstate {
     uint32_t hm[SL_FIELD_BINS], ht[SL_FIELD_BINS];
     uint32_t nb;   /* grid rows of the model's band */
     uint8_t *band; /* their cells' means and textures, read once */
-} sl_fstate;
+} symline_i_fstate;
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 640 bytes for this state and
  * the alignment, and 24 per grid column. */
-typedef char
-    sl_fstate_fits_ws_budget[(sizeof(sl_fstate) <= 600u && sizeof(sl_fcol) <= 24u) ? 1 : -1];
+typedef char symline_i_fstate_fits_ws_budget
+    [(sizeof(symline_i_fstate) <= 600u && sizeof(symline_i_fcol) <= 24u) ? 1 : -1];
 
 static size_t cols_bytes(uint32_t nc)
 {
-    return sl_align_up((size_t)nc * sizeof(sl_fcol));
+    return symline_i_align_up((size_t)nc * sizeof(symline_i_fcol));
 }
 
 /* Grid rows of the carpet model's band. */
@@ -120,18 +120,18 @@ size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symli
 {
     uint32_t s, nc, nb;
     if (fc == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
-        height > SYMLINE_MAX_DIM || !sl_field_config_ok(fc)) {
+        height > SYMLINE_MAX_DIM || !symline_i_field_config_ok(fc)) {
         return 0u;
     }
-    s = sl_field_cell(width, fc);
+    s = symline_i_field_cell(width, fc);
     nc = (width + s * fc->col_cells - 1u) / (s * fc->col_cells); /* <= 65535 */
     nb = band_rows((height + s - 1u) / s, fc);
-    return sl_align_up(sizeof(sl_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
+    return symline_i_align_up(sizeof(symline_i_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
            (size_t)3u * SL_ALIGN;
 }
 
 /* Middle row of grid row r (0 = the lowest). */
-static uint32_t sample_row(const sl_fstate *f, uint32_t h, uint32_t r)
+static uint32_t sample_row(const symline_i_fstate *f, uint32_t h, uint32_t r)
 {
     const uint32_t bottom = h - r * f->s; /* exclusive */
     const uint32_t top = bottom > f->s ? bottom - f->s : 0u;
@@ -153,7 +153,7 @@ static uint32_t absdiff(uint32_t a, uint32_t b)
 /* Mean gray value and relative texture of cell c of a sample row: its
  * pixels, and the differences of neighbours among them. This is the stage's
  * cost. */
-static inline void cell_stats(const sl_fstate *f, const uint8_t *row, uint32_t w, uint32_t c,
+static inline void cell_stats(const symline_i_fstate *f, const uint8_t *row, uint32_t w, uint32_t c,
                               uint32_t *mean, uint32_t *tex)
 {
     const uint32_t x0 = c * f->sx;
@@ -201,7 +201,7 @@ static uint32_t hist_median(const uint32_t *hist, uint32_t total)
 
 /* The carpet model from the lowest band of grid rows. */
 SL_NOINLINE static void carpet_model(const symline_image *img, const symline_field_config *fc,
-                                     sl_fstate *f, symline_field_boundary *out)
+                                     symline_i_fstate *f, symline_field_boundary *out)
 {
     uint32_t r, c, i, total = 0u, tb;
     uint8_t *keep = f->band;
@@ -241,7 +241,7 @@ SL_NOINLINE static void carpet_model(const symline_image *img, const symline_fie
 
 /* Upward scan of every column: the best-scoring run of carpet. */
 SL_NOINLINE static void scan_columns(const symline_image *img, const symline_field_config *fc,
-                                     const sl_fstate *f, sl_fcol *col)
+                                     const symline_i_fstate *f, symline_i_fcol *col)
 {
     uint32_t r, c;
     const int32_t miss = -(int32_t)fc->miss_cost;
@@ -260,7 +260,7 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
             uint32_t m, t;
             int32_t v, dm;
             int tex_ok;
-            sl_fcol *q = &col[c];
+            symline_i_fcol *q = &col[c];
             if (q->gap > gmax) {
                 continue; /* behind a barrier: this column is done */
             }
@@ -308,7 +308,7 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
  * the tops within k columns either side, so a top that fewer than k nearby
  * columns reach (a wall patch that looks like carpet) is not a hull vertex.
  * Reads col[].top, writes col[].ema. */
-SL_NOINLINE static void support_filter(const sl_fstate *f, uint32_t k, sl_fcol *col)
+SL_NOINLINE static void support_filter(const symline_i_fstate *f, uint32_t k, symline_i_fcol *col)
 {
     int32_t best[SL_FIELD_MAX_SUPPORT]; /* the k smallest rows so far, ascending */
     uint32_t c, i, j;
@@ -334,7 +334,7 @@ SL_NOINLINE static void support_filter(const sl_fstate *f, uint32_t k, sl_fcol *
     }
 }
 
-static int32_t col_x(const sl_fstate *f, uint32_t c, uint32_t w)
+static int32_t col_x(const symline_i_fstate *f, uint32_t c, uint32_t w)
 {
     uint32_t x = c * f->sx + f->sx / 2u;
     if (c == 0u) {
@@ -361,8 +361,8 @@ static int32_t chord_y(const symline_field_vertex *a, const symline_field_vertex
 /* Column tops -> boundary polyline (upper hull, thinned). col[c].ema holds
  * the filtered top row in pixels. The hull is built in place over col[].cur
  * (x) and col[].best (y). */
-SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, uint32_t edge_pct,
-                             sl_fcol *col, symline_field_boundary *out)
+SL_NOINLINE static void hull(const symline_image *img, const symline_i_fstate *f, uint32_t edge_pct,
+                             symline_i_fcol *col, symline_field_boundary *out)
 {
     const int32_t h = (int32_t)img->height, xr = (int32_t)img->width - 1;
     uint32_t c, n = 0u, i, k = 0u;
@@ -451,25 +451,25 @@ SL_NOINLINE static void hull(const symline_image *img, const sl_fstate *f, uint3
     out->count = k;
 }
 
-void sl_field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,
-                  size_t ws_size, symline_field_boundary *out)
+void symline_i_field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,
+                         size_t ws_size, symline_field_boundary *out)
 {
     uint8_t *cur = ws, *const end = ws + ws_size;
-    sl_fstate *f = (sl_fstate *)sl_carve(&cur, end, sizeof(sl_fstate));
-    sl_fcol *col;
+    symline_i_fstate *f = (symline_i_fstate *)symline_i_carve(&cur, end, sizeof(symline_i_fstate));
+    symline_i_fcol *col;
     uint32_t c;
     if (f == NULL) {
         return; /* not reached: the workspace size was checked */
     }
-    f->s = sl_field_cell(img->width, fc);
+    f->s = symline_i_field_cell(img->width, fc);
     for (f->k = 0u; (1u << f->k) < f->s; f->k++) {
     }
     f->sx = f->s * fc->col_cells;
     f->nc = (img->width + f->sx - 1u) / f->sx;
     f->nr = (img->height + f->s - 1u) / f->s;
-    col = (sl_fcol *)sl_carve(&cur, end, (size_t)f->nc * sizeof(sl_fcol));
+    col = (symline_i_fcol *)symline_i_carve(&cur, end, (size_t)f->nc * sizeof(symline_i_fcol));
     f->nb = band_rows(f->nr, fc);
-    f->band = (uint8_t *)sl_carve(&cur, end, 2u * (size_t)f->nb * f->nc);
+    f->band = (uint8_t *)symline_i_carve(&cur, end, 2u * (size_t)f->nb * f->nc);
     if (col == NULL || f->band == NULL) {
         return;
     }
@@ -514,13 +514,13 @@ symline_status symline_field_find(const symline_image *img, const symline_field_
     if (fc == NULL || ws == NULL || out == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    if (!sl_field_config_ok(fc)) {
+    if (!symline_i_field_config_ok(fc)) {
         return SYMLINE_ERR_CONFIG;
     }
     if (ws_size < symline_field_workspace_size(img->width, img->height, fc)) {
         return SYMLINE_ERR_BUFFER;
     }
-    sl_field_run(img, fc, (uint8_t *)ws, ws_size, out);
+    symline_i_field_run(img, fc, (uint8_t *)ws, ws_size, out);
     return SYMLINE_OK;
 }
 
@@ -546,8 +546,8 @@ int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
     return (b != NULL && b->count != 0u && y < symline_field_y(b, x)) ? 1 : 0;
 }
 
-void sl_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w, uint32_t width,
-                   uint32_t margin, uint16_t *rows)
+void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
+                          uint32_t width, uint32_t margin, uint16_t *rows)
 {
     const uint32_t s = 1u << level;
     uint32_t x;
@@ -560,7 +560,8 @@ void sl_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w, 
     }
 }
 
-uint32_t sl_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start, uint32_t h)
+uint32_t symline_i_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start,
+                              uint32_t h)
 {
     uint32_t y, i = 0u, k = 0u;
     for (y = 0; y < h; y++) {

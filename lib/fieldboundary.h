@@ -12,25 +12,26 @@
 #include "common.h"
 
 /* Grid step for a frame `width` wide under fc (fc->cell or the automatic one). */
-uint32_t sl_field_cell(uint32_t width, const symline_field_config *fc);
+uint32_t symline_i_field_cell(uint32_t width, const symline_field_config *fc);
 
 /* symline_field_find() without the argument checks (valid image, config,
  * workspace of symline_field_workspace_size() bytes). */
-void sl_field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,
-                  size_t ws_size, symline_field_boundary *out);
+void symline_i_field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,
+                         size_t ws_size, symline_field_boundary *out);
 
 /* 1 when every setting of fc is in its range. */
-bool sl_field_config_ok(const symline_field_config *fc);
+bool symline_i_field_config_ok(const symline_field_config *fc);
 
 /* The first kept row of every column of a pass grid at `level` (w columns,
  * frame `width` px wide): grid row y is kept when its centre lies at most
  * `margin` px above boundary b. rows: w entries. */
-void sl_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w, uint32_t width,
-                   uint32_t margin, uint16_t *rows);
+void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
+                          uint32_t width, uint32_t margin, uint16_t *rows);
 
 /* Drops the points of a pass's raster list (row_start[0..h], points in grid
  * coordinates) that lie above rows[x]; compacts the list in place and
  * returns the number kept. */
-uint32_t sl_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start, uint32_t h);
+uint32_t symline_i_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start,
+                              uint32_t h);
 
 #endif /* SYMLINE_FIELDBOUNDARY_H */

@@ -4,7 +4,7 @@
  */
 #include "fixed.h"
 
-uint64_t sl_isqrt64(uint64_t v)
+uint64_t symline_i_isqrt64(uint64_t v)
 {
     uint64_t r = 0u, bit = (uint64_t)1u << 62;
     while (bit > v) {
@@ -22,7 +22,7 @@ uint64_t sl_isqrt64(uint64_t v)
     return r;
 }
 
-uint32_t sl_div_q8(uint64_t cross, uint64_t len)
+uint32_t symline_i_div_q8(uint64_t cross, uint64_t len)
 {
     /* A 32-bit division (no 64-bit division helper on small cores): drop the
      * same low bits of both; the quotient keeps well under 1/256 px of error

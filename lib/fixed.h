@@ -16,47 +16,47 @@
 /* n whole pixels in Q8 (n an unsigned constant). */
 #define SL_PX_Q8(n) ((n) << SL_Q8_SHIFT)
 
-/* What sl_div_q8() returns for a zero length (no quotient). */
+/* What symline_i_div_q8() returns for a zero length (no quotient). */
 #define SL_Q8_NO_QUOTIENT UINT32_MAX
 
 /* A grid block at `level` is 2^level px wide; its centre lies
  * (2^level - 1) / 2 px after its first pixel's centre: that offset in Q8. */
-static inline uint32_t sl_block_half_q8(uint32_t level)
+static inline uint32_t symline_i_block_half_q8(uint32_t level)
 {
     return ((1u << level) - 1u) << (SL_Q8_SHIFT - 1u);
 }
 
 /* (2^level - 1) px in Q8: what a position at `level` may be off by. */
-static inline uint32_t sl_block_q8(uint32_t level)
+static inline uint32_t symline_i_block_q8(uint32_t level)
 {
     return ((1u << level) - 1u) << SL_Q8_SHIFT;
 }
 
 /* Q8 full-resolution coordinate of grid coordinate v at a level (block centre). */
-static inline int32_t sl_q8(uint32_t v, uint32_t level)
+static inline int32_t symline_i_q8(uint32_t v, uint32_t level)
 {
-    return (int32_t)(((v << level) << SL_Q8_SHIFT) + sl_block_half_q8(level));
+    return (int32_t)(((v << level) << SL_Q8_SHIFT) + symline_i_block_half_q8(level));
 }
 
 /* Q8 full-resolution x (y) of point q of a grid at `level`: the block centre
  * plus the point's sub-pixel offset fx (fy), 1/128 px of that grid
  * (subpixel.c sets it; 0 for points never refined). */
-static inline int32_t sl_pt_q8x(const symline_point *q, uint32_t level)
+static inline int32_t symline_i_pt_q8x(const symline_point *q, uint32_t level)
 {
-    return sl_q8(q->x, level) + (int32_t)q->fx * (int32_t)(2u << level);
+    return symline_i_q8(q->x, level) + (int32_t)q->fx * (int32_t)(2u << level);
 }
 
-static inline int32_t sl_pt_q8y(const symline_point *q, uint32_t level)
+static inline int32_t symline_i_pt_q8y(const symline_point *q, uint32_t level)
 {
-    return sl_q8(q->y, level) + (int32_t)q->fy * (int32_t)(2u << level);
+    return symline_i_q8(q->y, level) + (int32_t)q->fy * (int32_t)(2u << level);
 }
 
 /* Makes grid point q at `level` a full-resolution point: the nearest pixel
  * and the remainder, 1/128 px in -64..63 (the public symline_point). */
-static inline void sl_pt_to_full(symline_point *q, uint32_t level)
+static inline void symline_i_pt_to_full(symline_point *q, uint32_t level)
 {
     /* Q7 full-resolution coordinates: half the Q8 ones (always even). */
-    const int32_t x7 = sl_pt_q8x(q, level) / 2, y7 = sl_pt_q8y(q, level) / 2;
+    const int32_t x7 = symline_i_pt_q8x(q, level) / 2, y7 = symline_i_pt_q8y(q, level) / 2;
     const int32_t x = (x7 + 64) >> 7, y = (y7 + 64) >> 7;
     q->x = (uint16_t)x;
     q->y = (uint16_t)y;
@@ -65,10 +65,10 @@ static inline void sl_pt_to_full(symline_point *q, uint32_t level)
 }
 
 /* floor(sqrt(v)), bit by bit (no multiply, no division). */
-uint64_t sl_isqrt64(uint64_t v);
+uint64_t symline_i_isqrt64(uint64_t v);
 
 /* cross / len with a 32-bit division: both are shifted right alike until
  * cross fits 32 bits. SL_Q8_NO_QUOTIENT when len is 0. */
-uint32_t sl_div_q8(uint64_t cross, uint64_t len);
+uint32_t symline_i_div_q8(uint64_t cross, uint64_t len);
 
 #endif /* SYMLINE_LIB_FIXED_H */

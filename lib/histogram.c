@@ -11,12 +11,12 @@
 
 size_t symline_histogram_workspace_size(uint32_t width, uint32_t m)
 {
-    if (width == 0u || width > SYMLINE_MAX_DIM || sl_check_radius(m) != SYMLINE_OK) {
+    if (width == 0u || width > SYMLINE_MAX_DIM || symline_i_check_radius(m) != SYMLINE_OK) {
         return 0u;
     }
     /* one row of energies and one row of extrema */
-    return sl_align_up((size_t)width * sizeof(uint32_t)) + sl_align_up((size_t)width) +
-           (size_t)2u * SL_ALIGN;
+    return symline_i_align_up((size_t)width * sizeof(uint32_t)) +
+           symline_i_align_up((size_t)width) + (size_t)2u * SL_ALIGN;
 }
 
 /* Carves the energy and map rows; arguments already checked. */
@@ -25,8 +25,8 @@ static symline_status carve_rows(uint32_t width, void *ws, size_t ws_size, uint3
 {
     uint8_t *cur = (uint8_t *)ws;
     uint8_t *const end = cur + ws_size;
-    *E = (uint32_t *)sl_carve(&cur, end, (size_t)width * sizeof(uint32_t));
-    *map = (uint8_t *)sl_carve(&cur, end, width);
+    *E = (uint32_t *)symline_i_carve(&cur, end, (size_t)width * sizeof(uint32_t));
+    *map = (uint8_t *)symline_i_carve(&cur, end, width);
     return (*E == NULL || *map == NULL) ? SYMLINE_ERR_BUFFER : SYMLINE_OK;
 }
 
@@ -52,7 +52,7 @@ symline_status symline_histogram_row(const uint8_t *row, uint32_t width, uint32_
     if (width == 0u || width > SYMLINE_MAX_DIM) {
         return SYMLINE_ERR_SIZE;
     }
-    st = sl_check_radius(m);
+    st = symline_i_check_radius(m);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -81,7 +81,7 @@ symline_status symline_histogram(const symline_image *img, uint32_t m, uint16_t 
     if (counts == NULL || ws == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    st = sl_check_radius(m);
+    st = symline_i_check_radius(m);
     if (st != SYMLINE_OK) {
         return st;
     }

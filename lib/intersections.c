@@ -72,7 +72,7 @@ static uint32_t atan_ratio(uint32_t lo, uint32_t hi)
     return ATAN_Q8[i] + (((uint32_t)(ATAN_Q8[i + 1u] - ATAN_Q8[i]) * f + 1024u) >> 11);
 }
 
-uint32_t sl_heading_q8(int32_t dx, int32_t dy)
+uint32_t symline_i_heading_q8(int32_t dx, int32_t dy)
 {
     const uint32_t ax = dx < 0 ? 0u - (uint32_t)dx : (uint32_t)dx;
     const uint32_t ay = dy < 0 ? 0u - (uint32_t)dy : (uint32_t)dy;
@@ -364,15 +364,15 @@ SL_NOINLINE static uint32_t rays_of(const ix_poly *p, uint32_t k, const ix_hit *
     const int hf = ray_of(p, k, t, h->x, h->y, 0, ip, &fwd);
     uint32_t n = 0u;
     if (hb && hf && p->pts != NULL) {
-        rays[1] = sl_heading_q8(fwd.x - back.x, fwd.y - back.y);
+        rays[1] = symline_i_heading_q8(fwd.x - back.x, fwd.y - back.y);
         rays[0] = (rays[1] + IX_DEG_180) % SYMLINE_DEG_Q8_FULL;
         return 2u;
     }
     if (hb) {
-        rays[n++] = sl_heading_q8(back.x - h->x, back.y - h->y);
+        rays[n++] = symline_i_heading_q8(back.x - h->x, back.y - h->y);
     }
     if (hf) {
-        rays[n++] = sl_heading_q8(fwd.x - h->x, fwd.y - h->y);
+        rays[n++] = symline_i_heading_q8(fwd.x - h->x, fwd.y - h->y);
     }
     return n;
 }

@@ -12,6 +12,6 @@
 
 /* Direction of the vector (dx, dy) in Q8 degrees, [0, 360*256): 0 along +x,
  * 90*256 along +y; within 0.01 degree. (0, 0) gives 0. */
-uint32_t sl_heading_q8(int32_t dx, int32_t dy);
+uint32_t symline_i_heading_q8(int32_t dx, int32_t dy);
 
 #endif /* SYMLINE_LIB_INTERSECTIONS_H */

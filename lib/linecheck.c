@@ -11,8 +11,8 @@
  * resolution. */
 #define SL_WIDE_REL_Q8 64u
 
-SL_NOINLINE bool sl_linecheck_too_wide(const uint16_t *rows, uint32_t level, uint32_t h,
-                                       const symline_point *q, uint32_t n)
+SL_NOINLINE bool symline_i_linecheck_too_wide(const uint16_t *rows, uint32_t level, uint32_t h,
+                                              const symline_point *q, uint32_t n)
 {
     /* At most 256 points summed: 16-bit coordinates keep the sums in 32 bits. */
     const uint32_t step = n / 256u + 1u;

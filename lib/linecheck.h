@@ -18,7 +18,7 @@
  * the field below the boundary (rows[x]: the first field row of grid column
  * x; a boundary at the top of the frame tells nothing and passes).
  */
-bool sl_linecheck_too_wide(const uint16_t *rows, uint32_t level, uint32_t h, const symline_point *q,
-                           uint32_t n);
+bool symline_i_linecheck_too_wide(const uint16_t *rows, uint32_t level, uint32_t h,
+                                  const symline_point *q, uint32_t n);
 
 #endif /* SYMLINE_LIB_LINECHECK_H */

@@ -20,7 +20,7 @@
 /* The statistics read every SL_STATS_STEP-th pixel of every SL_STATS_STEP-th row. */
 #define SL_STATS_STEP 4u
 
-void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg)
+void symline_i_linefilter_setup(symline_i_linefilter *f, const symline_config *cfg)
 {
     f->kind = cfg->filter;
     f->a_distance = 0u;
@@ -35,8 +35,8 @@ void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg)
 }
 
 /* Summed per row so a row's sums stay in 32 bits. */
-SL_NOINLINE void sl_frame_stats_measure(const symline_image *img, const uint16_t *top,
-                                        uint32_t *hist, sl_frame_stats *st)
+SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const uint16_t *top,
+                                               uint32_t *hist, symline_i_frame_stats *st)
 {
     uint32_t x, y, i, n = 0u, half, acc, med, mad;
     for (i = 0; i < 256u; i++) {
@@ -77,7 +77,8 @@ SL_NOINLINE void sl_frame_stats_measure(const symline_image *img, const uint16_t
 /* side_sigma10 of this much or more leaves the sides alone. */
 #define SL_SIDE_SIGMA10_OFF 100
 
-void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_frame_stats *st)
+void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *cfg,
+                                const symline_i_frame_stats *st)
 {
     const uint32_t mean = st->mean, sigma_q4 = st->sigma_q4;
     const int64_t t = (int64_t)mean + (int64_t)cfg->bright_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
@@ -113,9 +114,10 @@ void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_f
  * synthetic sets). */
 #define SL_SHORT_PX 16u
 
-SL_NOINLINE bool sl_linefilter_piece_fails(const sl_linefilter *f, const symline_image *img,
-                                           symline_axis axis, uint32_t level, uint32_t k,
-                                           const symline_point *q, uint32_t n)
+SL_NOINLINE bool symline_i_linefilter_piece_fails(const symline_i_linefilter *f,
+                                                  const symline_image *img, symline_axis axis,
+                                                  uint32_t level, uint32_t k,
+                                                  const symline_point *q, uint32_t n)
 {
     const bool horiz = axis == SYMLINE_AXIS_HORIZONTAL;
     const uint32_t half = (1u << level) >> 1, off = k << level;

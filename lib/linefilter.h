@@ -12,7 +12,7 @@
 #include "symline/detect.h"
 
 /* The thresholds of one pass (gray levels unless noted). */
-typedef struct sl_linefilter {
+typedef struct symline_i_linefilter {
     symline_filter kind;
     uint32_t min_gray;   /* smallest gray value of a line point (illumination) */
     uint32_t ridge_pct;  /* contrast: ridge height >= this % of the centre gray value */
@@ -20,37 +20,39 @@ typedef struct sl_linefilter {
     uint32_t asym_pct;   /* contrast: ridge height >= this % of |lo - hi|; 0 = off */
     uint32_t side_max;   /* contrast: largest gray value of the ridge's sides (255: any) */
     uint32_t a_distance; /* paper: A point search distance across the line, grid px; 0 otherwise */
-} sl_linefilter;
+} symline_i_linefilter;
 
 /* Level and spread of the gray values the thresholds adapt to, robust to the
  * lines, robots and lights among them. */
-typedef struct sl_frame_stats {
+typedef struct symline_i_frame_stats {
     uint32_t mean;     /* the median, gray levels */
     uint32_t sigma_q4; /* 1.4826 x the median absolute deviation (the standard
                           deviation of normal noise), gray levels, Q4 */
-} sl_frame_stats;
+} symline_i_frame_stats;
 
 /* The thresholds as configured (no range checks). */
-void sl_linefilter_setup(sl_linefilter *f, const symline_config *cfg);
+void symline_i_linefilter_setup(symline_i_linefilter *f, const symline_config *cfg);
 
-/* Scratch of sl_frame_stats_measure(): a histogram of the gray values. */
+/* Scratch of symline_i_frame_stats_measure(): a histogram of the gray values. */
 #define SL_STATS_HIST_BYTES (256u * sizeof(uint32_t))
 
 /* The statistics of the field (rows y >= top[x] of each column x; top NULL:
  * the whole frame) on every 4th pixel of every 4th row. hist:
  * SL_STATS_HIST_BYTES of scratch. Both 0 when no pixel is measured. */
-void sl_frame_stats_measure(const symline_image *img, const uint16_t *top, uint32_t *hist,
-                            sl_frame_stats *st);
+void symline_i_frame_stats_measure(const symline_image *img, const uint16_t *top, uint32_t *hist,
+                                   symline_i_frame_stats *st);
 
 /* The adaptive thresholds (cfg->adaptive) folded into f: each only raises
  * the configured one (side_max: replaces it unless side_sigma10 is 100). */
-void sl_linefilter_adapt(sl_linefilter *f, const symline_config *cfg, const sl_frame_stats *st);
+void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *cfg,
+                                const symline_i_frame_stats *st);
 
 /* The gray-value part of the line filter for an S point with centre value c
  * and values lo, hi at k pixels before and after it across the line (clamped
  * at the border). True for a line point (the paper filter's A-point test is
- * sl_linefilter_a_near()). Inline: it runs for every S point. */
-static inline bool sl_linefilter_gray(const sl_linefilter *f, uint32_t c, uint32_t lo, uint32_t hi)
+ * symline_i_linefilter_a_near()). Inline: it runs for every S point. */
+static inline bool symline_i_linefilter_gray(const symline_i_linefilter *f, uint32_t c, uint32_t lo,
+                                             uint32_t hi)
 {
     uint32_t side, need;
     if (c < f->min_gray) {
@@ -81,8 +83,8 @@ static inline bool sl_linefilter_gray(const sl_linefilter *f, uint32_t c, uint32
  * a row, the row length and the ring's row count for a column of a ring of
  * rows. Inline like the gray test: it runs for every S point that passed it.
  */
-static inline bool sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *map, uint32_t ring,
-                                        size_t step, uint32_t n, uint32_t at)
+static inline bool symline_i_linefilter_a_near(const symline_i_linefilter *f, const uint8_t *map,
+                                               uint32_t ring, size_t step, uint32_t n, uint32_t at)
 {
     const uint32_t d = f->a_distance;
     const uint32_t lo = at >= d ? at - d : 0u;
@@ -105,7 +107,8 @@ static inline bool sl_linefilter_a_near(const sl_linefilter *f, const uint8_t *m
  * in px (the carpet's grain makes short ridges). Only for the contrast filter
  * with asym_pct != 0.
  */
-bool sl_linefilter_piece_fails(const sl_linefilter *f, const symline_image *img, symline_axis axis,
-                               uint32_t level, uint32_t k, const symline_point *q, uint32_t n);
+bool symline_i_linefilter_piece_fails(const symline_i_linefilter *f, const symline_image *img,
+                                      symline_axis axis, uint32_t level, uint32_t k,
+                                      const symline_point *q, uint32_t n);
 
 #endif /* SYMLINE_LIB_LINEFILTER_H */

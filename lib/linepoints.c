@@ -23,8 +23,8 @@
 #include "stagemark.h"
 #include "symmetry.h"
 
-void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_t *acc,
-                 uint8_t *out)
+void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
+                        uint16_t *acc, uint8_t *out)
 {
     const uint32_t s = 1u << p->level;
     const uint32_t shift = 2u * p->level;
@@ -63,15 +63,15 @@ void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_
 }
 
 /* Rows of the horizontal-axis rings. */
-static uint32_t h_delta(const sl_pass *p)
+static uint32_t h_delta(const symline_i_pass *p)
 {
     return p->filter.a_distance + p->lag + 1u;
 }
-static uint32_t h_map_rows(const sl_pass *p)
+static uint32_t h_map_rows(const symline_i_pass *p)
 {
     return h_delta(p) + p->filter.a_distance;
 }
-static uint32_t h_gray_rows(const sl_pass *p)
+static uint32_t h_gray_rows(const symline_i_pass *p)
 {
     return h_delta(p) + p->k + p->m + 1u;
 }
@@ -79,7 +79,7 @@ static uint32_t h_gray_rows(const sl_pass *p)
 /* State of the horizontal-axis rings (kept in the workspace). */
 typedef struct hring {
     const symline_image *img;
-    const sl_pass *p;
+    const symline_i_pass *p;
     uint8_t *map;  /* map_rows rows of w */
     uint8_t *gray; /* gray_rows rows of w (levels > 0) */
     uint32_t map_rows, gray_rows;
@@ -87,35 +87,36 @@ typedef struct hring {
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 6 bytes per extremum and 8 per
  * row pointer, and the ring state within its fixed part (see pass.c). */
-typedef char
-    sl_ring_state_fits_ws_budget[(sizeof(hring) + sizeof(symline_colrun) <= 80u &&
-                                  sizeof(symline_extremum) <= 6u && sizeof(const uint8_t *) <= 8u)
-                                     ? 1
-                                     : -1];
+typedef char symline_i_ring_state_fits_ws_budget[(sizeof(hring) + sizeof(symline_colrun) <= 80u &&
+                                                  sizeof(symline_extremum) <= 6u &&
+                                                  sizeof(const uint8_t *) <= 8u)
+                                                     ? 1
+                                                     : -1];
 
-size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width)
+size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
 {
     size_t n = (size_t)6u * SL_ALIGN;
     const size_t w = p->w;
-    n += sl_align_up(w * sizeof(uint32_t)); /* energies */
+    n += symline_i_align_up(w * sizeof(uint32_t)); /* energies */
     if (p->level > 0u) {
-        n += sl_align_up((size_t)img_width * sizeof(uint16_t)); /* box accumulator */
+        n += symline_i_align_up((size_t)img_width * sizeof(uint16_t)); /* box accumulator */
     }
     if (p->axis == SYMLINE_AXIS_VERTICAL) {
-        n += sl_align_up(w); /* extrema of the row */
+        n += symline_i_align_up(w); /* extrema of the row */
         if (p->level > 0u) {
-            n += sl_align_up(w); /* the grid row */
+            n += symline_i_align_up(w); /* the grid row */
         }
         return n;
     }
-    n += sl_align_up(sizeof(hring)) + sl_align_up(sizeof(symline_colrun)) + (size_t)2u * SL_ALIGN;
+    n += symline_i_align_up(sizeof(hring)) + symline_i_align_up(sizeof(symline_colrun)) +
+         (size_t)2u * SL_ALIGN;
     n += symline_colrun_buffer_size(p->w);
-    n += sl_align_up(w * sizeof(symline_extremum));
-    n += sl_align_up(w * (size_t)h_map_rows(p));
+    n += symline_i_align_up(w * sizeof(symline_extremum));
+    n += symline_i_align_up(w * (size_t)h_map_rows(p));
     if (p->level > 0u) {
-        n += sl_align_up(w * (size_t)h_gray_rows(p));
+        n += symline_i_align_up(w * (size_t)h_gray_rows(p));
     }
-    n += sl_align_up((2u * (size_t)p->m + 1u) * sizeof(const uint8_t *));
+    n += symline_i_align_up((2u * (size_t)p->m + 1u) * sizeof(const uint8_t *));
     return n;
 }
 
@@ -133,13 +134,14 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 
 /* ---- vertical axis: along rows ---- */
 
-SL_NOINLINE static symline_status collect_vertical(const symline_image *img, const sl_pass *p,
-                                                   uint8_t *cur, uint8_t *end, symline_point *pts,
-                                                   uint32_t cap, uint32_t *n, uint32_t *row_start,
+SL_NOINLINE static symline_status collect_vertical(const symline_image *img,
+                                                   const symline_i_pass *p, uint8_t *cur,
+                                                   uint8_t *end, symline_point *pts, uint32_t cap,
+                                                   uint32_t *n, uint32_t *row_start,
                                                    uint32_t *dropped)
 {
-    uint32_t *E = (uint32_t *)sl_carve(&cur, end, (size_t)p->w * sizeof(uint32_t));
-    uint8_t *map = (uint8_t *)sl_carve(&cur, end, p->w);
+    uint32_t *E = (uint32_t *)symline_i_carve(&cur, end, (size_t)p->w * sizeof(uint32_t));
+    uint8_t *map = (uint8_t *)symline_i_carve(&cur, end, p->w);
     uint16_t *acc = NULL;
     uint8_t *grow = NULL;
     uint32_t y, x;
@@ -148,8 +150,8 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img, con
      * stores below, and reported a NULL row otherwise). */
     const uint32_t w = p->w, k = p->k, level = p->level;
     if (level > 0u) {
-        acc = (uint16_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
-        grow = (uint8_t *)sl_carve(&cur, end, p->w);
+        acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+        grow = (uint8_t *)symline_i_carve(&cur, end, p->w);
         if (acc == NULL || grow == NULL) {
             return SYMLINE_ERR_BUFFER;
         }
@@ -164,23 +166,24 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img, con
             row = img->data + (size_t)y * img->stride;
         } else {
             SL_STAGE(GRID);
-            sl_grid_row(img, p, y, acc, grow);
+            symline_i_grid_row(img, p, y, acc, grow);
             row = grow;
         }
         SL_STAGE(OPERATOR);
         (void)symline_energy_row(row, w, p->m, E);
         SL_STAGE(EXTREMA);
-        sl_extrema_runs(E, w, p->lag, map);
+        symline_i_extrema_runs(E, w, p->lag, map);
         SL_STAGE(FILTER);
         for (x = 0; x < w; x++) {
             if (map[x] != SYMLINE_MAP_S) {
                 continue;
             }
-            if (!sl_linefilter_gray(&p->filter, row[x], row[x >= k ? x - k : 0u],
-                                    row[x + k < w ? x + k : w - 1u])) {
+            if (!symline_i_linefilter_gray(&p->filter, row[x], row[x >= k ? x - k : 0u],
+                                           row[x + k < w ? x + k : w - 1u])) {
                 continue;
             }
-            if (p->filter.a_distance != 0u && !sl_linefilter_a_near(&p->filter, map, w, 1u, w, x)) {
+            if (p->filter.a_distance != 0u &&
+                !symline_i_linefilter_a_near(&p->filter, map, w, 1u, w, x)) {
                 continue;
             }
             push_point(pts, cap, n, x, y, dropped);
@@ -208,7 +211,7 @@ static uint8_t *h_map(const hring *r, uint32_t y)
 static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap, uint32_t *n,
                      uint32_t *row_start, uint32_t *dropped)
 {
-    const sl_pass *p = r->p;
+    const symline_i_pass *p = r->p;
     const uint8_t *map = h_map(r, y);
     const uint8_t *c = h_row(r, y);
     const uint8_t *lo = h_row(r, y >= p->k ? y - p->k : 0u);
@@ -219,34 +222,35 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
         if (map[x] != SYMLINE_MAP_S) {
             continue;
         }
-        if (!sl_linefilter_gray(&p->filter, c[x], lo[x], hi[x])) {
+        if (!symline_i_linefilter_gray(&p->filter, c[x], lo[x], hi[x])) {
             continue;
         }
         if (p->filter.a_distance != 0u &&
-            !sl_linefilter_a_near(&p->filter, r->map + x, r->map_rows, p->w, p->h, y)) {
+            !symline_i_linefilter_a_near(&p->filter, r->map + x, r->map_rows, p->w, p->h, y)) {
             continue;
         }
         push_point(pts, cap, n, x, y, dropped);
     }
 }
 
-SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, const sl_pass *p,
-                                                     uint8_t *cur, uint8_t *end, symline_point *pts,
-                                                     uint32_t cap, uint32_t *n, uint32_t *row_start,
+SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
+                                                     const symline_i_pass *p, uint8_t *cur,
+                                                     uint8_t *end, symline_point *pts, uint32_t cap,
+                                                     uint32_t *n, uint32_t *row_start,
                                                      uint32_t *dropped)
 {
-    hring *rp = (hring *)sl_carve(&cur, end, sizeof(hring));
-    symline_colrun *cr = (symline_colrun *)sl_carve(&cur, end, sizeof(symline_colrun));
+    hring *rp = (hring *)symline_i_carve(&cur, end, sizeof(hring));
+    symline_colrun *cr = (symline_colrun *)symline_i_carve(&cur, end, sizeof(symline_colrun));
     const uint32_t w = p->w, h = p->h, m = p->m;
     const uint32_t delta = h_delta(p);
     if (rp == NULL || cr == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
     const size_t cr_bytes = symline_colrun_buffer_size(w);
-    uint32_t *E = (uint32_t *)sl_carve(&cur, end, (size_t)w * sizeof(uint32_t));
-    void *cr_buf = sl_carve(&cur, end, cr_bytes);
+    uint32_t *E = (uint32_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint32_t));
+    void *cr_buf = symline_i_carve(&cur, end, cr_bytes);
     symline_extremum *ev =
-        (symline_extremum *)sl_carve(&cur, end, (size_t)w * sizeof(symline_extremum));
+        (symline_extremum *)symline_i_carve(&cur, end, (size_t)w * sizeof(symline_extremum));
     const uint8_t **rows;
     uint16_t *acc = NULL;
     uint32_t t, y, produced = 0u, i;
@@ -254,16 +258,17 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
     rp->p = p;
     rp->map_rows = h_map_rows(p);
     rp->gray_rows = h_gray_rows(p);
-    rp->map = (uint8_t *)sl_carve(&cur, end, (size_t)w * rp->map_rows);
+    rp->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->map_rows);
     rp->gray = NULL;
     if (p->level > 0u) {
-        rp->gray = (uint8_t *)sl_carve(&cur, end, (size_t)w * rp->gray_rows);
-        acc = (uint16_t *)sl_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+        rp->gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->gray_rows);
+        acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
         if (rp->gray == NULL || acc == NULL) {
             return SYMLINE_ERR_BUFFER;
         }
     }
-    rows = (const uint8_t **)sl_carve(&cur, end, (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
+    rows = (const uint8_t **)symline_i_carve(&cur, end,
+                                             (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
     if (E == NULL || cr_buf == NULL || ev == NULL || rp->map == NULL || rows == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
@@ -274,8 +279,8 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
             const uint32_t need = (t + m < h) ? t + m : h - 1u;
             SL_STAGE(GRID);
             while (produced <= need) {
-                sl_grid_row(img, p, produced, acc,
-                            rp->gray + (size_t)(produced % rp->gray_rows) * w);
+                symline_i_grid_row(img, p, produced, acc,
+                                   rp->gray + (size_t)(produced % rp->gray_rows) * w);
                 produced++;
             }
         }
@@ -323,9 +328,9 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img, c
     return SYMLINE_OK;
 }
 
-symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
-                          symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
-                          uint32_t *dropped)
+symline_status symline_i_collect(const symline_image *img, const symline_i_pass *p, void *ws,
+                                 size_t ws_size, symline_point *pts, uint32_t cap, uint32_t *n,
+                                 uint32_t *row_start, uint32_t *dropped)
 {
     uint8_t *cur = (uint8_t *)ws;
     uint8_t *end = cur + ws_size;

@@ -12,24 +12,24 @@
 #include "symline/detect.h"
 
 /* One pass: an axis at one scale. Coordinates of a pass are on its grid.
- * Filled by sl_pass_setup() (pass.c). */
-typedef struct sl_pass {
+ * Filled by symline_i_pass_setup() (pass.c). */
+typedef struct symline_i_pass {
     symline_axis axis;
     uint32_t level; /* grid = frame box-downsampled by 2^level */
     uint32_t w, h;  /* grid size: width >> level, height >> level */
     uint32_t m;     /* radius */
     uint32_t k;     /* contrast sample offset across the line: m + 1 */
     uint32_t lag;   /* longest accepted plateau: end - marked index <= lag (= m) */
-    sl_linefilter filter;
-} sl_pass;
+    symline_i_linefilter filter;
+} symline_i_pass;
 
 /* Box-downsampled row y of the pass grid into out (p->w bytes);
  * acc: scratch of img->width uint16_t. Level 0 copies the row. */
-void sl_grid_row(const symline_image *img, const sl_pass *p, uint32_t y, uint16_t *acc,
-                 uint8_t *out);
+void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
+                        uint16_t *acc, uint8_t *out);
 
-/* Workspace bytes of sl_collect() (row index excluded). */
-size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width);
+/* Workspace bytes of symline_i_collect() (row index excluded). */
+size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width);
 
 /*
  * The line points of one pass, in raster order, grid coordinates, written to
@@ -38,10 +38,10 @@ size_t sl_collect_ws_size(const sl_pass *p, uint32_t img_width);
  * points that did not fit (cap too small). Strip processing: only a ring of
  * rows is held.
  * Returns SYMLINE_OK, SYMLINE_ERR_SIZE (empty grid) or SYMLINE_ERR_BUFFER
- * (ws_size below sl_collect_ws_size()).
+ * (ws_size below symline_i_collect_ws_size()).
  */
-symline_status sl_collect(const symline_image *img, const sl_pass *p, void *ws, size_t ws_size,
-                          symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *row_start,
-                          uint32_t *dropped);
+symline_status symline_i_collect(const symline_image *img, const symline_i_pass *p, void *ws,
+                                 size_t ws_size, symline_point *pts, uint32_t cap, uint32_t *n,
+                                 uint32_t *row_start, uint32_t *dropped);
 
 #endif /* SYMLINE_LIB_LINEPOINTS_H */

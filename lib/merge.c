@@ -65,7 +65,7 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
         const symline_segment *o = i < 2u ? b : a;
         int32_t x, y;
         end_of(a, b, i, &x, &y);
-        if (sl_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
+        if (symline_i_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
             return false;
         }
     }
@@ -95,15 +95,18 @@ SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_s
                                        const symline_point *pts, const int32_t ends[4],
                                        uint32_t curve_q8)
 {
-    uint32_t d = sl_max_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    uint32_t sm = sl_smooth_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    uint32_t d =
+        symline_i_max_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    uint32_t sm =
+        symline_i_smooth_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     const uint32_t d2 =
-        sl_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+        symline_i_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     const uint32_t sm2 =
-        sl_smooth_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+        symline_i_smooth_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     d = d2 > d ? d2 : d;
     sm = sm2 > sm ? sm2 : sm;
-    return sl_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_JOINED_IS_CURVE : d;
+    return symline_i_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_JOINED_IS_CURVE
+                                                                                : d;
 }
 
 /* A line may join; so may a piece taken for a curve whose points, smoothed,
@@ -112,7 +115,8 @@ SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_s
 static bool joinable(const symline_segment *s, const symline_point *pts, uint32_t curve_q8)
 {
     return s->kind == SYMLINE_KIND_LINE ||
-           sl_smooth_dev(pts + s->first, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <= curve_q8 / 2u;
+           symline_i_smooth_dev(pts + s->first, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <=
+               curve_q8 / 2u;
 }
 
 /* A segment's ends, Q8. */
@@ -145,9 +149,9 @@ static void absorb(symline_result *r, uint32_t i, uint32_t j)
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
     uint32_t k;
-    sl_reverse_points(r->points + mid0, midn);
-    sl_reverse_points(r->points + b_first, b_count);
-    sl_reverse_points(r->points + mid0, midn + b_count);
+    symline_i_reverse_points(r->points + mid0, midn);
+    symline_i_reverse_points(r->points + b_first, b_count);
+    symline_i_reverse_points(r->points + mid0, midn + b_count);
     for (k = i + 1u; k < j; k++) {
         r->segments[k].first += b_count;
     }
@@ -158,7 +162,7 @@ static void absorb(symline_result *r, uint32_t i, uint32_t j)
     r->segment_count--;
 }
 
-void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8)
+void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8)
 {
     const uint64_t gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
     uint32_t i, j;
@@ -179,10 +183,10 @@ void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curv
                 symline_segment *a = &r->segments[i];
                 const symline_segment *b = &r->segments[j];
                 const uint32_t level = a->level > b->level ? a->level : b->level;
-                const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
+                const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
                 /* The cheap geometric test first; both are pure, so the order
                  * changes nothing but the cost. */
-                if (!mergeable(a, b, gap2, dev_q8 + sl_block_half_q8(level), ends) ||
+                if (!mergeable(a, b, gap2, dev_q8 + symline_i_block_half_q8(level), ends) ||
                     !joinable(b, r->points, curve_dev_q8)) {
                     continue;
                 }

@@ -15,6 +15,6 @@
  * The joined piece's points are kept contiguous by rotation (piece after
  * piece); a merged segment gets merged = true.
  */
-void sl_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8);
+void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8);
 
 #endif /* SYMLINE_LIB_MERGE_H */

@@ -51,13 +51,13 @@ static int frame_ok(uint32_t width, uint32_t height)
 
 size_t symline_muff_accumulator_size(uint32_t width, uint32_t height, const symline_muff_config *c)
 {
-    sl_perim p;
+    symline_i_perim p;
     uint64_t bytes;
     if (!frame_ok(width, height) || !config_ok(c)) {
         return 0u;
     }
-    sl_perim_setup(&p, width, height, symline_muff_cell(c, width));
-    bytes = sl_pair_count(&p) * sizeof(uint16_t);
+    symline_i_perim_setup(&p, width, height, symline_muff_cell(c, width));
+    bytes = symline_i_pair_count(&p) * sizeof(uint16_t);
     if (p.ncell > 65535u || bytes > (uint64_t)(size_t)-1) {
         return 0u;
     }
@@ -66,20 +66,22 @@ size_t symline_muff_accumulator_size(uint32_t width, uint32_t height, const syml
 
 size_t symline_muff_workspace_size(uint32_t width, uint32_t height, const symline_muff_config *c)
 {
-    sl_perim p;
+    symline_i_perim p;
     const size_t longer = width > height ? width : height;
     if (symline_muff_accumulator_size(width, height, c) == 0u) {
         return 0u;
     }
-    sl_perim_setup(&p, width, height, symline_muff_cell(c, width));
-    return sl_align_up(sizeof(sl_extent)) + 2u * sl_align_up((size_t)p.ncell * sizeof(uint16_t)) +
-           sl_align_up((size_t)c->max_peaks * sizeof(sl_peak)) +
-           sl_align_up(longer * sizeof(uint16_t)) + (size_t)5u * SL_ALIGN;
+    symline_i_perim_setup(&p, width, height, symline_muff_cell(c, width));
+    return symline_i_align_up(sizeof(symline_i_extent)) +
+           2u * symline_i_align_up((size_t)p.ncell * sizeof(uint16_t)) +
+           symline_i_align_up((size_t)c->max_peaks * sizeof(symline_i_peak)) +
+           symline_i_align_up(longer * sizeof(uint16_t)) + (size_t)5u * SL_ALIGN;
 }
 
 /* The segments of the peaks, strongest first; returns how many were written. */
-SL_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const uint16_t *cx,
-                                    const uint16_t *cy, const sl_peak *peaks, uint32_t npeaks,
+SL_NOINLINE static uint32_t extract(symline_i_extent *e, const symline_i_perim *p,
+                                    const uint16_t *cx, const uint16_t *cy,
+                                    const symline_i_peak *peaks, uint32_t npeaks,
                                     symline_result *out)
 {
     /* the peak's line runs through cell centres: up to half a cell off */
@@ -89,14 +91,15 @@ SL_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const uint1
         /* written in place; the spare only tells that the array is full */
         symline_segment *s = nseg < out->segment_cap ? &out->segments[nseg] : &e->spare;
         uint32_t cnt;
-        sl_uvline_through(&e->line, cx[peaks[k].i], cy[peaks[k].i], cx[peaks[k].j], cy[peaks[k].j]);
-        cnt = sl_extent_gather(e, &e->line, coarse);
+        symline_i_uvline_through(&e->line, cx[peaks[k].i], cy[peaks[k].i], cx[peaks[k].j],
+                                 cy[peaks[k].j]);
+        cnt = symline_i_extent_gather(e, &e->line, coarse);
         if (cnt == 0u) {
             continue;
         }
         /* the fit to the points near the peak's line picks the segment's own points */
-        sl_extent_fit(e, cnt, &e->line, &e->fit1);
-        cnt = sl_extent_gather(e, &e->fit1, e->tol_q8);
+        symline_i_extent_fit(e, cnt, &e->line, &e->fit1);
+        cnt = symline_i_extent_gather(e, &e->fit1, e->tol_q8);
         if (cnt == 0u) {
             continue;
         }
@@ -104,8 +107,8 @@ SL_NOINLINE static uint32_t extract(sl_extent *e, const sl_perim *p, const uint1
             out->truncated = true;
             break;
         }
-        sl_extent_fit(e, cnt, &e->fit1, &e->fit2);
-        sl_extent_segment(e, &e->fit2, cnt, s);
+        symline_i_extent_fit(e, cnt, &e->fit1, &e->fit2);
+        symline_i_extent_segment(e, &e->fit2, cnt, s);
         e->used += cnt;
         nseg++;
     }
@@ -116,11 +119,11 @@ symline_status symline_muff_find(uint32_t width, uint32_t height, const symline_
                                  uint16_t *acc, size_t acc_size, void *ws, size_t ws_size,
                                  uint32_t npoints, symline_result *out)
 {
-    sl_perim p;
+    symline_i_perim p;
     uint8_t *cur, *end;
     uint16_t *cx, *cy;
-    sl_peak *peaks;
-    sl_extent *e;
+    symline_i_peak *peaks;
+    symline_i_extent *e;
     size_t need, i;
     uint32_t k, npeaks;
     if (acc == NULL || ws == NULL || out == NULL || c == NULL) {
@@ -149,27 +152,28 @@ symline_status symline_muff_find(uint32_t width, uint32_t height, const symline_
             return SYMLINE_ERR_RANGE;
         }
     }
-    sl_perim_setup(&p, width, height, symline_muff_cell(c, width));
+    symline_i_perim_setup(&p, width, height, symline_muff_cell(c, width));
     cur = (uint8_t *)ws;
     end = cur + ws_size;
-    e = (sl_extent *)sl_carve(&cur, end, sizeof(sl_extent));
-    cx = (uint16_t *)sl_carve(&cur, end, (size_t)p.ncell * sizeof(uint16_t));
-    cy = (uint16_t *)sl_carve(&cur, end, (size_t)p.ncell * sizeof(uint16_t));
-    peaks = (sl_peak *)sl_carve(&cur, end, (size_t)c->max_peaks * sizeof(sl_peak));
+    e = (symline_i_extent *)symline_i_carve(&cur, end, sizeof(symline_i_extent));
+    cx = (uint16_t *)symline_i_carve(&cur, end, (size_t)p.ncell * sizeof(uint16_t));
+    cy = (uint16_t *)symline_i_carve(&cur, end, (size_t)p.ncell * sizeof(uint16_t));
+    peaks =
+        (symline_i_peak *)symline_i_carve(&cur, end, (size_t)c->max_peaks * sizeof(symline_i_peak));
     if (e == NULL || cx == NULL || cy == NULL || peaks == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    e->bins = (uint16_t *)sl_carve(&cur, end,
-                                   (size_t)(width > height ? width : height) * sizeof(uint16_t));
+    e->bins = (uint16_t *)symline_i_carve(
+        &cur, end, (size_t)(width > height ? width : height) * sizeof(uint16_t));
     if (e->bins == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    sl_cell_centres(&p, cx, cy);
+    symline_i_cell_centres(&p, cx, cy);
     for (i = 0; i < need / sizeof(uint16_t); i++) {
         acc[i] = 0u;
     }
-    sl_muff_vote(&p, cx, cy, out->points, npoints, acc);
-    npeaks = sl_muff_peaks(&p, acc, c->min_votes, c->nms_cells, peaks, c->max_peaks);
+    symline_i_muff_vote(&p, cx, cy, out->points, npoints, acc);
+    npeaks = symline_i_muff_peaks(&p, acc, c->min_votes, c->nms_cells, peaks, c->max_peaks);
     e->pts = out->points;
     e->n = npoints;
     e->used = 0u;

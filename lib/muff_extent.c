@@ -15,10 +15,12 @@
 
 static uint32_t sec16_of(int32_t slope16)
 {
-    return (uint32_t)sl_isqrt64(((uint64_t)1u << 32) + (uint64_t)((int64_t)slope16 * slope16));
+    return (uint32_t)symline_i_isqrt64(((uint64_t)1u << 32) +
+                                       (uint64_t)((int64_t)slope16 * slope16));
 }
 
-void sl_uvline_through(sl_uvline *l, uint32_t ax, uint32_t ay, uint32_t bx, uint32_t by)
+void symline_i_uvline_through(symline_i_uvline *l, uint32_t ax, uint32_t ay, uint32_t bx,
+                              uint32_t by)
 {
     const int32_t dx = (int32_t)bx - (int32_t)ax, dy = (int32_t)by - (int32_t)ay;
     const int32_t adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
@@ -36,25 +38,25 @@ void sl_uvline_through(sl_uvline *l, uint32_t ax, uint32_t ay, uint32_t bx, uint
 }
 
 /* v (Q8) of the line at u (Q8). */
-static int32_t v_at(const sl_uvline *l, int32_t u8)
+static int32_t v_at(const symline_i_uvline *l, int32_t u8)
 {
     const int64_t t = (int64_t)l->slope16 * (u8 - l->u0);
     return l->v0 + (int32_t)(t >= 0 ? (t + 32768) >> 16 : -((-t + 32768) >> 16));
 }
 
 /* u and v of a point in Q8 px, its sub-pixel offset (1/128 px) included. */
-static int32_t u_q8(const sl_uvline *l, const symline_point *p)
+static int32_t u_q8(const symline_i_uvline *l, const symline_point *p)
 {
     return l->u_is_y ? (int32_t)(p->y << 8) + 2 * p->fy : (int32_t)(p->x << 8) + 2 * p->fx;
 }
 
-static int32_t v_q8(const sl_uvline *l, const symline_point *p)
+static int32_t v_q8(const symline_i_uvline *l, const symline_point *p)
 {
     return l->u_is_y ? (int32_t)(p->x << 8) + 2 * p->fx : (int32_t)(p->y << 8) + 2 * p->fy;
 }
 
 /* |v distance| (Q8) of point p to l; the pixel u of p in *u. */
-static uint32_t v_dist(const sl_uvline *l, const symline_point *p, uint32_t *u)
+static uint32_t v_dist(const symline_i_uvline *l, const symline_point *p, uint32_t *u)
 {
     const int32_t d = v_q8(l, p) - v_at(l, u_q8(l, p));
     *u = l->u_is_y ? p->y : p->x;
@@ -111,7 +113,8 @@ static int well_filled(const uint16_t *bins, uint32_t lo, uint32_t hi, uint32_t 
 }
 
 /* Least-squares v(u) through the k gathered points, in l's frame. */
-void sl_extent_fit(const sl_extent *e, uint32_t n, const sl_uvline *l, sl_uvline *out)
+void symline_i_extent_fit(const symline_i_extent *e, uint32_t n, const symline_i_uvline *l,
+                          symline_i_uvline *out)
 {
     const symline_point *p = e->pts + e->used;
     uint64_t su = 0u, sv = 0u;
@@ -173,7 +176,8 @@ static void swap_points(symline_point *a, symline_point *b)
     b->fy = fy;
 }
 
-void sl_extent_segment(const sl_extent *e, const sl_uvline *ft, uint32_t cnt, symline_segment *s)
+void symline_i_extent_segment(const symline_i_extent *e, const symline_i_uvline *ft, uint32_t cnt,
+                              symline_segment *s)
 {
     const uint32_t vmax = (ft->u_is_y ? e->width : e->height) - 1u;
     const uint32_t lo = e->lo, hi = e->hi;
@@ -205,7 +209,7 @@ void sl_extent_segment(const sl_extent *e, const sl_uvline *ft, uint32_t cnt, sy
     s->merged = false;
 }
 
-uint32_t sl_extent_gather(sl_extent *e, const sl_uvline *l, uint32_t tol_q8)
+uint32_t symline_i_extent_gather(symline_i_extent *e, const symline_i_uvline *l, uint32_t tol_q8)
 {
     const uint32_t umax = (l->u_is_y ? e->height : e->width) - 1u;
     const uint64_t lim = (uint64_t)tol_q8 * l->sec16; /* |dv| * 2^16 <= tol * sec */

@@ -12,7 +12,7 @@
  */
 #include "muff_internal.h"
 
-void sl_perim_setup(sl_perim *p, uint32_t width, uint32_t height, uint32_t cell)
+void symline_i_perim_setup(symline_i_perim *p, uint32_t width, uint32_t height, uint32_t cell)
 {
     p->w1 = width - 1u;
     p->h1 = height - 1u;
@@ -21,7 +21,7 @@ void sl_perim_setup(sl_perim *p, uint32_t width, uint32_t height, uint32_t cell)
     p->ncell = (p->len + cell - 1u) / cell;
 }
 
-void sl_perim_point(const sl_perim *p, uint32_t s, uint32_t *x, uint32_t *y)
+void symline_i_perim_point(const symline_i_perim *p, uint32_t s, uint32_t *x, uint32_t *y)
 {
     const uint32_t w1 = p->w1, h1 = p->h1;
     if (s <= w1) {
@@ -39,7 +39,7 @@ void sl_perim_point(const sl_perim *p, uint32_t s, uint32_t *x, uint32_t *y)
     }
 }
 
-uint32_t sl_perim_coord(const sl_perim *p, uint32_t x, uint32_t y)
+uint32_t symline_i_perim_coord(const symline_i_perim *p, uint32_t x, uint32_t y)
 {
     const uint32_t w1 = p->w1, h1 = p->h1;
     if (y == 0u) {
@@ -54,12 +54,12 @@ uint32_t sl_perim_coord(const sl_perim *p, uint32_t x, uint32_t y)
     return 2u * w1 + h1 + (h1 - y);
 }
 
-uint64_t sl_pair_count(const sl_perim *p)
+uint64_t symline_i_pair_count(const symline_i_perim *p)
 {
     return (uint64_t)p->ncell * (p->ncell - 1u) / 2u;
 }
 
-void sl_cell_centres(const sl_perim *p, uint16_t *cx, uint16_t *cy)
+void symline_i_cell_centres(const symline_i_perim *p, uint16_t *cx, uint16_t *cy)
 {
     uint32_t i;
     for (i = 0; i < p->ncell; i++) {
@@ -67,7 +67,7 @@ void sl_cell_centres(const sl_perim *p, uint16_t *cx, uint16_t *cy)
         if (s >= p->len) {
             s = p->len - 1u;
         }
-        sl_perim_point(p, s, &x, &y);
+        symline_i_perim_point(p, s, &x, &y);
         cx[i] = (uint16_t)x;
         cy[i] = (uint16_t)y;
     }
@@ -80,7 +80,8 @@ static uint32_t div_round(uint64_t num, uint32_t den)
 }
 
 /* Cell where the ray from border point (ax, ay) through (px, py) leaves the frame. */
-static uint32_t exit_cell(const sl_perim *p, uint32_t ax, uint32_t ay, int32_t dx, int32_t dy)
+static uint32_t exit_cell(const symline_i_perim *p, uint32_t ax, uint32_t ay, int32_t dx,
+                          int32_t dy)
 {
     const uint32_t adx = (uint32_t)(dx < 0 ? -dx : dx), ady = (uint32_t)(dy < 0 ? -dy : dy);
     const uint32_t nx = dx > 0 ? p->w1 - ax : ax; /* room to the side the ray runs to */
@@ -96,11 +97,11 @@ static uint32_t exit_cell(const sl_perim *p, uint32_t ax, uint32_t ay, int32_t d
         ey = dy > 0 ? p->h1 : 0u;
         ex = dx >= 0 ? ax + off : ax - off;
     }
-    return sl_perim_coord(p, ex, ey) / p->cell;
+    return symline_i_perim_coord(p, ex, ey) / p->cell;
 }
 
-void sl_muff_vote(const sl_perim *p, const uint16_t *cx, const uint16_t *cy,
-                  const symline_point *pts, uint32_t n, uint16_t *acc)
+void symline_i_muff_vote(const symline_i_perim *p, const uint16_t *cx, const uint16_t *cy,
+                         const symline_point *pts, uint32_t n, uint16_t *acc)
 {
     const int32_t near = 2 * (int32_t)p->cell;
     uint32_t k, i;
@@ -128,7 +129,7 @@ void sl_muff_vote(const sl_perim *p, const uint16_t *cx, const uint16_t *cy,
 }
 
 /* Counter of pair (a, b) of cells (any order, taken modulo ncell); 0 for a == b. */
-static uint32_t pair_votes(const sl_perim *p, const uint16_t *acc, int32_t a, int32_t b)
+static uint32_t pair_votes(const symline_i_perim *p, const uint16_t *acc, int32_t a, int32_t b)
 {
     const int32_t nc = (int32_t)p->ncell;
     uint32_t ua = (uint32_t)((a % nc + nc) % nc), ub = (uint32_t)((b % nc + nc) % nc);
@@ -145,8 +146,8 @@ static uint32_t pair_votes(const sl_perim *p, const uint16_t *acc, int32_t a, in
 
 /* 1 when pair (i, j) with count v beats every pair within nms cells at both
  * ends; ties go to the pair with the smaller index, so a plateau gives one peak. */
-static int is_peak(const sl_perim *p, const uint16_t *acc, uint32_t i, uint32_t j, uint32_t v,
-                   uint32_t nms)
+static int is_peak(const symline_i_perim *p, const uint16_t *acc, uint32_t i, uint32_t j,
+                   uint32_t v, uint32_t nms)
 {
     const int32_t r = (int32_t)nms;
     const size_t self = (size_t)j * (j - 1u) / 2u + i;
@@ -182,8 +183,8 @@ static int is_peak(const sl_perim *p, const uint16_t *acc, uint32_t i, uint32_t 
     return 1;
 }
 
-uint32_t sl_muff_peaks(const sl_perim *p, const uint16_t *acc, uint32_t min_votes, uint32_t nms,
-                       sl_peak *peaks, uint32_t cap)
+uint32_t symline_i_muff_peaks(const symline_i_perim *p, const uint16_t *acc, uint32_t min_votes,
+                              uint32_t nms, symline_i_peak *peaks, uint32_t cap)
 {
     uint32_t i, j, n = 0u;
     size_t idx = 0u;

@@ -19,7 +19,7 @@
 #include "tracer.h"
 #include "linecheck.h"
 
-/* The bend test (sl_bend_check) runs on pieces at least this long (px) at
+/* The bend test (symline_i_bend_check) runs on pieces at least this long (px) at
  * the finest scales only: coarser grids step by 4 px and more. */
 #define SL_BEND_MIN_PX 16u
 #define SL_BEND_MAX_LEVEL 1u
@@ -30,11 +30,11 @@
 /* The fixed part of SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) holds, besides
  * alignment and the collection's bookkeeping (linepoints.c), a pass's state
  * and the tracer's: they must stay within these budgets on every target. */
-typedef char
-    sl_pass_state_fits_ws_budget[(sizeof(sl_pass) <= 96u && sizeof(sl_tracer) <= 64u) ? 1 : -1];
+typedef char symline_i_pass_state_fits_ws_budget
+    [(sizeof(symline_i_pass) <= 96u && sizeof(symline_i_tracer) <= 64u) ? 1 : -1];
 
-void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uint32_t level,
-                   uint32_t width, uint32_t height)
+void symline_i_pass_setup(symline_i_pass *p, const symline_config *cfg, symline_axis axis,
+                          uint32_t level, uint32_t width, uint32_t height)
 {
     p->axis = axis;
     p->level = level;
@@ -43,7 +43,7 @@ void sl_pass_setup(sl_pass *p, const symline_config *cfg, symline_axis axis, uin
     p->m = cfg->radius;
     p->k = cfg->radius + 1u;
     p->lag = cfg->radius;
-    sl_linefilter_setup(&p->filter, cfg);
+    symline_i_linefilter_setup(&p->filter, cfg);
 }
 
 /* Point i of the storage; NULL for storage that is NULL (capacity 0, which
@@ -55,14 +55,15 @@ static symline_point *point_at(const symline_result *r, uint32_t i)
 
 /* Asks the grid of earlier segments (segindex.h), which tests the few
  * segments near the point instead of every one. */
-static bool covered(const sl_run *d, const sl_segindex *ix, const symline_point *q, uint32_t level)
+static bool covered(const symline_i_run *d, const symline_i_segindex *ix, const symline_point *q,
+                    uint32_t level)
 {
-    const int32_t x = sl_q8(q->x, level), y = sl_q8(q->y, level);
-    return sl_segindex_near(ix, d->r, d->prev_seg, x, y, sl_cover_tol_q8(level));
+    const int32_t x = symline_i_q8(q->x, level), y = symline_i_q8(q->y, level);
+    return symline_i_segindex_near(ix, d->r, d->prev_seg, x, y, symline_i_cover_tol_q8(level));
 }
 
 /* One piece of a chain (grid coordinates, absolute storage index `at`). */
-static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
+static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_t n)
 {
     symline_point *q = d->r->points + at;
     symline_segment *s;
@@ -70,11 +71,12 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     if ((n << p->level) < d->cfg->min_length || n < SL_MIN_PIECE_POINTS) {
         return;
     }
-    if (d->field_rows != NULL && sl_linecheck_too_wide(d->field_rows, p->level, p->h, q, n)) {
+    if (d->field_rows != NULL &&
+        symline_i_linecheck_too_wide(d->field_rows, p->level, p->h, q, n)) {
         return;
     }
     if (p->filter.kind == SYMLINE_FILTER_CONTRAST && p->filter.asym_pct != 0u &&
-        sl_linefilter_piece_fails(&p->filter, d->img, p->axis, p->level, p->k, q, n)) {
+        symline_i_linefilter_piece_fails(&p->filter, d->img, p->axis, p->level, p->k, q, n)) {
         return;
     }
     if (d->nseg >= d->r->segment_cap) {
@@ -83,24 +85,25 @@ static void emit(sl_run *d, const sl_pass *p, uint32_t at, uint32_t n)
     }
     s = &d->r->segments[d->nseg++];
     SL_STAGE(SUBPIXEL);
-    sl_subpixel(d->img, p, q, n);
+    symline_i_subpixel(d->img, p, q, n);
     SL_STAGE(SEGMENTS);
-    sl_fit(q, n, p->level, d->cfg->curve_dev_q8, s);
+    symline_i_fit(q, n, p->level, d->cfg->curve_dev_q8, s);
     /* A flat arc stays under the deviation threshold but bends: a curve too. */
     if (s->kind == SYMLINE_KIND_LINE && d->cfg->curve_bend_q8 != 0u &&
         p->level <= SL_BEND_MAX_LEVEL && (n << p->level) >= SL_BEND_MIN_PX) {
-        sl_bend_check(q, n, p->level, d->cfg->curve_bend_q8, s);
+        symline_i_bend_check(q, n, p->level, d->cfg->curve_bend_q8, s);
     }
     s->axis = (uint8_t)p->axis;
     s->first = at;
     s->count = n;
     for (i = 0; i < n; i++) {
-        sl_pt_to_full(&q[i], p->level);
+        symline_i_pt_to_full(&q[i], p->level);
     }
 }
 
 /* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
-static void chain(sl_run *d, const sl_pass *p, const sl_segindex *ix, uint32_t at, uint32_t n)
+static void chain(symline_i_run *d, const symline_i_pass *p, const symline_i_segindex *ix,
+                  uint32_t at, uint32_t n)
 {
     const symline_point *c = d->r->points + at;
     uint32_t i = 0u;
@@ -114,7 +117,7 @@ static void chain(sl_run *d, const sl_pass *p, const sl_segindex *ix, uint32_t a
             j++;
         }
         for (s = i; s < j;) {
-            const uint32_t len = sl_corner_cut(c + s, j - s);
+            const uint32_t len = symline_i_corner_cut(c + s, j - s);
             emit(d, p, at + s, len);
             s += len;
         }
@@ -138,17 +141,17 @@ static void note_need(symline_result *r, uint32_t need)
 
 /* The raster list of n stored and `dropped` lost points after the kept ones.
  * A call of its own keeps the collection's frame as small as it was. */
-SL_NOINLINE static void note_listed(sl_run *d, uint32_t n, uint32_t dropped)
+SL_NOINLINE static void note_listed(symline_i_run *d, uint32_t n, uint32_t dropped)
 {
     note_need(d->r, sat_add(sat_add(d->npts, n), dropped));
 }
 
 /* Traces the pass's raster list (n points at d->npts) and keeps its
  * segments' points right after the earlier passes' ones. t: the tracer's
- * state, in the pass workspace. Apart from sl_pass_run() so that its frame
+ * state, in the pass workspace. Apart from symline_i_pass_run() so that its frame
  * and the line point collection's are never on the stack together. */
-SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_start, uint32_t n,
-                              sl_tracer *t, const sl_segindex *ix)
+SL_NOINLINE static void trace(symline_i_run *d, const symline_i_pass *p, const uint32_t *row_start,
+                              uint32_t n, symline_i_tracer *t, const symline_i_segindex *ix)
 {
     symline_result *r = d->r;
     const uint32_t base = d->npts;
@@ -156,10 +159,10 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
     uint32_t tail = base + n, cnt, k, w;
     bool cut = false;
     /* Chains go to the storage's free tail after the raster list. */
-    sl_tracer_init(t, point_at(r, base), n, row_start, p->h);
+    symline_i_tracer_init(t, point_at(r, base), n, row_start, p->h);
     SL_STAGE(TRACE);
     while (tail < r->point_cap &&
-           sl_tracer_next(t, point_at(r, tail), r->point_cap - tail, &cnt, &cut)) {
+           symline_i_tracer_next(t, point_at(r, tail), r->point_cap - tail, &cnt, &cut)) {
         SL_STAGE(SEGMENTS);
         chain(d, p, ix, tail, cnt);
         tail += cnt;
@@ -198,13 +201,14 @@ SL_NOINLINE static void trace(sl_run *d, const sl_pass *p, const uint32_t *row_s
 
 /* The pass's raster list into the free part of the point storage (after
  * d->npts), *n points; row_start[p->h + 1] counts those that did not fit. Apart from
- * sl_pass_run() so that the collection's call and the tracing's are never on
+ * symline_i_pass_run() so that the collection's call and the tracing's are never on
  * the stack together. */
-SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *ws,
+SL_NOINLINE static symline_status collect(symline_i_run *d, const symline_i_pass *p, uint8_t *ws,
                                           const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
-    symline_status st = sl_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
-                                   d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);
+    symline_status st =
+        symline_i_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
+                          d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);
     if (row_start[p->h + 1u] != 0u) {
         d->truncated = true;
     }
@@ -214,9 +218,9 @@ SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         /* Above the field: nothing to trace. */
         SL_STAGE(FIELD);
-        sl_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
-                      d->field_rows);
-        *n = sl_field_drop(d->field_rows, point_at(d->r, d->npts), row_start, p->h);
+        symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
+                             d->field_rows);
+        *n = symline_i_field_drop(d->field_rows, point_at(d->r, d->npts), row_start, p->h);
     }
     return st;
 }
@@ -226,28 +230,33 @@ SL_NOINLINE static symline_status collect(sl_run *d, const sl_pass *p, uint8_t *
  * frame, not quadratic, on cluttered frames). The ids go to the workspace
  * or, when larger, to the point storage beyond what the tracing can write
  * (at most n points after the raster list). */
-SL_NOINLINE static const sl_segindex *index_earlier(const sl_run *d, const sl_pass *p, uint8_t *ws,
-                                                    uint8_t *end, uint32_t n)
+SL_NOINLINE static const symline_i_segindex *index_earlier(const symline_i_run *d,
+                                                           const symline_i_pass *p, uint8_t *ws,
+                                                           uint8_t *end, uint32_t n)
 {
-    sl_segindex *ix = (sl_segindex *)sl_carve(&ws, end, sizeof(sl_segindex));
+    symline_i_segindex *ix =
+        (symline_i_segindex *)symline_i_carve(&ws, end, sizeof(symline_i_segindex));
     const uint64_t used = (uint64_t)d->npts + 2u * (uint64_t)n;
     symline_point *spare = used < d->r->point_cap ? d->r->points + (size_t)used : NULL;
     const size_t spare_bytes =
         spare != NULL ? (size_t)(d->r->point_cap - used) * sizeof(symline_point) : 0u;
     if (ix != NULL) {
-        sl_segindex_build(ix, ws, (size_t)(end - ws), spare, spare_bytes, d->img->width,
-                          d->img->height, d->r, d->prev_seg, sl_cover_tol_q8(p->level));
+        symline_i_segindex_build(ix, ws, (size_t)(end - ws), spare, spare_bytes, d->img->width,
+                                 d->img->height, d->r, d->prev_seg,
+                                 symline_i_cover_tol_q8(p->level));
     }
     return ix;
 }
 
-symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *end)
+symline_status symline_i_pass_run(symline_i_run *d, const symline_i_pass *p, uint8_t *ws,
+                                  uint8_t *end)
 {
     uint8_t *rest = ws;
     /* The row index (h + 1 entries), then the count of line points that did not fit. */
-    uint32_t *row_start = (uint32_t *)sl_carve(&rest, end, ((size_t)p->h + 2u) * sizeof(uint32_t));
+    uint32_t *row_start =
+        (uint32_t *)symline_i_carve(&rest, end, ((size_t)p->h + 2u) * sizeof(uint32_t));
     uint32_t n = 0u;
-    sl_tracer *t;
+    symline_i_tracer *t;
     symline_status st;
     if (row_start == NULL) {
         return SYMLINE_ERR_BUFFER;
@@ -259,7 +268,7 @@ symline_status sl_pass_run(sl_run *d, const sl_pass *p, uint8_t *ws, uint8_t *en
     }
     /* The collection's rings are free again: the tracer's state and the grid
      * of earlier segments take their place. */
-    t = (sl_tracer *)sl_carve(&rest, end, sizeof(sl_tracer));
+    t = (symline_i_tracer *)symline_i_carve(&rest, end, sizeof(symline_i_tracer));
     if (t == NULL) {
         return SYMLINE_ERR_BUFFER;
     }

@@ -11,18 +11,18 @@
 #include "symline/detect.h"
 
 /* SYMLINE_OK, or SYMLINE_ERR_CONFIG when a field is out of its range. */
-symline_status sl_config_check(const symline_config *c);
+symline_status symline_i_config_check(const symline_config *c);
 
 /* The configuration's ranges, then ws_size against the workspace query:
  * SYMLINE_OK, SYMLINE_ERR_CONFIG or SYMLINE_ERR_BUFFER (img already checked). */
-symline_status sl_config_ws_check(const symline_image *img, const symline_config *cfg,
-                                  size_t ws_size);
+symline_status symline_i_config_ws_check(const symline_image *img, const symline_config *cfg,
+                                         size_t ws_size);
 
 /* Number of scales for a width x height frame (1 = full resolution only). */
-uint32_t sl_level_count(const symline_config *c, uint32_t width, uint32_t height);
+uint32_t symline_i_level_count(const symline_config *c, uint32_t width, uint32_t height);
 
 /* Axes per scale (1 or 2) and the i-th of them (horizontal first). */
-uint32_t sl_axis_count(const symline_config *c);
-symline_axis sl_axis_of(const symline_config *c, uint32_t i);
+uint32_t symline_i_axis_count(const symline_config *c);
+symline_axis symline_i_axis_of(const symline_config *c, uint32_t i);
 
 #endif /* SYMLINE_LIB_PASSPLAN_H */

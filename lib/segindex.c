@@ -9,7 +9,7 @@
  *
  * A point near a chord lies within tol of one of the chord's pieces of at
  * most one cell's length, hence inside that piece's bounding box grown by
- * tol; every cell such a box touches lists the segment. sl_near_segment()
+ * tol; every cell such a box touches lists the segment. symline_i_near_segment()
  * coarsens long chords before its exact test (up to about length / 4096 of
  * slack), so the boxes grow by length / 1024 + 1 px more than tol.
  */
@@ -24,14 +24,14 @@ static uint32_t cells_across(uint32_t n)
     return ((n - 1u) >> SL_CELL_SHIFT) + 1u;
 }
 
-size_t sl_segindex_ws_size(uint32_t width, uint32_t height)
+size_t symline_i_segindex_ws_size(uint32_t width, uint32_t height)
 {
     const size_t cells = (size_t)cells_across(width) * cells_across(height);
-    return sl_align_up(cells * sizeof(uint32_t)) + SL_ALIGN +
-           sl_align_up(cells * SL_IDS_PER_CELL * sizeof(uint32_t));
+    return symline_i_align_up(cells * sizeof(uint32_t)) + SL_ALIGN +
+           symline_i_align_up(cells * SL_IDS_PER_CELL * sizeof(uint32_t));
 }
 
-uint32_t sl_cell_of(int32_t v_q8, uint32_t n)
+uint32_t symline_i_cell_of(int32_t v_q8, uint32_t n)
 {
     uint32_t c;
     if (v_q8 < 0) {
@@ -46,7 +46,7 @@ static uint32_t scaled(uint32_t u, uint32_t k, uint32_t sh)
     return (u >> sh) * k + (((u & ((1u << sh) - 1u)) * k) >> sh);
 }
 
-static void visit_cell(sl_cellwalk *w, uint32_t c)
+static void visit_cell(symline_i_cellwalk *w, uint32_t c)
 {
     uint32_t node;
     /* if/else rather than a switch: no jump table helper on small cores. */
@@ -67,8 +67,8 @@ static void visit_cell(sl_cellwalk *w, uint32_t c)
     }
 }
 
-void sl_cellwalk_chord(sl_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
-                       int32_t margin)
+void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
+                              int32_t margin)
 {
     const uint32_t ux = (uint32_t)(bx > ax ? bx - ax : ax - bx);
     const uint32_t uy = (uint32_t)(by > ay ? by - ay : ay - by);
@@ -82,10 +82,10 @@ void sl_cellwalk_chord(sl_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32
     for (k = 1u; k <= (1u << sh); k++) {
         const int32_t ox = (int32_t)scaled(ux, k, sh), oy = (int32_t)scaled(uy, k, sh);
         const int32_t qx = bx >= ax ? ax + ox : ax - ox, qy = by >= ay ? ay + oy : ay - oy;
-        const uint32_t cx0 = sl_cell_of((px < qx ? px : qx) - margin, w->cols);
-        const uint32_t cx1 = sl_cell_of((px > qx ? px : qx) + margin, w->cols);
-        const uint32_t cy0 = sl_cell_of((py < qy ? py : qy) - margin, w->rows);
-        const uint32_t cy1 = sl_cell_of((py > qy ? py : qy) + margin, w->rows);
+        const uint32_t cx0 = symline_i_cell_of((px < qx ? px : qx) - margin, w->cols);
+        const uint32_t cx1 = symline_i_cell_of((px > qx ? px : qx) + margin, w->cols);
+        const uint32_t cy0 = symline_i_cell_of((py < qy ? py : qy) - margin, w->rows);
+        const uint32_t cy1 = symline_i_cell_of((py > qy ? py : qy) + margin, w->rows);
         uint32_t cx, cy;
         for (cy = cy0; cy <= cy1; cy++) {
             for (cx = cx0; cx <= cx1; cx++) {
@@ -103,8 +103,8 @@ void sl_cellwalk_chord(sl_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32
     }
 }
 
-/* Every piece sl_near_segment() tests for segment s. */
-static void visit_segment(sl_cellwalk *v, const symline_result *r, const symline_segment *s,
+/* Every piece symline_i_near_segment() tests for segment s. */
+static void visit_segment(symline_i_cellwalk *v, const symline_result *r, const symline_segment *s,
                           int32_t tol)
 {
     const symline_point *p = r->points + s->first;
@@ -112,13 +112,13 @@ static void visit_segment(sl_cellwalk *v, const symline_result *r, const symline
     v->px0 = 1u; /* no previous piece */
     v->px1 = 0u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
-        sl_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, tol);
+        symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, tol);
         return;
     }
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
-        sl_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8, (int32_t)p[j].x << 8,
-                          (int32_t)p[j].y << 8, tol);
+        symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
+                                 (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, tol);
     }
 }
 
@@ -136,18 +136,18 @@ static uint32_t *id_area(void *mem, size_t bytes, uint32_t *n)
     return (uint32_t *)(void *)(cur + skip);
 }
 
-void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, size_t spare_bytes,
-                       uint32_t width, uint32_t height, const symline_result *r, uint32_t nseg,
-                       int32_t tol_q8)
+void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, void *spare,
+                              size_t spare_bytes, uint32_t width, uint32_t height,
+                              const symline_result *r, uint32_t nseg, int32_t tol_q8)
 {
     uint8_t *cur = (uint8_t *)mem, *const lim = (uint8_t *)mem + bytes;
     const uint32_t cells = cells_across(width) * cells_across(height);
     uint32_t c, s, cap, cap2, total = 0u, sum = 0u;
     uint32_t *ids2;
-    sl_cellwalk v;
+    symline_i_cellwalk v;
     ix->cols = cells_across(width);
     ix->rows = cells_across(height);
-    ix->end = (uint32_t *)sl_carve(&cur, lim, (size_t)cells * sizeof(uint32_t));
+    ix->end = (uint32_t *)symline_i_carve(&cur, lim, (size_t)cells * sizeof(uint32_t));
     ix->indexed = 0u;
     if (ix->end == NULL) {
         ix->cols = 0u; /* not reached: the workspace size was checked */
@@ -194,22 +194,23 @@ void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, si
     }
 }
 
-bool sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t nseg, int32_t x,
-                      int32_t y, int32_t tol_q8)
+bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
+                             int32_t x, int32_t y, int32_t tol_q8)
 {
     uint32_t i = 0u;
     if (ix != NULL && ix->cols != 0u) {
-        const uint32_t c = sl_cell_of(y, ix->rows) * ix->cols + sl_cell_of(x, ix->cols);
+        const uint32_t c =
+            symline_i_cell_of(y, ix->rows) * ix->cols + symline_i_cell_of(x, ix->cols);
         uint32_t k;
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
-            if (sl_near_segment(&r->segments[ix->ids[k]], r->points, x, y, tol_q8)) {
+            if (symline_i_near_segment(&r->segments[ix->ids[k]], r->points, x, y, tol_q8)) {
                 return true;
             }
         }
         i = ix->indexed;
     }
     for (; i < nseg; i++) {
-        if (sl_near_segment(&r->segments[i], r->points, x, y, tol_q8)) {
+        if (symline_i_near_segment(&r->segments[i], r->points, x, y, tol_q8)) {
             return true;
         }
     }

@@ -18,60 +18,60 @@
  * Segments that fit in neither stay out of the grid and are tested one by one. */
 #define SL_IDS_PER_CELL 4u
 
-typedef struct sl_segindex {
+typedef struct symline_i_segindex {
     uint32_t cols, rows; /* cells across and down */
     uint32_t *end;       /* cols*rows: cell c holds ids[end[c-1] .. end[c]-1] (end[-1] = 0) */
     uint32_t *ids;       /* segment ids, ascending within a cell */
     uint32_t indexed;    /* segments [0, indexed) are in the grid */
-} sl_segindex;
+} symline_i_segindex;
 
 /* A walk over the grid cells within margin (Q8, plus the rounding slack of
  * the library's distance tests: length / 1024 + 1 px) of a chord, in pieces
  * of at most a cell; each cell is visited once per piece (a cell the
  * previous piece touched is skipped). What a visit does depends on the
- * mode: the two sweeps of sl_segindex_build(), or the merge's gathering of
+ * mode: the two sweeps of symline_i_segindex_build(), or the merge's gathering of
  * the segment ends listed in the cells (endgrid.c). A switch rather than a
  * function pointer, so that the firmware's stack analysis can follow it. */
-typedef enum sl_walk_mode {
+typedef enum symline_i_walk_mode {
     SL_WALK_COUNT,   /* end[c]++ and added++ */
     SL_WALK_UNCOUNT, /* end[c]-- */
     SL_WALK_FILL,    /* ids[end[c]++] = seg */
     SL_WALK_GATHER   /* every node of cell c's list (head, next) appended to cand */
-} sl_walk_mode;
+} symline_i_walk_mode;
 
-typedef struct sl_cellwalk {
+typedef struct symline_i_cellwalk {
     uint32_t cols, rows;
-    sl_walk_mode mode;
+    symline_i_walk_mode mode;
     uint32_t px0, py0, px1, py1;     /* the previous piece's cells; set px0 > px1 to start */
     uint32_t *end, *ids, seg, added; /* COUNT, UNCOUNT, FILL */
     const uint32_t *head, *next;     /* GATHER */
     uint32_t *cand, cand_cap, n;     /* GATHER: n found; cap + 1 when full */
-} sl_cellwalk;
+} symline_i_cellwalk;
 
-void sl_cellwalk_chord(sl_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
-                       int32_t margin);
+void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
+                              int32_t margin);
 
 /* The cell (column or row) of a Q8 coordinate, clamped to 0 .. n-1. */
-uint32_t sl_cell_of(int32_t v_q8, uint32_t n);
+uint32_t symline_i_cell_of(int32_t v_q8, uint32_t n);
 
-/* Bytes of workspace sl_segindex_build() uses for a width x height frame. */
-size_t sl_segindex_ws_size(uint32_t width, uint32_t height);
+/* Bytes of workspace symline_i_segindex_build() uses for a width x height frame. */
+size_t symline_i_segindex_ws_size(uint32_t width, uint32_t height);
 
 /*
  * Builds the grid of segments r->segments[0 .. nseg-1]: the cells in mem
- * (bytes from sl_segindex_ws_size(), aligned), the ids there or in `spare`
+ * (bytes from symline_i_segindex_ws_size(), aligned), the ids there or in `spare`
  * (spare_bytes, any alignment, may be NULL) when that is larger. Each
  * segment is entered in every cell within tol_q8 (plus the rounding of
- * sl_near_segment()) of its chord (a line) or its polyline (a curve).
+ * symline_i_near_segment()) of its chord (a line) or its polyline (a curve).
  * Segments that do not fit stay out (ix->indexed).
  */
-void sl_segindex_build(sl_segindex *ix, void *mem, size_t bytes, void *spare, size_t spare_bytes,
-                       uint32_t width, uint32_t height, const symline_result *r, uint32_t nseg,
-                       int32_t tol_q8);
+void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, void *spare,
+                              size_t spare_bytes, uint32_t width, uint32_t height,
+                              const symline_result *r, uint32_t nseg, int32_t tol_q8);
 
-/* Exactly sl_near_segment() of any of r->segments[0 .. nseg-1] for the
+/* Exactly symline_i_near_segment() of any of r->segments[0 .. nseg-1] for the
  * full-resolution point (x, y) (Q8, inside the frame); ix NULL: no grid. */
-bool sl_segindex_near(const sl_segindex *ix, const symline_result *r, uint32_t nseg, int32_t x,
-                      int32_t y, int32_t tol_q8);
+bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
+                             int32_t x, int32_t y, int32_t tol_q8);
 
 #endif /* SYMLINE_LIB_SEGINDEX_H */

@@ -31,7 +31,7 @@ static bool is_corner(int64_t num, int64_t den)
     return num * SL_COS2_DEN < (int64_t)SL_COS2_NUM * den;
 }
 
-uint32_t sl_corner_cut(const symline_point *p, uint32_t n)
+uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
 {
     uint32_t i;
     if (n < 2u * SL_CORNER_SPAN + 1u) {
@@ -63,18 +63,19 @@ uint32_t sl_corner_cut(const symline_point *p, uint32_t n)
     return n;
 }
 
-uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py)
+uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
+                                int32_t py)
 {
     const int64_t wx = (int64_t)px - ax, wy = (int64_t)py - ay;
-    uint64_t len = sl_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    uint64_t len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
     int64_t c;
     uint64_t cross;
     if (len == 0u) {
-        return (uint32_t)sl_isqrt64((uint64_t)(wx * wx + wy * wy));
+        return (uint32_t)symline_i_isqrt64((uint64_t)(wx * wx + wy * wy));
     }
     c = wx * dy - wy * dx;
     cross = (uint64_t)(c < 0 ? -c : c);
-    return sl_div_q8(cross, len);
+    return symline_i_div_q8(cross, len);
 }
 
 /* Cross product of point q's offset from (x0, y0) with the chord direction
@@ -84,7 +85,7 @@ uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t
 static inline int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0, int32_t y0,
                                   int32_t dx, int32_t dy)
 {
-    const int32_t wx = sl_pt_q8x(q, level) - x0, wy = sl_pt_q8y(q, level) - y0;
+    const int32_t wx = symline_i_pt_q8x(q, level) - x0, wy = symline_i_pt_q8y(q, level) - y0;
     return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
                           : (int64_t)wx * dy - (int64_t)wy * dx;
 }
@@ -109,8 +110,9 @@ static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, i
     return best;
 }
 
-SL_NOINLINE uint32_t sl_chord_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
-                                  int32_t y0, int32_t x1, int32_t y1, uint32_t win)
+SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level,
+                                         int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                                         uint32_t win)
 {
     const int32_t dx = x1 - x0, dy = y1 - y0;
     uint64_t best, len;
@@ -124,21 +126,22 @@ SL_NOINLINE uint32_t sl_chord_dev(const symline_point *p, uint32_t n, uint32_t l
     win = (dx | dy) == 0 || win < 1u ? 1u : (win > n ? n : win);
     best = window_max(p, n, level, x0, y0, dx, dy, win);
     if ((dx | dy) == 0) {
-        return (uint32_t)sl_isqrt64(best);
+        return (uint32_t)symline_i_isqrt64(best);
     }
-    len = sl_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
     /* floor(floor(best / win) / len) = floor(best / (win len)): no 64-bit
      * division (its library helper's frame would deepen the stack). */
-    return sl_div_q8(best, len * win);
+    return symline_i_div_q8(best, len * win);
 }
 
 /* A curve bends away from its chord by more than the threshold and by more
  * than 1/32 of the chord: a straight line's pixel steps and noise stay near
  * 1-2 px however long it is, while an arc's sagitta grows with its chord. */
-bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr)
+bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
+                        uint32_t thr)
 {
     const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
-    const uint64_t chord = sl_isqrt64((uint64_t)(dx * dx + dy * dy));
+    const uint64_t chord = symline_i_isqrt64((uint64_t)(dx * dx + dy * dy));
     return max_dev > thr && (uint64_t)max_dev * 32u > chord;
 }
 
@@ -165,21 +168,21 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
                                 symline_segment *s)
 {
     /* Coordinates in Q4 full resolution, relative to the first point. */
-    const int32_t ox = sl_pt_q8x(&p[0], level), oy = sl_pt_q8y(&p[0], level);
+    const int32_t ox = symline_i_pt_q8x(&p[0], level), oy = symline_i_pt_q8y(&p[0], level);
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
     int32_t sx = 0, sy = 0, mx, my, ux, uy;
     int64_t a = 0, b = 0, c = 0, r, lam, vx, vy, len;
     uint32_t i, cnt = 0u;
     for (i = 0; i < n; i += step) {
-        sx += (sl_pt_q8x(&p[i], level) - ox) / 16;
-        sy += (sl_pt_q8y(&p[i], level) - oy) / 16;
+        sx += (symline_i_pt_q8x(&p[i], level) - ox) / 16;
+        sy += (symline_i_pt_q8y(&p[i], level) - oy) / 16;
         cnt++;
     }
     mx = sx / (int32_t)cnt;
     my = sy / (int32_t)cnt;
     for (i = 0; i < n; i += step) {
-        const int64_t dx = (sl_pt_q8x(&p[i], level) - ox) / 16 - mx;
-        const int64_t dy = (sl_pt_q8y(&p[i], level) - oy) / 16 - my;
+        const int64_t dx = (symline_i_pt_q8x(&p[i], level) - ox) / 16 - mx;
+        const int64_t dy = (symline_i_pt_q8y(&p[i], level) - oy) / 16 - my;
         a += dx * dx;
         b += dx * dy;
         c += dy * dy;
@@ -190,12 +193,12 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
         b /= 2;
         c >>= 1;
     }
-    r = (int64_t)sl_isqrt64((uint64_t)((a - c) * (a - c) / 4 + b * b));
+    r = (int64_t)symline_i_isqrt64((uint64_t)((a - c) * (a - c) / 4 + b * b));
     lam = (a + c) / 2 + r;
     vx = a >= c ? lam - c : b;
     vy = a >= c ? b : lam - a;
     shrink(&vx, &vy, 15);
-    len = (int64_t)sl_isqrt64((uint64_t)(vx * vx + vy * vy));
+    len = (int64_t)symline_i_isqrt64((uint64_t)(vx * vx + vy * vy));
     if (len == 0) {
         return false;
     }
@@ -204,8 +207,8 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     uy = (int32_t)(vy * 32768) / (int32_t)len;
     for (i = 0; i < 2u; i++) {
         const symline_point *q = &p[i == 0u ? 0u : n - 1u];
-        const int64_t qx = (sl_pt_q8x(q, level) - ox) / 16 - mx;
-        const int64_t qy = (sl_pt_q8y(q, level) - oy) / 16 - my;
+        const int64_t qx = (symline_i_pt_q8x(q, level) - ox) / 16 - mx;
+        const int64_t qy = (symline_i_pt_q8y(q, level) - oy) / 16 - my;
         const int64_t t = qx * ux + qy * uy; /* Q4 * Q15 */
         /* Back to Q8 absolute: mean + t*u, Q4*Q15*Q15 -> Q8 is a shift by 26. */
         const int32_t ex = ox + mx * 16 + (int32_t)((t * ux) >> 26);
@@ -229,13 +232,13 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
  * thirds of its sagitta: a flat piece of the centre circle is told from a line
  * even where its largest deviation stays under the curve threshold.
  */
-uint32_t sl_bend_q8(const symline_point *p, uint32_t n)
+uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
 {
     /* Grid coordinates: differences fit 32 bits, products 64. */
     const int32_t x0 = p[0].x, y0 = p[0].y;
     const int32_t dx = (int32_t)p[n - 1u].x - x0, dy = (int32_t)p[n - 1u].y - y0;
     const int64_t dd = (int64_t)dx * dx + (int64_t)dy * dy;
-    const uint64_t len = sl_isqrt64((uint64_t)dd);
+    const uint64_t len = symline_i_isqrt64((uint64_t)dd);
     int64_t sm = 0, so = 0;
     uint32_t nm = 0u, no = 0u, i, am, ao;
     int32_t mm, mo, d;
@@ -255,8 +258,8 @@ uint32_t sl_bend_q8(const symline_point *p, uint32_t n)
         return 0u;
     }
     /* Means in Q8 grid pixels: sum * 256 / (count * len). */
-    am = sl_div_q8((uint64_t)(sm < 0 ? -sm : sm) << SL_Q8_SHIFT, (uint64_t)nm * len);
-    ao = sl_div_q8((uint64_t)(so < 0 ? -so : so) << SL_Q8_SHIFT, (uint64_t)no * len);
+    am = symline_i_div_q8((uint64_t)(sm < 0 ? -sm : sm) << SL_Q8_SHIFT, (uint64_t)nm * len);
+    ao = symline_i_div_q8((uint64_t)(so < 0 ? -so : so) << SL_Q8_SHIFT, (uint64_t)no * len);
     mm = sm < 0 ? -(int32_t)(am >> 1) : (int32_t)(am >> 1);
     mo = so < 0 ? -(int32_t)(ao >> 1) : (int32_t)(ao >> 1);
     d = mm - mo; /* in Q7 to keep the difference in range */
@@ -267,24 +270,24 @@ uint32_t sl_bend_q8(const symline_point *p, uint32_t n)
 /* The chord of p[0..n-1]'s first and last point as s's ends. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
-    s->x0 = sl_pt_q8x(&p[0], level);
-    s->y0 = sl_pt_q8y(&p[0], level);
-    s->x1 = sl_pt_q8x(&p[n - 1u], level);
-    s->y1 = sl_pt_q8y(&p[n - 1u], level);
+    s->x0 = symline_i_pt_q8x(&p[0], level);
+    s->y0 = symline_i_pt_q8y(&p[0], level);
+    s->x1 = symline_i_pt_q8x(&p[n - 1u], level);
+    s->y1 = symline_i_pt_q8y(&p[n - 1u], level);
 }
 
-void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
-            symline_segment *s)
+void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
+                   symline_segment *s)
 {
-    const uint32_t thr = curve_dev_q8 + sl_block_half_q8(level);
+    const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
     bool curve;
     chord_ends(p, n, level, s);
-    s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
-    curve = sl_is_curve(s->x0, s->y0, s->x1, s->y1,
-                        sl_smooth_dev(p, n, level, s->x0, s->y0, s->x1, s->y1), thr);
+    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
+    curve = symline_i_is_curve(s->x0, s->y0, s->x1, s->y1,
+                               symline_i_smooth_dev(p, n, level, s->x0, s->y0, s->x1, s->y1), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
-        s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
+        s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
     }
     s->level = (uint8_t)level;
     s->merged = false;
@@ -331,8 +334,8 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
            (uint64_t)((int64_t)t2 * t2) * (uint64_t)((int64_t)dx * dx + (int64_t)dy * dy);
 }
 
-bool sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
-                     int32_t tol_q8)
+bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,
+                            int32_t y, int32_t tol_q8)
 {
     uint32_t i;
     const symline_point *p = pts + s->first;
@@ -351,14 +354,14 @@ bool sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t
     return false;
 }
 
-void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,
-                   symline_segment *s)
+void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,
+                          symline_segment *s)
 {
-    if (sl_bend_q8(p, n) < bend_thr) {
+    if (symline_i_bend_q8(p, n) < bend_thr) {
         return;
     }
     /* A curve keeps the chord of its first and last point (no line fit). */
     s->kind = SYMLINE_KIND_CURVE;
     chord_ends(p, n, level, s);
-    s->max_dev = sl_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
+    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }

@@ -12,62 +12,64 @@
 #include "symline/detect.h"
 
 /* Length of the first piece of chain p[0..n-1] before a sharp corner (n if none). */
-uint32_t sl_corner_cut(const symline_point *p, uint32_t n);
+uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n);
 
 /* Fits a segment to p[0..n-1] (grid coordinates at `level`): ends, max_dev,
  * kind (a curve when max_dev exceeds curve_dev_q8 plus half a block), level;
  * first, count and axis are left to the caller. */
-void sl_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
-            symline_segment *s);
+void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
+                   symline_segment *s);
 
 /* Bend of p[0..n-1] (grid coordinates): mean distance to the chord of the middle
  * half minus that of the outer quarters, Q8 grid px, absolute. */
-uint32_t sl_bend_q8(const symline_point *p, uint32_t n);
+uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n);
 
 /* Makes line s (fitted to p[0..n-1] at `level`) a curve when its bend reaches
  * bend_thr: kind, raw chord ends and max_dev. */
-void sl_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,
-                   symline_segment *s);
+void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,
+                          symline_segment *s);
 
 /* Distance (Q8) of (px, py) to the line through a with direction (dx, dy), all Q8. */
-uint32_t sl_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py);
+uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
+                                int32_t py);
 
 /* Largest distance (Q8) to the chord (x0,y0)-(x1,y1) (Q8) of the mean of
  * every `win` consecutive points of p[0..n-1] (grid coordinates at `level`;
  * level 0 for full-resolution points); win 1: of every point. With equal
  * chord ends: the distance to that end. 0 for no points. */
-uint32_t sl_chord_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0, int32_t y0,
-                      int32_t x1, int32_t y1, uint32_t win);
+uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
+                             int32_t y0, int32_t x1, int32_t y1, uint32_t win);
 
 /* Points per window of the smoothed deviation: a traced ridge on turf jitters
  * by a pixel or two from point to point, an arc's sagitta does not average out. */
 #define SL_SMOOTH_WIN 5u
 
 /* Largest distance (Q8) of the points to the chord: a segment's max_dev. */
-static inline uint32_t sl_max_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
-                                  int32_t y0, int32_t x1, int32_t y1)
+static inline uint32_t symline_i_max_dev(const symline_point *p, uint32_t n, uint32_t level,
+                                         int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
-    return sl_chord_dev(p, n, level, x0, y0, x1, y1, 1u);
+    return symline_i_chord_dev(p, n, level, x0, y0, x1, y1, 1u);
 }
 
 /* The same for the mean of every SL_SMOOTH_WIN consecutive points: the bend
  * of the piece without the point-to-point jitter of its ridge. */
-static inline uint32_t sl_smooth_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
-                                     int32_t y0, int32_t x1, int32_t y1)
+static inline uint32_t symline_i_smooth_dev(const symline_point *p, uint32_t n, uint32_t level,
+                                            int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
-    return sl_chord_dev(p, n, level, x0, y0, x1, y1, SL_SMOOTH_WIN);
+    return symline_i_chord_dev(p, n, level, x0, y0, x1, y1, SL_SMOOTH_WIN);
 }
 
 /* Curve test: max_dev above thr and above 1/32 of the chord. */
-bool sl_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev, uint32_t thr);
+bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
+                        uint32_t thr);
 
-/* Curves are followed through every SL_POLY_STEP-th point (sl_near_segment(),
+/* Curves are followed through every SL_POLY_STEP-th point (symline_i_near_segment(),
  * and the grid of earlier segments, segindex.c). */
 #define SL_POLY_STEP 4u
 
 /* True when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
  * (its chord for lines, its points for curves). */
-bool sl_near_segment(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
-                     int32_t tol_q8);
+bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,
+                            int32_t y, int32_t tol_q8);
 
 #endif /* SYMLINE_LIB_SEGMENTS_H */

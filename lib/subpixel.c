@@ -14,7 +14,7 @@
 #define SL_SUB_DMAX2 65025u
 
 /* Gray value of the grid pixel whose block starts at src: the rounded box mean
- * of 2^level x 2^level frame pixels that sl_grid_row() gives. */
+ * of 2^level x 2^level frame pixels that symline_i_grid_row() gives. */
 static uint32_t grid_px(const uint8_t *src, size_t stride, uint32_t level)
 {
     const uint32_t s = 1u << level;
@@ -35,28 +35,28 @@ static uint32_t grid_px(const uint8_t *src, size_t stride, uint32_t level)
 
 /* Where the energies of one point are taken: the block of grid pixel i across
  * the line, the step to the next grid pixel across, n grid pixels across. */
-typedef struct sl_across {
+typedef struct symline_i_across {
     const uint8_t *at; /* block of index i */
     size_t step;       /* bytes from one grid pixel to the next across the line */
     size_t stride;     /* frame stride */
     uint32_t level, i, n, m;
     uint32_t lag; /* a marked run ends at most lag past its marked index */
-} sl_across;
+} symline_i_across;
 
 /* Gray value at index i + k across the line (inside the grid). */
-static uint32_t gray_at(const sl_across *a, int32_t k)
+static uint32_t gray_at(const symline_i_across *a, int32_t k)
 {
     return grid_px(a->at + (ptrdiff_t)k * (ptrdiff_t)a->step, a->stride, a->level);
 }
 
 /* 1 when index i + k is inside the grid. */
-static int inside(const sl_across *a, int32_t k)
+static int inside(const symline_i_across *a, int32_t k)
 {
     return (int32_t)a->i + k >= 0 && (int32_t)a->i + k < (int32_t)a->n;
 }
 
 /* E at index i + k alone (the rare walk along a run of equal E). */
-static uint32_t energy_at(const sl_across *a, int32_t k)
+static uint32_t energy_at(const symline_i_across *a, int32_t k)
 {
     uint32_t e = 0u, j;
     for (j = 1u; j <= a->m; j++) {
@@ -75,7 +75,7 @@ static uint32_t energy_at(const sl_across *a, int32_t k)
  * one sweep out from i that reads each gray value once (2m+3 of them, no
  * buffer): l0, l1, l2 hold the values at i-(j-1), i-j, i-(j+1), r0, r1, r2
  * those at i+(j-1), i+j, i+(j+1). Near the border term by term. */
-static void energies3(const sl_across *a, uint32_t e[3])
+static void energies3(const symline_i_across *a, uint32_t e[3])
 {
     if (a->i < a->m + 1u || a->i + a->m + 1u >= a->n) {
         e[0] = energy_at(a, -1);
@@ -112,7 +112,7 @@ static void energies3(const sl_across *a, uint32_t e[3])
 }
 
 /* Offset (1/128 grid px) of the ridge's middle from index i across the line. */
-static int32_t offset_at(const sl_across *a)
+static int32_t offset_at(const symline_i_across *a)
 {
     uint32_t e[3];
     int32_t num, den;
@@ -151,10 +151,11 @@ static int32_t offset_at(const sl_across *a)
     return den > 0 ? num * 64 / den : 0;
 }
 
-void sl_subpixel(const symline_image *img, const sl_pass *p, symline_point *q, uint32_t n)
+void symline_i_subpixel(const symline_image *img, const symline_i_pass *p, symline_point *q,
+                        uint32_t n)
 {
     const int vert = p->axis == SYMLINE_AXIS_VERTICAL;
-    sl_across a;
+    symline_i_across a;
     uint32_t k;
     a.stride = img->stride;
     a.step = vert ? ((size_t)1u << p->level) : (size_t)img->stride << p->level;

@@ -27,6 +27,7 @@
  * -64..64, the other 0. Reads the frame (box means at coarse levels, as the
  * pass computed them); points at the grid's border get offset 0.
  */
-void sl_subpixel(const symline_image *img, const sl_pass *p, symline_point *q, uint32_t n);
+void symline_i_subpixel(const symline_image *img, const symline_i_pass *p, symline_point *q,
+                        uint32_t n);
 
 #endif /* SYMLINE_LIB_SUBPIXEL_H */

@@ -13,7 +13,7 @@
 
 uint32_t symline_emax(uint32_t m)
 {
-    if (sl_check_radius(m) != SYMLINE_OK) {
+    if (symline_i_check_radius(m) != SYMLINE_OK) {
         return 0u;
     }
     return SL_DMAX2 * (m * (m + 1u) / 2u);
@@ -64,7 +64,7 @@ symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint
     if (n == 0u || n > SYMLINE_MAX_DIM) {
         return SYMLINE_ERR_SIZE;
     }
-    if (sl_check_radius(m) != SYMLINE_OK) {
+    if (symline_i_check_radius(m) != SYMLINE_OK) {
         return SYMLINE_ERR_RADIUS;
     }
     /*
@@ -94,7 +94,7 @@ symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uin
     if (rows == NULL || E == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    if (sl_check_radius(m) != SYMLINE_OK) {
+    if (symline_i_check_radius(m) != SYMLINE_OK) {
         return SYMLINE_ERR_RADIUS;
     }
     if (rows[m] == NULL) {
@@ -129,7 +129,7 @@ symline_status symline_energy_across_image(const symline_image *img, uint32_t y,
     if (E == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    if (sl_check_radius(m) != SYMLINE_OK) {
+    if (symline_i_check_radius(m) != SYMLINE_OK) {
         return SYMLINE_ERR_RADIUS;
     }
     if (y >= img->height) {
@@ -203,14 +203,14 @@ static symline_status check_frame(const symline_image *img, symline_axis axis, u
 {
     symline_status st = symline_image_check(img);
     if (st == SYMLINE_OK) {
-        st = sl_check_axis(axis);
+        st = symline_i_check_axis(axis);
     }
-    return (st == SYMLINE_OK) ? sl_check_radius(m) : st;
+    return (st == SYMLINE_OK) ? symline_i_check_radius(m) : st;
 }
 
-symline_status sl_frame_begin(const symline_image *img, symline_axis axis, uint32_t m,
-                              const void *out, uint32_t out_stride, size_t out_len, void *ws,
-                              size_t ws_size, uint8_t **cur, uint8_t **end, uint32_t **E)
+symline_status symline_i_frame_begin(const symline_image *img, symline_axis axis, uint32_t m,
+                                     const void *out, uint32_t out_stride, size_t out_len, void *ws,
+                                     size_t ws_size, uint8_t **cur, uint8_t **end, uint32_t **E)
 {
     symline_status st = check_frame(img, axis, m);
     if (st != SYMLINE_OK) {
@@ -219,13 +219,13 @@ symline_status sl_frame_begin(const symline_image *img, symline_axis axis, uint3
     if (out == NULL || ws == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    st = sl_check_plane(img->width, img->height, out_stride, out_len);
+    st = symline_i_check_plane(img->width, img->height, out_stride, out_len);
     if (st != SYMLINE_OK) {
         return st;
     }
     *cur = (uint8_t *)ws;
     *end = *cur + ws_size;
-    *E = (uint32_t *)sl_carve(cur, *end, (size_t)img->width * sizeof(uint32_t));
+    *E = (uint32_t *)symline_i_carve(cur, *end, (size_t)img->width * sizeof(uint32_t));
     return (*E == NULL) ? SYMLINE_ERR_BUFFER : SYMLINE_OK;
 }
 
@@ -240,7 +240,7 @@ symline_status symline_energy_frame(const symline_image *img, symline_axis axis,
     if (E == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    st = sl_check_plane(img->width, img->height, e_stride, e_len);
+    st = symline_i_check_plane(img->width, img->height, e_stride, e_len);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -253,10 +253,10 @@ symline_status symline_energy_frame(const symline_image *img, symline_axis axis,
 size_t symline_symmetry_workspace_size(uint32_t width, uint32_t height, symline_axis axis,
                                        uint32_t m)
 {
-    if (!sl_query_ok(width, height, axis, m)) {
+    if (!symline_i_query_ok(width, height, axis, m)) {
         return 0u;
     }
-    return sl_align_up((size_t)width * sizeof(uint32_t)) + SL_ALIGN;
+    return symline_i_align_up((size_t)width * sizeof(uint32_t)) + SL_ALIGN;
 }
 
 symline_status symline_symmetry(const symline_image *img, symline_axis axis, uint32_t m,
@@ -266,7 +266,7 @@ symline_status symline_symmetry(const symline_image *img, symline_axis axis, uin
     uint8_t *cur, *end;
     uint32_t *E, y;
     symline_status st =
-        sl_frame_begin(img, axis, m, out, out_stride, out_len, ws, ws_size, &cur, &end, &E);
+        symline_i_frame_begin(img, axis, m, out, out_stride, out_len, ws, ws_size, &cur, &end, &E);
     if (st != SYMLINE_OK) {
         return st;
     }

@@ -16,8 +16,8 @@
  * out_len), then carves one row of uint32_t energies from the workspace.
  * On success *cur points past the carved row, ready for further carving.
  */
-symline_status sl_frame_begin(const symline_image *img, symline_axis axis, uint32_t m,
-                              const void *out, uint32_t out_stride, size_t out_len, void *ws,
-                              size_t ws_size, uint8_t **cur, uint8_t **end, uint32_t **E);
+symline_status symline_i_frame_begin(const symline_image *img, symline_axis axis, uint32_t m,
+                                     const void *out, uint32_t out_stride, size_t out_len, void *ws,
+                                     size_t ws_size, uint8_t **cur, uint8_t **end, uint32_t **E);
 
 #endif /* SYMLINE_LIB_SYMMETRY_H */

@@ -32,8 +32,8 @@ static const int8_t DY[8] = {0, 1, 1, 1, 0, -1, -1, -1};
 /* Search order relative to the last direction: straight, 45-degree, 90-degree turns. */
 static const int8_t TURN[5] = {0, 1, -1, 2, -2};
 
-void sl_tracer_init(sl_tracer *t, symline_point *pts, uint32_t n, const uint32_t *row_start,
-                    uint32_t h)
+void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
+                           const uint32_t *row_start, uint32_t h)
 {
     t->pts = pts;
     t->n = n;
@@ -44,7 +44,7 @@ void sl_tracer_init(sl_tracer *t, symline_point *pts, uint32_t n, const uint32_t
 }
 
 /* Index of point (x, y) in the list, or -1. x, y may be out of range (then -1). */
-static int32_t find(const sl_tracer *t, int32_t x, int32_t y)
+static int32_t find(const symline_i_tracer *t, int32_t x, int32_t y)
 {
     uint32_t lo, hi;
     if (x < 0 || y < 0 || (uint32_t)y >= t->h || x > 65535) {
@@ -67,7 +67,7 @@ static int32_t find(const sl_tracer *t, int32_t x, int32_t y)
     return -1;
 }
 
-uint32_t sl_neighbours(const sl_tracer *t, uint32_t x, uint32_t y)
+uint32_t symline_i_neighbours(const symline_i_tracer *t, uint32_t x, uint32_t y)
 {
     uint32_t d, c = 0u;
     for (d = 0; d < 8u; d++) {
@@ -78,18 +78,18 @@ uint32_t sl_neighbours(const sl_tracer *t, uint32_t x, uint32_t y)
     return c;
 }
 
-static bool unvisited(const sl_tracer *t, int32_t idx)
+static bool unvisited(const symline_i_tracer *t, int32_t idx)
 {
     return idx >= 0 && t->pts[idx].y != SL_VISITED;
 }
 
-static void visit(sl_tracer *t, int32_t idx)
+static void visit(symline_i_tracer *t, int32_t idx)
 {
     t->pts[idx].y = SL_VISITED;
 }
 
 /* First unvisited neighbour of (x, y) in direction order 0..7, or -1; its direction in *dir. */
-static int32_t any_unvisited(const sl_tracer *t, int32_t x, int32_t y, uint32_t *dir)
+static int32_t any_unvisited(const symline_i_tracer *t, int32_t x, int32_t y, uint32_t *dir)
 {
     uint32_t d;
     for (d = 0; d < 8u; d++) {
@@ -103,7 +103,7 @@ static int32_t any_unvisited(const sl_tracer *t, int32_t x, int32_t y, uint32_t 
 }
 
 /* Follows the line from (x, y), last step direction dir; appends to dst from *pos. */
-static void follow(sl_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_point *dst,
+static void follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_point *dst,
                    uint32_t cap, uint32_t *pos, bool *cut)
 {
     for (;;) {
@@ -135,7 +135,7 @@ static void follow(sl_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_poi
     }
 }
 
-void sl_reverse_points(symline_point *p, uint32_t n)
+void symline_i_reverse_points(symline_point *p, uint32_t n)
 {
     uint32_t i;
     /* Field by field: a struct swap may become a libc memcpy call. */
@@ -154,7 +154,7 @@ void sl_reverse_points(symline_point *p, uint32_t n)
 }
 
 /* Takes the first step to neighbour idx (direction dir) and follows from there. */
-static void step_and_follow(sl_tracer *t, int32_t x, int32_t y, int32_t idx, uint32_t dir,
+static void step_and_follow(symline_i_tracer *t, int32_t x, int32_t y, int32_t idx, uint32_t dir,
                             symline_point *dst, uint32_t cap, uint32_t *pos, bool *cut)
 {
     if (*pos >= cap) {
@@ -168,7 +168,8 @@ static void step_and_follow(sl_tracer *t, int32_t x, int32_t y, int32_t idx, uin
     follow(t, x + DX[dir], y + DY[dir], dir, dst, cap, pos, cut);
 }
 
-bool sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count, bool *cut)
+bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count,
+                           bool *cut)
 {
     *count = 0u;
     if (cap == 0u) {
@@ -186,7 +187,7 @@ bool sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *co
             }
             x = t->pts[i].x;
             y = t->pts[i].y;
-            if (t->phase == 0u && sl_neighbours(t, x, y) != 1u) {
+            if (t->phase == 0u && symline_i_neighbours(t, x, y) != 1u) {
                 t->scan++;
                 continue;
             }
@@ -208,8 +209,8 @@ bool sl_tracer_next(sl_tracer *t, symline_point *dst, uint32_t cap, uint32_t *co
                 first = any_unvisited(t, (int32_t)x, (int32_t)y, &dir);
                 if (first >= 0 && pos < cap) {
                     step_and_follow(t, (int32_t)x, (int32_t)y, first, dir, dst, cap, &pos, cut);
-                    sl_reverse_points(dst, pos);
-                    sl_reverse_points(dst + (pos - fwd), fwd);
+                    symline_i_reverse_points(dst, pos);
+                    symline_i_reverse_points(dst + (pos - fwd), fwd);
                 }
             }
             *count = pos;

@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
 # The core's rules, checked twice: in the sources (grep) and in what the
-# compiler produced (undefined symbols of the built library, and a build of
+# compiler produced (undefined and defined symbols of the built library, and a build of
 # lib/ with the FPU registers forbidden, which fails on any float arithmetic);
 # and the layering of the tree: lib/ includes only lib/ and include/,
 # capture/ and port/ nothing from tools/, and lib/'s includes form no cycle.
@@ -24,6 +24,10 @@ undef=$(nm -u "$lib" 2>/dev/null | awk '{print $NF}' | sort -u)
 deny=$(echo "$undef" | grep -E '^(malloc|calloc|realloc|free|aligned_alloc|posix_memalign|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|puts|fputs|putchar|fputc|fwrite|fread|fopen|fclose|write|read|open|close|stdin|stdout|stderr|__stack_chk_fail_local_dummy|sqrt.*|floor.*|ceil.*|pow.*|exp.*|log.*|sin.*|cos.*|atan.*|round.*|lround.*|__.*(sf|df|tf)[0-9]*)$')
 [ -z "$deny" ] && ok || bad "libsymline.a references: $deny"
 [ -n "$(nm "$lib" 2>/dev/null | grep ' T symline_')" ] && ok || bad "no symline_ symbols found in $lib"
+# every global the library defines carries the project's prefix (symline_ for
+# the API, symline_i_ for internals), so it cannot clash with a vendor SDK
+foreign=$(nm -g --defined-only "$lib" 2>/dev/null | awk 'NF == 3 {print $3}' | grep -v '^symline_' | sort -u)
+[ -z "$foreign" ] && ok || bad "libsymline.a defines globals without the symline_ prefix: $foreign"
 
 # 3. compiler-level: lib/ builds with general registers only (no x87/SSE float use possible)
 case "$($cc -dumpmachine 2>/dev/null)" in

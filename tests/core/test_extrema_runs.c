@@ -23,7 +23,7 @@ static void runs_by_hand(void **state)
     uint8_t map[sizeof E / sizeof E[0]];
     uint32_t i;
     (void)state;
-    sl_extrema_runs(E, n, SL_RUN_ANY_LENGTH, map);
+    symline_i_extrema_runs(E, n, SL_RUN_ANY_LENGTH, map);
     for (i = 0; i < n; i++) {
         const uint8_t want = (i == 1u || i == 5u)   ? SYMLINE_MAP_S
                              : (i == 2u || i == 9u) ? SYMLINE_MAP_A
@@ -31,13 +31,13 @@ static void runs_by_hand(void **state)
         assert_int_equal(map[i], want);
     }
     /* The plateau [3, 7] is marked at 5, 2 before its end: a lag of 2 keeps it, 1 drops it. */
-    sl_extrema_runs(E, n, 2, map);
+    symline_i_extrema_runs(E, n, 2, map);
     assert_int_equal(map[5], SYMLINE_MAP_S);
-    sl_extrema_runs(E, n, 1, map);
+    symline_i_extrema_runs(E, n, 1, map);
     assert_int_equal(map[5], SYMLINE_MAP_NONE);
     assert_int_equal(map[1], SYMLINE_MAP_S); /* runs of one always count */
     assert_int_equal(map[9], SYMLINE_MAP_A); /* [9, 10]: middle 9, 1 before the end */
-    sl_extrema_runs(E, n, 0, map);
+    symline_i_extrema_runs(E, n, 0, map);
     assert_int_equal(map[9], SYMLINE_MAP_NONE);
     assert_int_equal(map[2], SYMLINE_MAP_A);
 }
@@ -56,7 +56,7 @@ static void public_row_is_the_routine(void **state)
         memset(a, 0x77, sizeof a);
         memset(b, 0x77, sizeof b);
         assert_int_equal(symline_extrema_row(E, n, a), SYMLINE_OK);
-        sl_extrema_runs(E, n, SL_RUN_ANY_LENGTH, b);
+        symline_i_extrema_runs(E, n, SL_RUN_ANY_LENGTH, b);
         assert_memory_equal(a, b, sizeof a); /* equal, and nothing beyond n written */
         assert_int_equal(a[n - 1u], SYMLINE_MAP_NONE);
     }

@@ -72,7 +72,7 @@ static void line_continuing_a_curve_is_a_curve(void **state)
     r.point_cap = 128;
     r.point_count = n;
     r.truncated = false;
-    sl_curve_join(&r);
+    symline_i_curve_join(&r);
     assert_int_equal(segs[1].kind, SYMLINE_KIND_CURVE);
     assert_int_equal(segs[2].kind, SYMLINE_KIND_LINE);
     assert_int_equal(segs[3].kind, SYMLINE_KIND_LINE);

@@ -466,15 +466,15 @@ static void test_heading(void **state)
     int32_t dx, dy;
     double worst = 0.0;
     (void)state;
-    assert_int_equal(sl_heading_q8(0, 0), 0);
-    assert_int_equal(sl_heading_q8(5, 0), 0);
-    assert_int_equal(sl_heading_q8(0, 5), 90 * 256);
-    assert_int_equal(sl_heading_q8(-5, 0), 180 * 256);
-    assert_int_equal(sl_heading_q8(0, -5), 270 * 256);
-    assert_int_equal(sl_heading_q8(7, 7), 45 * 256);
-    assert_int_equal(sl_heading_q8(-7, -7), 225 * 256);
-    assert_int_equal(sl_heading_q8(INT32_MAX, -INT32_MAX), 315 * 256);
-    assert_int_equal(sl_heading_q8(INT32_MIN, 0), 180 * 256);
+    assert_int_equal(symline_i_heading_q8(0, 0), 0);
+    assert_int_equal(symline_i_heading_q8(5, 0), 0);
+    assert_int_equal(symline_i_heading_q8(0, 5), 90 * 256);
+    assert_int_equal(symline_i_heading_q8(-5, 0), 180 * 256);
+    assert_int_equal(symline_i_heading_q8(0, -5), 270 * 256);
+    assert_int_equal(symline_i_heading_q8(7, 7), 45 * 256);
+    assert_int_equal(symline_i_heading_q8(-7, -7), 225 * 256);
+    assert_int_equal(symline_i_heading_q8(INT32_MAX, -INT32_MAX), 315 * 256);
+    assert_int_equal(symline_i_heading_q8(INT32_MIN, 0), 180 * 256);
     for (dy = -300; dy <= 300; dy += 7) {
         for (dx = -300; dx <= 300; dx += 5) {
             double want, got;
@@ -483,7 +483,7 @@ static void test_heading(void **state)
             }
             want = atan2((double)dy, (double)dx) * 180.0 / PI;
             want = want < 0.0 ? want + 360.0 : want;
-            got = sl_heading_q8(dx, dy) / 256.0;
+            got = symline_i_heading_q8(dx, dy) / 256.0;
             assert_true(got >= 0.0 && got < 360.0);
             worst = fmax(worst, turn(got, want));
         }

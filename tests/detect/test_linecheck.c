@@ -44,24 +44,24 @@ static void too_wide_by_row(void **state)
     }
     /* The upper quarter of the field is rows 20..39 (80 / 4 = 20). */
     row_piece(q, 16, 10, 30);
-    assert_true(sl_linecheck_too_wide(rows, 1u, 100u, q, 16));
+    assert_true(symline_i_linecheck_too_wide(rows, 1u, 100u, q, 16));
     row_piece(q, 16, 10, 39);
-    assert_true(sl_linecheck_too_wide(rows, 2u, 100u, q, 16));
+    assert_true(symline_i_linecheck_too_wide(rows, 2u, 100u, q, 16));
     row_piece(q, 16, 10, 40);
-    assert_false(sl_linecheck_too_wide(rows, 1u, 100u, q, 16));
+    assert_false(symline_i_linecheck_too_wide(rows, 1u, 100u, q, 16));
     /* Above the boundary: not paint either. */
     row_piece(q, 16, 10, 5);
-    assert_true(sl_linecheck_too_wide(rows, 3u, 100u, q, 16));
+    assert_true(symline_i_linecheck_too_wide(rows, 3u, 100u, q, 16));
     /* Full resolution: no width to judge. */
     row_piece(q, 16, 10, 30);
-    assert_false(sl_linecheck_too_wide(rows, 0u, 100u, q, 16));
+    assert_false(symline_i_linecheck_too_wide(rows, 0u, 100u, q, 16));
     /* A boundary at the top of the frame says nothing of the distance. */
     for (i = 0; i < 64u; i++) {
         rows[i] = 0u;
     }
     row_piece(q, 16, 10, 3);
-    assert_false(sl_linecheck_too_wide(rows, 1u, 100u, q, 16));
-    assert_false(sl_linecheck_too_wide(rows, 1u, 100u, q, 0));
+    assert_false(symline_i_linecheck_too_wide(rows, 1u, 100u, q, 16));
+    assert_false(symline_i_linecheck_too_wide(rows, 1u, 100u, q, 0));
 }
 
 /* Carpet grain below row WALL_ROWS, a smooth bright wall above it. */

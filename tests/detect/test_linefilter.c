@@ -18,10 +18,10 @@
 static void setup_from_config(void **state)
 {
     symline_config cfg;
-    sl_linefilter f;
+    symline_i_linefilter f;
     (void)state;
     symline_config_default(&cfg);
-    sl_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_setup(&f, &cfg);
     assert_int_equal(f.kind, SYMLINE_FILTER_CONTRAST);
     assert_int_equal(f.a_distance, 0);
     assert_int_equal(f.min_gray, cfg.illumination);
@@ -32,45 +32,45 @@ static void setup_from_config(void **state)
     /* The paper filter searches its A point within a_distance, or the radius. */
     cfg.filter = SYMLINE_FILTER_PAPER;
     cfg.radius = 4;
-    sl_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_setup(&f, &cfg);
     assert_int_equal(f.a_distance, 4);
     cfg.a_distance = 7;
-    sl_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_setup(&f, &cfg);
     assert_int_equal(f.a_distance, 7);
 }
 
 static void gray_test(void **state)
 {
     symline_config cfg;
-    sl_linefilter f;
+    symline_i_linefilter f;
     (void)state;
     symline_config_default(&cfg);
-    sl_linefilter_setup(&f, &cfg);
-    assert_true(sl_linefilter_gray(&f, 100, 60, 60));  /* a ridge 40 high */
-    assert_false(sl_linefilter_gray(&f, 62, 60, 60));  /* 2 < contrast_min 3 */
-    assert_true(sl_linefilter_gray(&f, 63, 60, 60));   /* exactly 3 */
-    assert_false(sl_linefilter_gray(&f, 60, 60, 60));  /* no ridge */
-    assert_false(sl_linefilter_gray(&f, 100, 60, 90)); /* sides differ: needs 45 > 10 */
-    assert_true(sl_linefilter_gray(&f, 140, 60, 90));  /* 50 >= 45 */
+    symline_i_linefilter_setup(&f, &cfg);
+    assert_true(symline_i_linefilter_gray(&f, 100, 60, 60));  /* a ridge 40 high */
+    assert_false(symline_i_linefilter_gray(&f, 62, 60, 60));  /* 2 < contrast_min 3 */
+    assert_true(symline_i_linefilter_gray(&f, 63, 60, 60));   /* exactly 3 */
+    assert_false(symline_i_linefilter_gray(&f, 60, 60, 60));  /* no ridge */
+    assert_false(symline_i_linefilter_gray(&f, 100, 60, 90)); /* sides differ: needs 45 > 10 */
+    assert_true(symline_i_linefilter_gray(&f, 140, 60, 90));  /* 50 >= 45 */
     f.side_max = 80u;
-    assert_false(sl_linefilter_gray(&f, 140, 60, 90)); /* a side above side_max */
+    assert_false(symline_i_linefilter_gray(&f, 140, 60, 90)); /* a side above side_max */
     f.side_max = 255u;
     f.ridge_pct = 50u;
-    assert_false(sl_linefilter_gray(&f, 100, 60, 60)); /* needs 50 % of 100 */
+    assert_false(symline_i_linefilter_gray(&f, 100, 60, 60)); /* needs 50 % of 100 */
     f.ridge_pct = 0u;
     f.min_gray = 120u;
-    assert_false(sl_linefilter_gray(&f, 100, 60, 60)); /* darker than min_gray */
+    assert_false(symline_i_linefilter_gray(&f, 100, 60, 60)); /* darker than min_gray */
     /* The paper filter asks only for the gray value. */
     cfg.filter = SYMLINE_FILTER_PAPER;
     cfg.illumination = 100u;
-    sl_linefilter_setup(&f, &cfg);
-    assert_true(sl_linefilter_gray(&f, 100, 200, 10));
-    assert_false(sl_linefilter_gray(&f, 99, 0, 0));
+    symline_i_linefilter_setup(&f, &cfg);
+    assert_true(symline_i_linefilter_gray(&f, 100, 200, 10));
+    assert_false(symline_i_linefilter_gray(&f, 99, 0, 0));
 }
 
 static void a_point_near(void **state)
 {
-    sl_linefilter f;
+    symline_i_linefilter f;
     uint8_t row[12];
     uint8_t ring[4 * 3];
     (void)state;
@@ -81,27 +81,27 @@ static void a_point_near(void **state)
     memset(row, SYMLINE_MAP_NONE, sizeof row);
     row[5] = SYMLINE_MAP_A;
     row[9] = SYMLINE_MAP_S;
-    assert_true(sl_linefilter_a_near(&f, row, 12, 1, 12, 3));
-    assert_true(sl_linefilter_a_near(&f, row, 12, 1, 12, 7));
-    assert_false(sl_linefilter_a_near(&f, row, 12, 1, 12, 8)); /* 6..10: the S point only */
-    assert_false(sl_linefilter_a_near(&f, row, 12, 1, 12, 0));
-    assert_false(sl_linefilter_a_near(&f, row, 12, 1, 12, 11)); /* clipped at the end */
+    assert_true(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 3));
+    assert_true(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 7));
+    assert_false(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 8)); /* 6..10: the S point only */
+    assert_false(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 0));
+    assert_false(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 11)); /* clipped at the end */
     /* Down column 1 of a ring of 4 rows of 3: row y sits in slot y % 4. */
     memset(ring, SYMLINE_MAP_NONE, sizeof ring);
     ring[(6 % 4) * 3 + 1] = SYMLINE_MAP_A; /* row 6 */
-    assert_true(sl_linefilter_a_near(&f, ring + 1, 4, 3, 10, 4));
-    assert_true(sl_linefilter_a_near(&f, ring + 1, 4, 3, 10, 8));
-    assert_false(sl_linefilter_a_near(&f, ring + 1, 4, 3, 10, 9)); /* rows 7..9 */
-    assert_false(sl_linefilter_a_near(&f, ring, 4, 3, 10, 4));     /* column 0 */
+    assert_true(symline_i_linefilter_a_near(&f, ring + 1, 4, 3, 10, 4));
+    assert_true(symline_i_linefilter_a_near(&f, ring + 1, 4, 3, 10, 8));
+    assert_false(symline_i_linefilter_a_near(&f, ring + 1, 4, 3, 10, 9)); /* rows 7..9 */
+    assert_false(symline_i_linefilter_a_near(&f, ring, 4, 3, 10, 4));     /* column 0 */
 }
 
 static void statistics_and_adaptive_thresholds(void **state)
 {
     static uint8_t px[20 * 20];
     symline_image img;
-    sl_frame_stats st;
+    symline_i_frame_stats st;
     symline_config cfg;
-    sl_linefilter f;
+    symline_i_linefilter f;
     uint16_t top[20];
     uint32_t hist[256];
     uint32_t i;
@@ -117,28 +117,28 @@ static void statistics_and_adaptive_thresholds(void **state)
     img.stride = 20;
     img.data = px;
     /* The whole frame: the wall's 10 of 25 samples pull the median to 110. */
-    sl_frame_stats_measure(&img, NULL, hist, &st);
+    symline_i_frame_stats_measure(&img, NULL, hist, &st);
     assert_int_equal(st.mean, 110);
     /* The field from row 8: median 100, MAD 10, sigma 1.4826 * 10 = 14.8 (Q4 237). */
     for (i = 0; i < 20u; i++) {
         top[i] = 8u;
     }
-    sl_frame_stats_measure(&img, top, hist, &st);
+    symline_i_frame_stats_measure(&img, top, hist, &st);
     assert_int_equal(st.mean, 100);
     assert_int_equal(st.sigma_q4, 237);
     /* No field in the frame: nothing measured. */
     for (i = 0; i < 20u; i++) {
         top[i] = 20u;
     }
-    sl_frame_stats_measure(&img, top, hist, &st);
+    symline_i_frame_stats_measure(&img, top, hist, &st);
     assert_int_equal(st.mean, 0);
     assert_int_equal(st.sigma_q4, 0);
     /* Thresholds from a spread of 40 about a level of 100. */
     st.mean = 100u;
     st.sigma_q4 = 640u;
     symline_config_default(&cfg);
-    sl_linefilter_setup(&f, &cfg);
-    sl_linefilter_adapt(&f, &cfg, &st);
+    symline_i_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_adapt(&f, &cfg, &st);
     assert_int_equal(f.min_gray, 100); /* mean + 0 sigma */
     assert_int_equal(f.ridge_min, 36); /* 0.9 sigma */
     assert_int_equal(f.side_max, 220); /* mean + 3.0 sigma */
@@ -146,8 +146,8 @@ static void statistics_and_adaptive_thresholds(void **state)
     cfg.illumination = 150u;
     cfg.contrast_min = 120u;
     cfg.side_sigma10 = 100;
-    sl_linefilter_setup(&f, &cfg);
-    sl_linefilter_adapt(&f, &cfg, &st);
+    symline_i_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_adapt(&f, &cfg, &st);
     assert_int_equal(f.min_gray, 150);
     assert_int_equal(f.ridge_min, 120);
     assert_int_equal(f.side_max, 255);
@@ -155,8 +155,8 @@ static void statistics_and_adaptive_thresholds(void **state)
     cfg.bright_sigma10 = -100;
     cfg.illumination = 0u;
     cfg.side_sigma10 = 99;
-    sl_linefilter_setup(&f, &cfg);
-    sl_linefilter_adapt(&f, &cfg, &st);
+    symline_i_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_adapt(&f, &cfg, &st);
     assert_int_equal(f.min_gray, 0);
     assert_int_equal(f.side_max, 255);
 }
@@ -170,7 +170,7 @@ static bool band_fails(uint8_t line, uint8_t above, uint8_t below, uint32_t ridg
     symline_point q[26];
     symline_image img;
     symline_config cfg;
-    sl_linefilter f;
+    symline_i_linefilter f;
     uint32_t i;
     memset(px, above, 20 * 40);
     memset(px + 20 * 40, line, 40);
@@ -184,9 +184,9 @@ static bool band_fails(uint8_t line, uint8_t above, uint8_t below, uint32_t ridg
     img.stride = 40;
     img.data = px;
     symline_config_default(&cfg);
-    sl_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_setup(&f, &cfg);
     f.ridge_min = ridge_min;
-    return sl_linefilter_piece_fails(&f, &img, SYMLINE_AXIS_HORIZONTAL, 0, 4, q, 26);
+    return symline_i_linefilter_piece_fails(&f, &img, SYMLINE_AXIS_HORIZONTAL, 0, 4, q, 26);
 }
 
 static void whole_piece_side_test(void **state)

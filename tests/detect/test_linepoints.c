@@ -26,7 +26,7 @@
 
 /* ---- the full-frame path: whole grid image, whole maps, same filter rule ---- */
 
-static int plateau_ok(const uint32_t *E, const sl_pass *p, uint32_t x, uint32_t y)
+static int plateau_ok(const uint32_t *E, const symline_i_pass *p, uint32_t x, uint32_t y)
 {
     uint32_t b;
     if (p->axis == SYMLINE_AXIS_HORIZONTAL) {
@@ -40,13 +40,14 @@ static int plateau_ok(const uint32_t *E, const sl_pass *p, uint32_t x, uint32_t 
 }
 
 /* Extremum of the given kind at (x, y) that passes the plateau rule. */
-static int marked(const uint8_t *map, const uint32_t *E, const sl_pass *p, uint32_t x, uint32_t y,
-                  uint8_t kind)
+static int marked(const uint8_t *map, const uint32_t *E, const symline_i_pass *p, uint32_t x,
+                  uint32_t y, uint8_t kind)
 {
     return map[y * p->w + x] == kind && plateau_ok(E, p, x, y);
 }
 
-static uint32_t full_frame_points(const symline_image *img, const sl_pass *p, symline_point *out)
+static uint32_t full_frame_points(const symline_image *img, const symline_i_pass *p,
+                                  symline_point *out)
 {
     const uint32_t w = p->w, h = p->h, k = p->k, D = p->filter.a_distance;
     uint8_t *g = (uint8_t *)malloc((size_t)w * h);
@@ -58,7 +59,7 @@ static uint32_t full_frame_points(const symline_image *img, const sl_pass *p, sy
     void *ws;
     uint32_t x, y, n = 0u;
     for (y = 0; y < h; y++) {
-        sl_grid_row(img, p, y, acc, g + (size_t)y * w);
+        symline_i_grid_row(img, p, y, acc, g + (size_t)y * w);
     }
     gi.width = w;
     gi.height = h;
@@ -83,7 +84,7 @@ static uint32_t full_frame_points(const symline_image *img, const sl_pass *p, sy
                 lo = g[y * w + (x >= k ? x - k : 0u)];
                 hi = g[y * w + (x + k < w ? x + k : w - 1u)];
             }
-            if (!sl_linefilter_gray(&p->filter, c, lo, hi)) {
+            if (!symline_i_linefilter_gray(&p->filter, c, lo, hi)) {
                 continue;
             }
             if (D != 0u) {
@@ -117,20 +118,20 @@ static uint32_t full_frame_points(const symline_image *img, const sl_pass *p, sy
 static void compare_pass(const symline_image *img, const symline_config *cfg, symline_axis axis,
                          uint32_t level)
 {
-    sl_pass p;
+    symline_i_pass p;
     size_t wsn;
     uint8_t *ws;
     symline_point *a, *b;
     uint32_t *row_start, na = 0u, nb, i, y;
     uint32_t dropped = 0u;
-    sl_pass_setup(&p, cfg, axis, level, img->width, img->height);
-    wsn = sl_collect_ws_size(&p, img->width);
+    symline_i_pass_setup(&p, cfg, axis, level, img->width, img->height);
+    wsn = symline_i_collect_ws_size(&p, img->width);
     ws = tu_guard_alloc(wsn);
     memset(ws, 0x5A, wsn); /* results must not depend on what the workspace held */
     a = (symline_point *)malloc((size_t)p.w * p.h * sizeof(symline_point));
     b = (symline_point *)malloc((size_t)p.w * p.h * sizeof(symline_point));
     row_start = (uint32_t *)malloc(((size_t)p.h + 1u) * sizeof(uint32_t));
-    assert_int_equal(sl_collect(img, &p, ws, wsn, a, p.w * p.h, &na, row_start, &dropped),
+    assert_int_equal(symline_i_collect(img, &p, ws, wsn, a, p.w * p.h, &na, row_start, &dropped),
                      SYMLINE_OK);
     assert_true(tu_guard_ok(ws, wsn));
     assert_int_equal(dropped, 0);

@@ -42,20 +42,20 @@ static uint32_t two_lines(symline_point *p)
 
 static void test_perimeter(void **state)
 {
-    sl_perim p;
+    symline_i_perim p;
     uint32_t s, x, y;
     (void)state;
-    sl_perim_setup(&p, W, H, 4);
+    symline_i_perim_setup(&p, W, H, 4);
     assert_int_equal(p.len, 2u * 99u + 2u * 79u);
     assert_int_equal(p.ncell, 89u);
-    assert_int_equal(sl_perim_coord(&p, 0, 0), 0u);
-    assert_int_equal(sl_perim_coord(&p, 99, 20), 119u);
-    assert_int_equal(sl_perim_coord(&p, 60, 79), 217u);
-    assert_int_equal(sl_perim_coord(&p, 0, 20), 336u);
+    assert_int_equal(symline_i_perim_coord(&p, 0, 0), 0u);
+    assert_int_equal(symline_i_perim_coord(&p, 99, 20), 119u);
+    assert_int_equal(symline_i_perim_coord(&p, 60, 79), 217u);
+    assert_int_equal(symline_i_perim_coord(&p, 0, 20), 336u);
     for (s = 0; s < p.len; s++) {
-        sl_perim_point(&p, s, &x, &y);
+        symline_i_perim_point(&p, s, &x, &y);
         assert_true(x == 0 || y == 0 || x == 99 || y == 79);
-        assert_int_equal(sl_perim_coord(&p, x, y), s);
+        assert_int_equal(symline_i_perim_coord(&p, x, y), s);
     }
 }
 
@@ -63,21 +63,21 @@ static void test_perimeter(void **state)
  * cell 84; x = 62 at (62, 0): s = 62, cell 15, and (62, 79): s = 215, cell 53. */
 static void test_two_peaks(void **state)
 {
-    sl_perim p;
+    symline_i_perim p;
     symline_point pts[200];
     uint16_t cx[89], cy[89];
-    sl_peak peaks[8];
+    symline_i_peak peaks[8];
     uint16_t *acc;
     uint32_t n, np;
     int h = 0, v = 0, k;
     (void)state;
     n = two_lines(pts);
-    sl_perim_setup(&p, W, H, 4);
-    sl_cell_centres(&p, cx, cy);
-    acc = (uint16_t *)calloc((size_t)sl_pair_count(&p), sizeof(uint16_t));
+    symline_i_perim_setup(&p, W, H, 4);
+    symline_i_cell_centres(&p, cx, cy);
+    acc = (uint16_t *)calloc((size_t)symline_i_pair_count(&p), sizeof(uint16_t));
     assert_non_null(acc);
-    sl_muff_vote(&p, cx, cy, pts, n, acc);
-    np = sl_muff_peaks(&p, acc, 24, 2, peaks, 8);
+    symline_i_muff_vote(&p, cx, cy, pts, n, acc);
+    np = symline_i_muff_peaks(&p, acc, 24, 2, peaks, 8);
     assert_true(np >= 2u);
     for (k = 0; k < 2; k++) {
         h |= peaks[k].i == 29 && peaks[k].j == 84;

@@ -23,11 +23,11 @@
 static void setup_from_config(void **state)
 {
     symline_config cfg;
-    sl_pass p;
+    symline_i_pass p;
     (void)state;
     symline_config_default(&cfg);
     cfg.radius = 4;
-    sl_pass_setup(&p, &cfg, SYMLINE_AXIS_VERTICAL, 2, 101, 67);
+    symline_i_pass_setup(&p, &cfg, SYMLINE_AXIS_VERTICAL, 2, 101, 67);
     assert_int_equal(p.axis, SYMLINE_AXIS_VERTICAL);
     assert_int_equal(p.level, 2);
     assert_int_equal(p.w, 25); /* 101 >> 2 */
@@ -36,7 +36,7 @@ static void setup_from_config(void **state)
     assert_int_equal(p.k, 5);
     assert_int_equal(p.lag, 4);
     assert_int_equal(p.filter.kind, SYMLINE_FILTER_CONTRAST);
-    assert_true(sl_pass_ws_size(&p, 101, 67) > sl_collect_ws_size(&p, 101));
+    assert_true(symline_i_pass_ws_size(&p, 101, 67) > symline_i_collect_ws_size(&p, 101));
 }
 
 /* Noise on a gray carpet and a 3 px bright bar across the frame at rows 30..32. */
@@ -58,8 +58,8 @@ static void one_pass(void **state)
     symline_image img;
     symline_config cfg;
     symline_result r;
-    sl_run d;
-    sl_pass p;
+    symline_i_run d;
+    symline_i_pass p;
     uint8_t *ws;
     uint32_t i, total = 0u;
     uint32_t hist[256];
@@ -79,11 +79,12 @@ static void one_pass(void **state)
     d.cfg = &cfg;
     d.img = &img;
     d.r = &r;
-    sl_frame_stats_measure(&img, NULL, hist, &d.stats);
-    sl_pass_setup(&p, &cfg, SYMLINE_AXIS_HORIZONTAL, 0, W, H);
-    sl_linefilter_adapt(&p.filter, &cfg, &d.stats);
-    ws = (uint8_t *)malloc(sl_pass_ws_size(&p, W, H));
-    assert_int_equal(sl_pass_run(&d, &p, ws, ws + sl_pass_ws_size(&p, W, H)), SYMLINE_OK);
+    symline_i_frame_stats_measure(&img, NULL, hist, &d.stats);
+    symline_i_pass_setup(&p, &cfg, SYMLINE_AXIS_HORIZONTAL, 0, W, H);
+    symline_i_linefilter_adapt(&p.filter, &cfg, &d.stats);
+    ws = (uint8_t *)malloc(symline_i_pass_ws_size(&p, W, H));
+    assert_int_equal(symline_i_pass_run(&d, &p, ws, ws + symline_i_pass_ws_size(&p, W, H)),
+                     SYMLINE_OK);
     /* The bar: horizontal line segments on its centre row, points from 0 on. */
     assert_true(d.nseg >= 1u);
     assert_int_equal(d.prev_seg, d.nseg);
@@ -99,11 +100,12 @@ static void one_pass(void **state)
     assert_int_equal(d.npts, total);
     assert_true(total >= W / 2u);
     /* The same pass again finds only what is already reported: nothing new. */
-    assert_int_equal(sl_pass_run(&d, &p, ws, ws + sl_pass_ws_size(&p, W, H)), SYMLINE_OK);
+    assert_int_equal(symline_i_pass_run(&d, &p, ws, ws + symline_i_pass_ws_size(&p, W, H)),
+                     SYMLINE_OK);
     assert_int_equal(d.nseg, d.prev_seg);
     assert_int_equal(d.npts, total);
     /* Too little workspace is an error, not an overrun. */
-    assert_int_equal(sl_pass_run(&d, &p, ws, ws + 8), SYMLINE_ERR_BUFFER);
+    assert_int_equal(symline_i_pass_run(&d, &p, ws, ws + 8), SYMLINE_ERR_BUFFER);
     free(ws);
 }
 

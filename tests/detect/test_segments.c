@@ -38,18 +38,18 @@ static void corner_cut(void **state)
     uint32_t at, i;
     (void)state;
     /* Cut at (or next to) the corner point p[6] = (0, 6): the vertical arm first. */
-    at = sl_corner_cut(p, n);
+    at = symline_i_corner_cut(p, n);
     assert_true(at >= 5u && at <= 7u);
     /* The rest is straight: no further cut. */
-    assert_int_equal(sl_corner_cut(p + at, n - at), n - at);
+    assert_int_equal(symline_i_corner_cut(p + at, n - at), n - at);
     /* A straight chain and a chain too short to judge are never cut. */
     for (i = 0; i < 20u; i++) {
         p[i].x = (uint16_t)i;
         p[i].y = (uint16_t)(i / 3u);
     }
-    assert_int_equal(sl_corner_cut(p, 20), 20);
+    assert_int_equal(symline_i_corner_cut(p, 20), 20);
     l_chain(p);
-    assert_int_equal(sl_corner_cut(p, 8), 8);
+    assert_int_equal(symline_i_corner_cut(p, 8), 8);
 }
 
 static void fit_line_and_curve(void **state)
@@ -63,7 +63,7 @@ static void fit_line_and_curve(void **state)
         p[i].x = (uint16_t)(10u + i);
         p[i].y = (uint16_t)(20u + i / 4u);
     }
-    sl_fit(p, 40, 0, 512, &s);
+    symline_i_fit(p, 40, 0, 512, &s);
     assert_int_equal(s.kind, SYMLINE_KIND_LINE);
     /* Least-squares ends: on the staircase's centre line y = 19.625 + (x - 10) / 4. */
     assert_true(s.x0 >= 10 * 256 - 64 && s.x0 <= 10 * 256 + 64);
@@ -81,7 +81,7 @@ static void fit_line_and_curve(void **state)
             p[i].x = (uint16_t)(30 + c[i][0]);
             p[i].y = (uint16_t)(30 + c[i][1]);
         }
-        sl_fit(p, 21, 0, 512, &s);
+        symline_i_fit(p, 21, 0, 512, &s);
         assert_int_equal(s.kind, SYMLINE_KIND_CURVE);
         assert_true(s.max_dev >= 11u * 256u && s.max_dev <= 13u * 256u);
     }
@@ -90,7 +90,7 @@ static void fit_line_and_curve(void **state)
     p[0].y = 0;
     p[1].x = 4;
     p[1].y = 0;
-    sl_fit(p, 2, 1, 512, &s);
+    symline_i_fit(p, 2, 1, 512, &s);
     assert_int_equal(s.x0, 128);
     assert_int_equal(s.x1, 8 * 256 + 128);
 }
@@ -107,16 +107,16 @@ static void bend_tells_flat_arc_from_line(void **state)
         p[i].x = (uint16_t)(10u + i);
         p[i].y = (uint16_t)(20u + i / 4u);
     }
-    assert_true(sl_bend_q8(p, 60) < 40u);
+    assert_true(symline_i_bend_q8(p, 60) < 40u);
     /* A flat arc: y = 20 + round((x - 40)^2 / 400), sagitta 2 px over 60 px. */
     for (i = 0; i < 60u; i++) {
         const int32_t dx = (int32_t)i - 30;
         p[i].x = (uint16_t)(10u + i);
         p[i].y = (uint16_t)(20 + (dx * dx + 200) / 450);
     }
-    sl_fit(p, 60, 0, 512, &s);
-    assert_int_equal(s.kind, SYMLINE_KIND_LINE); /* under the max_dev threshold ... */
-    assert_true(sl_bend_q8(p, 60) >= 80u);       /* ... but it bends */
+    symline_i_fit(p, 60, 0, 512, &s);
+    assert_int_equal(s.kind, SYMLINE_KIND_LINE);  /* under the max_dev threshold ... */
+    assert_true(symline_i_bend_q8(p, 60) >= 80u); /* ... but it bends */
 }
 
 static void distances(void **state)
@@ -125,9 +125,9 @@ static void distances(void **state)
     (void)state;
     memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     /* (3, 4) px from the line through the origin along x: 4 px (Q8). */
-    assert_int_equal(sl_line_dist_q8(0, 0, 256, 0, 3 * 256, 4 * 256), 4u * 256u);
+    assert_int_equal(symline_i_line_dist_q8(0, 0, 256, 0, 3 * 256, 4 * 256), 4u * 256u);
     /* A zero direction: the distance to the point itself (5 px). */
-    assert_int_equal(sl_line_dist_q8(0, 0, 0, 0, 3 * 256, 4 * 256), 5u * 256u);
+    assert_int_equal(symline_i_line_dist_q8(0, 0, 0, 0, 3 * 256, 4 * 256), 5u * 256u);
     /* The largest distance of points to a chord, at level 0 and at level 1 (block centres). */
     p[0].x = 0;
     p[0].y = 0;
@@ -135,12 +135,13 @@ static void distances(void **state)
     p[1].y = 2;
     p[2].x = 10;
     p[2].y = 0;
-    assert_int_equal(sl_max_dev(p, 3, 0, 0, 0, 10 * 256, 0), 2u * 256u);
-    assert_int_equal(sl_max_dev(p, 3, 1, 128, 128, 20 * 256 + 128, 128), 4u * 256u);
+    assert_int_equal(symline_i_max_dev(p, 3, 0, 0, 0, 10 * 256, 0), 2u * 256u);
+    assert_int_equal(symline_i_max_dev(p, 3, 1, 128, 128, 20 * 256 + 128, 128), 4u * 256u);
     /* Curve test: above the threshold and above 1/32 of the chord. */
-    assert_true(sl_is_curve(0, 0, 64 * 256, 0, 3u * 256u, 512u));
-    assert_false(sl_is_curve(0, 0, 64 * 256, 0, 512u, 512u));       /* not above the threshold */
-    assert_false(sl_is_curve(0, 0, 200 * 256, 0, 6u * 256u, 512u)); /* under 1/32 of 200 px */
+    assert_true(symline_i_is_curve(0, 0, 64 * 256, 0, 3u * 256u, 512u));
+    assert_false(symline_i_is_curve(0, 0, 64 * 256, 0, 512u, 512u)); /* not above the threshold */
+    assert_false(
+        symline_i_is_curve(0, 0, 200 * 256, 0, 6u * 256u, 512u)); /* under 1/32 of 200 px */
 }
 
 static void near_segment(void **state)
@@ -158,10 +159,10 @@ static void near_segment(void **state)
     s.y1 = 10 * 256;
     s.kind = SYMLINE_KIND_LINE;
     s.count = 2;
-    assert_true(sl_near_segment(&s, pts, 30 * 256, 11 * 256, 512));  /* 1 px off the chord */
-    assert_false(sl_near_segment(&s, pts, 30 * 256, 13 * 256, 512)); /* 3 px off */
-    assert_true(sl_near_segment(&s, pts, 51 * 256, 10 * 256, 512));  /* 1 px beyond an end */
-    assert_false(sl_near_segment(&s, pts, 53 * 256, 10 * 256, 512)); /* 3 px beyond it */
+    assert_true(symline_i_near_segment(&s, pts, 30 * 256, 11 * 256, 512));  /* 1 px off the chord */
+    assert_false(symline_i_near_segment(&s, pts, 30 * 256, 13 * 256, 512)); /* 3 px off */
+    assert_true(symline_i_near_segment(&s, pts, 51 * 256, 10 * 256, 512));  /* 1 px beyond an end */
+    assert_false(symline_i_near_segment(&s, pts, 53 * 256, 10 * 256, 512)); /* 3 px beyond it */
     /* A curve is followed along its points, not its chord: an L of points. */
     for (i = 0; i < 8u; i++) {
         pts[i].x = 10;
@@ -176,8 +177,8 @@ static void near_segment(void **state)
     s.y0 = 10 * 256;
     s.x1 = 24 * 256;
     s.y1 = 24 * 256;
-    assert_true(sl_near_segment(&s, pts, 10 * 256, 17 * 256, 256));  /* on the vertical arm */
-    assert_false(sl_near_segment(&s, pts, 17 * 256, 17 * 256, 256)); /* on the chord only */
+    assert_true(symline_i_near_segment(&s, pts, 10 * 256, 17 * 256, 256)); /* on the vertical arm */
+    assert_false(symline_i_near_segment(&s, pts, 17 * 256, 17 * 256, 256)); /* on the chord only */
 }
 
 int main(void)

@@ -59,24 +59,24 @@ static symline_image horizontal_band(uint32_t y0, const uint8_t *profile, uint32
     return img;
 }
 
-static sl_pass pass_of(symline_axis axis, uint32_t level)
+static symline_i_pass pass_of(symline_axis axis, uint32_t level)
 {
     symline_config cfg;
-    sl_pass p;
+    symline_i_pass p;
     symline_config_default(&cfg);
-    sl_pass_setup(&p, &cfg, axis, level, W, H);
+    symline_i_pass_setup(&p, &cfg, axis, level, W, H);
     return p;
 }
 
 /* Offset (1/128 grid px) of the point at index i across the line, row/column `at`. */
-static int32_t offset_of(const symline_image *img, const sl_pass *p, uint32_t at, uint32_t i)
+static int32_t offset_of(const symline_image *img, const symline_i_pass *p, uint32_t at, uint32_t i)
 {
     symline_point q;
     q.x = (uint16_t)(p->axis == SYMLINE_AXIS_VERTICAL ? i : at);
     q.y = (uint16_t)(p->axis == SYMLINE_AXIS_VERTICAL ? at : i);
     q.fx = 99; /* overwritten */
     q.fy = 99;
-    sl_subpixel(img, p, &q, 1u);
+    symline_i_subpixel(img, p, &q, 1u);
     if (p->axis == SYMLINE_AXIS_VERTICAL) {
         assert_int_equal(q.fy, 0);
         return q.fx;
@@ -90,7 +90,7 @@ static void even_and_odd_widths(void **state)
     static const uint8_t two[] = {200, 200}, three[] = {200, 200, 200},
                          four[] = {200, 200, 200, 200};
     symline_image img;
-    sl_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 0u), h = pass_of(SYMLINE_AXIS_HORIZONTAL, 0u);
+    symline_i_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 0u), h = pass_of(SYMLINE_AXIS_HORIZONTAL, 0u);
     (void)state;
     /* 2 px at x 20, 21: the S point is the lower middle 20, the ridge's middle 20.5. */
     img = vertical_band(20u, two, 2u);
@@ -115,7 +115,7 @@ static void blurred_between_pixels(void **state)
     static const uint8_t band[] = {90, 150, 200, 200, 180, 120, 70};
     static const uint8_t mirrored[] = {70, 120, 180, 200, 200, 150, 90};
     symline_image img;
-    sl_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 0u);
+    symline_i_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 0u);
     int32_t off;
     uint32_t i, best = 0u, e, beste = 0xFFFFFFFFu;
     (void)state;
@@ -150,16 +150,16 @@ static void coarse_scale(void **state)
 {
     static const uint8_t four[] = {200, 200, 200, 200};
     symline_image img = vertical_band(40u, four, 4u);
-    sl_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 1u);
+    symline_i_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 1u);
     symline_point q;
     (void)state;
     q.x = 20;
     q.y = 5;
-    sl_subpixel(&img, &v, &q, 1u);
+    symline_i_subpixel(&img, &v, &q, 1u);
     assert_int_equal(q.fx, 64);
-    assert_int_equal(sl_pt_q8x(&q, 1u), (int32_t)(41.5 * 256));
-    assert_int_equal(sl_pt_q8y(&q, 1u), (int32_t)(10.5 * 256));
-    sl_pt_to_full(&q, 1u);
+    assert_int_equal(symline_i_pt_q8x(&q, 1u), (int32_t)(41.5 * 256));
+    assert_int_equal(symline_i_pt_q8y(&q, 1u), (int32_t)(10.5 * 256));
+    symline_i_pt_to_full(&q, 1u);
     /* 41.5 -> pixel 42 - 0.5; 10.5 -> pixel 11 - 0.5. */
     assert_int_equal(q.x, 42);
     assert_int_equal(q.fx, -64);
@@ -172,7 +172,7 @@ static void border_and_flat(void **state)
 {
     static const uint8_t two[] = {200, 200};
     symline_image img = vertical_band(20u, two, 2u);
-    sl_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 0u);
+    symline_i_pass v = pass_of(SYMLINE_AXIS_VERTICAL, 0u);
     (void)state;
     assert_int_equal(offset_of(&img, &v, 10u, 0u), 0);
     assert_int_equal(offset_of(&img, &v, 10u, W - 1u), 0);

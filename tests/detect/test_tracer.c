@@ -43,12 +43,12 @@ static void load(map *m, const char *const *rows, uint32_t h)
 /* Traces everything; chain lengths to len[], first/last points to ends[]. */
 static uint32_t trace_all(map *m, uint32_t *len, symline_point (*ends)[2], uint32_t maxc)
 {
-    sl_tracer t;
+    symline_i_tracer t;
     symline_point dst[MAXP];
     uint32_t c = 0u, count;
     bool cut = false;
-    sl_tracer_init(&t, m->pts, m->n, m->row_start, m->h);
-    while (sl_tracer_next(&t, dst, MAXP, &count, &cut)) {
+    symline_i_tracer_init(&t, m->pts, m->n, m->row_start, m->h);
+    while (symline_i_tracer_next(&t, dst, MAXP, &count, &cut)) {
         assert_true(c < maxc);
         len[c] = count;
         ends[c][0] = dst[0];
@@ -197,20 +197,20 @@ static void isolated_and_pairs(void **state)
 static void classification(void **state)
 {
     map m;
-    sl_tracer t;
+    symline_i_tracer t;
     (void)state;
     ROWS("#.....", "..###.", "...#..");
-    sl_tracer_init(&t, m.pts, m.n, m.row_start, m.h);
-    assert_int_equal(sl_neighbours(&t, 0, 0), 0); /* A */
-    assert_int_equal(sl_neighbours(&t, 2, 1), 2); /* C: (3,1) and (3,2) */
-    assert_int_equal(sl_neighbours(&t, 4, 1), 2);
-    assert_int_equal(sl_neighbours(&t, 3, 1), 3);
+    symline_i_tracer_init(&t, m.pts, m.n, m.row_start, m.h);
+    assert_int_equal(symline_i_neighbours(&t, 0, 0), 0); /* A */
+    assert_int_equal(symline_i_neighbours(&t, 2, 1), 2); /* C: (3,1) and (3,2) */
+    assert_int_equal(symline_i_neighbours(&t, 4, 1), 2);
+    assert_int_equal(symline_i_neighbours(&t, 3, 1), 3);
 }
 
 static void storage_exhaustion(void **state)
 {
     map m;
-    sl_tracer t;
+    symline_i_tracer t;
     symline_point dst[8];
     uint32_t count, i;
     bool cut = false;
@@ -220,8 +220,8 @@ static void storage_exhaustion(void **state)
         dst[i].x = 0xBEEFu;
         dst[i].y = 0xBEEFu;
     }
-    sl_tracer_init(&t, m.pts, m.n, m.row_start, m.h);
-    assert_int_equal(sl_tracer_next(&t, dst, 4, &count, &cut), 1);
+    symline_i_tracer_init(&t, m.pts, m.n, m.row_start, m.h);
+    assert_int_equal(symline_i_tracer_next(&t, dst, 4, &count, &cut), 1);
     assert_int_equal(count, 4);
     assert_int_equal(cut, 1);
     for (i = 4; i < 8u; i++) {
@@ -229,10 +229,10 @@ static void storage_exhaustion(void **state)
     }
     /* The rest is still there and comes out as further chains. */
     cut = false;
-    assert_int_equal(sl_tracer_next(&t, dst, 8, &count, &cut), 1);
+    assert_int_equal(symline_i_tracer_next(&t, dst, 8, &count, &cut), 1);
     assert_int_equal(count, 6);
     assert_int_equal(cut, 0);
-    assert_int_equal(sl_tracer_next(&t, dst, 0, &count, &cut), 0);
+    assert_int_equal(symline_i_tracer_next(&t, dst, 0, &count, &cut), 0);
     assert_int_equal(cut, 1);
 }
 
