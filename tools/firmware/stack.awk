@@ -66,7 +66,7 @@ function chain(f,    s) {
 END {
     if (budget == "") budget = 512
     fail = 0; count = 0
-    for (f in defined) if (f ~ /^symline_/ && f !~ /:/) entry[++count] = f
+    for (f in defined) if (f ~ /^symline_/ && f !~ /^symline_i_/ && f !~ /:/) entry[++count] = f
     # sort entry points by name (insertion sort: no gawk extensions)
     for (i = 2; i <= count; i++) {
         v = entry[i]; j = i - 1
