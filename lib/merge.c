@@ -9,6 +9,7 @@
 #include "merge.h"
 
 #include "fixed.h"
+#include "segindex.h"
 #include "segments.h"
 #include "tracer.h"
 
@@ -89,34 +90,31 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     return true;
 }
 
-/* The joined piece's max_dev, or SL_JOINED_IS_CURVE when it would be a curve. Kept
- * apart from mergeable() so their frames are never on the stack together. */
-SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_segment *b,
-                                       const symline_point *pts, const int32_t ends[4],
-                                       uint32_t curve_q8)
+/* The joined piece's max_dev, or SL_JOINED_IS_CURVE when it would be a curve
+ * (ap, bp: the pieces' points). Kept apart from mergeable() so their frames
+ * are never on the stack together. */
+SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_point *ap,
+                                       const symline_segment *b, const symline_point *bp,
+                                       const int32_t ends[4], uint32_t curve_q8)
 {
-    uint32_t d =
-        symline_i_max_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    uint32_t sm =
-        symline_i_smooth_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    const uint32_t d2 =
-        symline_i_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    uint32_t d = symline_i_max_dev(ap, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    uint32_t sm = symline_i_smooth_dev(ap, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+    const uint32_t d2 = symline_i_max_dev(bp, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     const uint32_t sm2 =
-        symline_i_smooth_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
+        symline_i_smooth_dev(bp, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
     d = d2 > d ? d2 : d;
     sm = sm2 > sm ? sm2 : sm;
     return symline_i_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_JOINED_IS_CURVE
                                                                                 : d;
 }
 
-/* A line may join; so may a piece taken for a curve whose points, smoothed,
- * stay within half the curve threshold of its chord: a straight piece whose
- * ridge jitters on the turf, not an arc of the circle. */
-static bool joinable(const symline_segment *s, const symline_point *pts, uint32_t curve_q8)
+/* A line may join; so may a piece taken for a curve whose points (p),
+ * smoothed, stay within half the curve threshold of its chord: a straight
+ * piece whose ridge jitters on the turf, not an arc of the circle. */
+static bool joinable(const symline_segment *s, const symline_point *p, uint32_t curve_q8)
 {
     return s->kind == SYMLINE_KIND_LINE ||
-           symline_i_smooth_dev(pts + s->first, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <=
-               curve_q8 / 2u;
+           symline_i_smooth_dev(p, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <= curve_q8 / 2u;
 }
 
 /* A segment's ends, Q8. */
@@ -141,68 +139,342 @@ static void copy_segment(symline_segment *d, const symline_segment *s)
     d->merged = s->merged;
 }
 
-/* Moves segment j's points right behind segment i's (i < j, ranges ordered), removes j. */
-static void absorb(symline_result *r, uint32_t i, uint32_t j)
+static void copy_points(symline_point *d, const symline_point *s, uint32_t n)
 {
+    uint32_t k;
+    for (k = 0; k < n; k++) {
+        d[k].x = s[k].x;
+        d[k].y = s[k].y;
+        d[k].fx = s[k].fx;
+        d[k].fy = s[k].fy;
+    }
+}
+
+/* A slot whose segment was absorbed (kind is a symline_kind otherwise); the
+ * slots are compacted when the merge is done, so that a slot keeps its number
+ * in the grid of ends meanwhile. */
+#define SL_GONE 0xFFu
+#define SL_NO_NODE 0xFFFFFFFFu
+
+/*
+ * The merge's state, and what makes it near-linear without changing a
+ * single join:
+ * - The grid of ends: node 2 s + e (end e of slot s) in the list of the
+ *   32 px cell of that end (head, next; slots [0, indexed) entered), built
+ *   at the start of each round. A piece j joining piece i has an end within
+ *   the gap of one of i's ends and within the merge deviation of i's line,
+ *   so the cells along i's line, stretched by the gap past both ends, list
+ *   every j that can join i. Within a round only the piece in hand grows
+ *   and the later pieces it takes are marked gone, so the grid of the
+ *   round's start is exact for every later piece; the candidates are tried
+ *   in slot order, as all pairs would be.
+ * - The layout: rather than rotating every point between two joined pieces
+ *   into place (which made the joins of a cluttered frame quadratic in its
+ *   points), each piece's points are copied in slot order to the free end
+ *   of the point storage (out), a join appending the absorbed piece's
+ *   points, and copied back at the end of a round: the layout the rotations
+ *   give. Without room for it (or with points not laid out piece after
+ *   piece in slot order), the rotations.
+ */
+typedef struct merger {
+    symline_result *r;
+    uint32_t n; /* slots */
+    uint64_t gap2;
+    uint32_t gap_q8, dev_q8, curve_q8;
+    uint32_t cols, rows; /* of the grid; cols 0: no grid, every later piece is tried */
+    int32_t margin;      /* Q8, across i's line */
+    uint32_t *head, *next, *cand, cand_cap, indexed;
+    symline_point *out; /* NULL: rotations */
+    uint32_t pos;       /* where the piece in hand starts in out */
+} merger;
+
+/* Piece s's points, the piece in hand's in out. */
+static const symline_point *points_of(const merger *m, uint32_t s, uint32_t in_hand)
+{
+    return m->out != NULL && s == in_hand ? m->out + m->pos
+                                          : m->r->points + m->r->segments[s].first;
+}
+
+/* Moves segment j's points right behind segment i's (i < j, ranges ordered). */
+static void absorb(merger *m, uint32_t i, uint32_t j)
+{
+    symline_result *r = m->r;
     symline_segment *a = &r->segments[i];
     const uint32_t b_first = r->segments[j].first, b_count = r->segments[j].count;
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
     uint32_t k;
-    symline_i_reverse_points(r->points + mid0, midn);
-    symline_i_reverse_points(r->points + b_first, b_count);
-    symline_i_reverse_points(r->points + mid0, midn + b_count);
-    for (k = i + 1u; k < j; k++) {
-        r->segments[k].first += b_count;
-    }
-    a->count += b_count;
-    for (k = j; k + 1u < r->segment_count; k++) {
-        copy_segment(&r->segments[k], &r->segments[k + 1u]);
-    }
-    r->segment_count--;
-}
-
-void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8)
-{
-    const uint64_t gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
-    uint32_t i, j;
-    bool changed = true;
-    while (changed) {
-        changed = false;
-        for (i = 0; i < r->segment_count; i++) {
-            /* Whether piece i may join at all does not change while it is
-             * tried against the others (a join makes it a line): asked once,
-             * not for every pair (that cost a cluttered 2560x1920 frame 10x
-             * its detection time). */
-            if (!joinable(&r->segments[i], r->points, curve_dev_q8)) {
-                continue;
-            }
-            for (j = i + 1u; j < r->segment_count; j++) {
-                int32_t ends[4];
-                uint32_t dev;
-                symline_segment *a = &r->segments[i];
-                const symline_segment *b = &r->segments[j];
-                const uint32_t level = a->level > b->level ? a->level : b->level;
-                const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
-                /* The cheap geometric test first; both are pure, so the order
-                 * changes nothing but the cost. */
-                if (!mergeable(a, b, gap2, dev_q8 + symline_i_block_half_q8(level), ends) ||
-                    !joinable(b, r->points, curve_dev_q8)) {
-                    continue;
-                }
-                dev = joined_dev(a, b, r->points, ends, thr);
-                if (dev == SL_JOINED_IS_CURVE) {
-                    continue;
-                }
-                set_ends(a, ends[0], ends[1], ends[2], ends[3]);
-                a->max_dev = dev;
-                a->kind = SYMLINE_KIND_LINE;
-                a->level = (uint8_t)level;
-                a->merged = true; /* points piece after piece (curvejoin.c) */
-                absorb(r, i, j);
-                changed = true;
-                j = i; /* the grown segment may now reach pieces it missed */
-            }
+    if (m->out != NULL) {
+        copy_points(m->out + m->pos + a->count, r->points + b_first, b_count);
+    } else {
+        symline_i_reverse_points(r->points + mid0, midn);
+        symline_i_reverse_points(r->points + b_first, b_count);
+        symline_i_reverse_points(r->points + mid0, midn + b_count);
+        for (k = i + 1u; k < j; k++) {
+            r->segments[k].first += b_count;
         }
     }
+    a->count += b_count;
+    r->segments[j].kind = SL_GONE;
+}
+
+/* Joins piece j into piece i when the pair passes the merge's tests. */
+static bool try_join(merger *m, uint32_t i, uint32_t j)
+{
+    int32_t ends[4];
+    uint32_t dev;
+    symline_segment *a = &m->r->segments[i];
+    const symline_segment *b = &m->r->segments[j];
+    const uint32_t level = a->level > b->level ? a->level : b->level;
+    const uint32_t thr = m->curve_q8 + symline_i_block_half_q8(level);
+    const symline_point *bp;
+    if (b->kind == SL_GONE) {
+        return false;
+    }
+    bp = points_of(m, j, i);
+    /* The cheap geometric test first; both are pure, so the order changes
+     * nothing but the cost. */
+    if (!mergeable(a, b, m->gap2, m->dev_q8 + symline_i_block_half_q8(level), ends) ||
+        !joinable(b, bp, m->curve_q8)) {
+        return false;
+    }
+    dev = joined_dev(a, points_of(m, i, i), b, bp, ends, thr);
+    if (dev == SL_JOINED_IS_CURVE) {
+        return false;
+    }
+    set_ends(a, ends[0], ends[1], ends[2], ends[3]);
+    a->max_dev = dev;
+    a->kind = SYMLINE_KIND_LINE;
+    a->level = (uint8_t)level;
+    a->merged = true; /* points piece after piece (curvejoin.c) */
+    absorb(m, i, j);
+    return true;
+}
+
+/* Sorts v[0..n-1] ascending (heap sort: no recursion, no extra memory). */
+static void sort_u32(uint32_t *v, uint32_t n)
+{
+    uint32_t start = n / 2u, end = n;
+    while (end > 1u) {
+        uint32_t root, t;
+        if (start > 0u) {
+            start--;
+        } else {
+            end--;
+            t = v[0];
+            v[0] = v[end];
+            v[end] = t;
+        }
+        root = start;
+        for (;;) {
+            uint32_t child = 2u * root + 1u;
+            if (child >= end) {
+                break;
+            }
+            if (child + 1u < end && v[child + 1u] > v[child]) {
+                child++;
+            }
+            if (v[root] >= v[child]) {
+                break;
+            }
+            t = v[root];
+            v[root] = v[child];
+            v[child] = t;
+            root = child;
+        }
+    }
+}
+
+/* Ends farther from the origin than this (Q8) keep a piece out of the
+ * grid's stretched chords (32-bit arithmetic); frame coordinates are below 2^24. */
+#define SL_MERGE_COORD_LIM ((int32_t)1 << 26)
+
+static bool coord_ok(int32_t v)
+{
+    return v > -SL_MERGE_COORD_LIM && v < SL_MERGE_COORD_LIM;
+}
+
+/*
+ * The slots with an end in the cells within m->margin of a's chord
+ * stretched by the gap past both ends, ascending, each once, in m->cand.
+ * Returns their number, or -1 when more than m->cand_cap were found (or a's
+ * ends are beyond the walk's range): then every later piece is tried.
+ */
+SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
+{
+    const int32_t dx = a->x1 - a->x0, dy = a->y1 - a->y0;
+    const uint32_t ux = (uint32_t)(dx < 0 ? -dx : dx), uy = (uint32_t)(dy < 0 ? -dy : dy);
+    const uint32_t cheb = ux > uy ? ux : uy;
+    /* Whole multiples of a's direction, longer than the gap (the larger of
+     * |dx|, |dy| is no longer than the chord). */
+    const int32_t k = cheb > 0u ? (int32_t)(m->gap_q8 / cheb + 1u) : 0;
+    symline_i_cellwalk q;
+    uint32_t i, w;
+    if (!coord_ok(a->x0) || !coord_ok(a->y0) || !coord_ok(a->x1) || !coord_ok(a->y1)) {
+        return -1;
+    }
+    q.cols = m->cols;
+    q.rows = m->rows;
+    q.mode = SL_WALK_GATHER;
+    q.px0 = 1u; /* no previous piece */
+    q.px1 = 0u;
+    q.head = m->head;
+    q.next = m->next;
+    q.cand = m->cand;
+    q.cand_cap = m->cand_cap;
+    q.n = 0u;
+    symline_i_cellwalk_chord(&q, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k,
+                             m->margin);
+    if (q.n > q.cand_cap) {
+        return -1;
+    }
+    sort_u32(m->cand, q.n);
+    for (i = 0, w = 0; i < q.n; i++) {
+        if (w == 0u || m->cand[w - 1u] != m->cand[i]) {
+            m->cand[w++] = m->cand[i];
+        }
+    }
+    return (int32_t)w;
+}
+
+/* Piece i takes the first later piece (in slot order) that joins it: true,
+ * or false when none does. */
+static bool join_first(merger *m, uint32_t i)
+{
+    uint32_t j = i + 1u;
+    if (m->cols != 0u) {
+        const int32_t nc = candidates(m, &m->r->segments[i]);
+        if (nc >= 0) {
+            int32_t k;
+            for (k = 0; k < nc; k++) {
+                if (m->cand[k] > i && try_join(m, i, m->cand[k])) {
+                    return true;
+                }
+            }
+            j = m->indexed > j ? m->indexed : j; /* the pieces not in the grid */
+        }
+    }
+    for (; j < m->n; j++) {
+        if (try_join(m, i, j)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/* The grid's lists of the slots in it, in their ends' cells. */
+static void grid_build(merger *m)
+{
+    const symline_segment *segs = m->r->segments;
+    uint32_t c, s, e;
+    for (c = 0; c < m->cols * m->rows; c++) {
+        m->head[c] = SL_NO_NODE;
+    }
+    for (s = 0; s < m->indexed; s++) {
+        for (e = 0; e < 2u && segs[s].kind != SL_GONE; e++) {
+            const int32_t x = e ? segs[s].x1 : segs[s].x0, y = e ? segs[s].y1 : segs[s].y0;
+            c = symline_i_cell_of(y, m->rows) * m->cols + symline_i_cell_of(x, m->cols);
+            m->next[2u * s + e] = m->head[c];
+            m->head[c] = 2u * s + e;
+        }
+    }
+}
+
+/* The grid in ws (cells, then two nodes per slot for as many slots as leave
+ * a quarter for the candidates); none when ws is too small or the
+ * thresholds too large for its 32-bit walk (then every pair is tried). */
+static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_t height,
+                      uint32_t max_level)
+{
+    uint8_t *cur = (uint8_t *)ws, *lim;
+    size_t e;
+    m->cols = 0u;
+    m->indexed = 0u;
+    if (ws == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
+        height > SYMLINE_MAX_DIM || m->gap_q8 > SL_PX_Q8(SYMLINE_MAX_DIM) ||
+        m->dev_q8 > SL_PX_Q8(SYMLINE_MAX_DIM) || max_level > 12u) {
+        return;
+    }
+    lim = cur + bytes;
+    m->rows = ((height - 1u) >> SL_CELL_SHIFT) + 1u;
+    m->head = (uint32_t *)symline_i_carve(
+        &cur, lim, (size_t)(((width - 1u) >> SL_CELL_SHIFT) + 1u) * m->rows * sizeof(uint32_t));
+    m->next = (uint32_t *)symline_i_carve(&cur, lim, sizeof(uint32_t));
+    if (m->head == NULL || m->next == NULL) {
+        return;
+    }
+    e = (size_t)(lim - (uint8_t *)m->next) / sizeof(uint32_t);
+    if (e < 64u) {
+        return;
+    }
+    m->indexed = (size_t)m->n < e * 3u / 8u ? m->n : (uint32_t)(e * 3u / 8u);
+    m->cand = m->next + 2u * (size_t)m->indexed;
+    e -= 2u * (size_t)m->indexed;
+    m->cand_cap = e > 0xFFFFFFu ? 0xFFFFFFu : (uint32_t)e;
+    m->cols = ((width - 1u) >> SL_CELL_SHIFT) + 1u;
+    /* A joining piece's end lies within the deviation of i's line (plus the
+     * coarsest scale's half block, plus rounding). */
+    m->margin = (int32_t)(m->dev_q8 + symline_i_block_half_q8(max_level) + SL_PX_Q8(1u));
+}
+
+void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8,
+                     uint32_t width, uint32_t height, void *ws, size_t ws_size)
+{
+    merger m;
+    uint32_t i, w, max_level = 0u, sum = 0u;
+    bool changed = true, in_order = true;
+    m.r = r;
+    m.n = r->segment_count;
+    m.gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
+    m.gap_q8 = gap_px > SYMLINE_MAX_DIM ? UINT32_MAX : gap_px << SL_Q8_SHIFT;
+    m.dev_q8 = dev_q8;
+    m.curve_q8 = curve_dev_q8;
+    for (i = 0; i < m.n; i++) {
+        const symline_segment *s = &r->segments[i];
+        max_level = s->level > max_level ? s->level : max_level;
+        in_order = in_order && s->first == sum && s->count <= r->point_count - sum;
+        sum = in_order ? sum + s->count : sum;
+    }
+    m.out = in_order && sum != 0u && r->point_cap - r->point_count >= sum ? r->points + r->point_count : NULL;
+    grid_init(&m, ws, ws_size, width, height, max_level);
+    /* In slot order, each piece takes the first later piece that joins it,
+     * again and again (the grown piece may reach pieces it missed), until a
+     * whole round joins nothing. */
+    while (changed) {
+        changed = false;
+        m.pos = 0u;
+        if (m.cols != 0u) {
+            grid_build(&m);
+        }
+        for (i = 0; i < m.n; i++) {
+            symline_segment *a = &r->segments[i];
+            if (a->kind == SL_GONE) {
+                continue;
+            }
+            if (m.out != NULL) {
+                copy_points(m.out + m.pos, r->points + a->first, a->count);
+                a->first = m.pos;
+            }
+            /* Whether piece i may join at all does not change while it is
+             * tried against the others (a join makes it a line). */
+            if (joinable(a, points_of(&m, i, i), curve_dev_q8)) {
+                while (join_first(&m, i)) {
+                    changed = true;
+                }
+            }
+            m.pos += a->count;
+        }
+        if (m.out != NULL && changed) {
+            copy_points(r->points, m.out, m.pos);
+        }
+    }
+    for (i = 0, w = 0; i < m.n; i++) {
+        if (r->segments[i].kind != SL_GONE) {
+            if (w != i) {
+                copy_segment(&r->segments[w], &r->segments[i]);
+            }
+            w++;
+        }
+    }
+    r->segment_count = w;
 }

@@ -12,9 +12,14 @@
  * Merges collinear line segments of r: ends at most gap_px apart, each end
  * within dev_q8 of the other's line, the joined piece no curve by
  * curve_dev_q8 (both thresholds plus half a block of the coarser scale).
- * The joined piece's points are kept contiguous by rotation (piece after
- * piece); a merged segment gets merged = true.
+ * The joined piece's points are kept contiguous (piece after piece); a
+ * merged segment gets merged = true. width x height: the frame (the grid of
+ * segment ends); ws: ws_size bytes of scratch for that grid (any alignment,
+ * may be NULL), and the free end of r's point storage for the points' new
+ * layout. Less of either only costs time: every pair is tried then, with
+ * the same result.
  */
-void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8);
+void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8,
+                     uint32_t width, uint32_t height, void *ws, size_t ws_size);
 
 #endif /* SYMLINE_LIB_MERGE_H */

@@ -54,10 +54,10 @@ static void merge_collinear(void **state)
     r.point_cap = 64;
     r.point_count = 23;
     r.truncated = false;
-    symline_i_merge(&r, 8, 640, 512); /* gap 11 px > 8: no merge */
+    symline_i_merge(&r, 8, 640, 512, 64, 64, NULL, 0); /* gap 11 px > 8: no merge */
     assert_int_equal(r.segment_count, 3);
     assert_false(segs[0].merged);
-    symline_i_merge(&r, 12, 640, 512);
+    symline_i_merge(&r, 12, 640, 512, 64, 64, NULL, 0);
     assert_int_equal(r.segment_count, 2);
     assert_int_equal(segs[0].x0, 0);
     assert_int_equal(segs[0].x1, 29 * 256);
@@ -104,10 +104,9 @@ static void merge_keeps_bent_joins_apart(void **state)
     r.point_cap = 64;
     r.point_count = 20;
     r.truncated = false;
-    symline_i_merge(&r, 12, 640, 512); /* 3 px off > 2.5 px */
+    symline_i_merge(&r, 12, 640, 512, 64, 64, NULL, 0); /* 3 px off > 2.5 px */
     assert_int_equal(r.segment_count, 2);
-    symline_i_merge(&r, 12, 1024,
-                    5120); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
+    symline_i_merge(&r, 12, 1024, 5120, 64, 64, NULL, 0); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
     assert_int_equal(r.segment_count, 1);
     assert_true(segs[0].merged);
 }
