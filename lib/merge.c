@@ -13,8 +13,9 @@
 #include "segments.h"
 #include "tracer.h"
 
-/* What joined_dev() returns for a pair whose joined piece would be a curve. */
-#define SL_JOINED_IS_CURVE UINT32_MAX
+/* What joined_dev() returns for a pair whose joined piece would be a curve
+ * (and pair_dev() for a pair that may not join). */
+#define SL_NO_JOIN UINT32_MAX
 
 static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
@@ -90,22 +91,23 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     return true;
 }
 
-/* The joined piece's max_dev, or SL_JOINED_IS_CURVE when it would be a curve
+/* The joined piece's max_dev, or SL_NO_JOIN when it would be a curve
  * (ap, bp: the pieces' points). Kept apart from mergeable() so their frames
  * are never on the stack together. */
 SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_point *ap,
                                        const symline_segment *b, const symline_point *bp,
                                        const int32_t ends[4], uint32_t curve_q8)
 {
-    uint32_t d = symline_i_max_dev(ap, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    uint32_t sm = symline_i_smooth_dev(ap, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    const uint32_t d2 = symline_i_max_dev(bp, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    const uint32_t sm2 =
-        symline_i_smooth_dev(bp, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    d = d2 > d ? d2 : d;
-    sm = sm2 > sm ? sm2 : sm;
-    return symline_i_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_JOINED_IS_CURVE
-                                                                                : d;
+    uint32_t d = 0u, sm = 0u, k;
+    for (k = 0; k < 2u; k++) {
+        const symline_point *p = k ? bp : ap;
+        const uint32_t n = k ? b->count : a->count;
+        const uint32_t dk = symline_i_max_dev(p, n, 0u, ends[0], ends[1], ends[2], ends[3]);
+        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, ends[0], ends[1], ends[2], ends[3]);
+        d = dk > d ? dk : d;
+        sm = sk > sm ? sk : sm;
+    }
+    return symline_i_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_NO_JOIN : d;
 }
 
 /* A line may join; so may a piece taken for a curve whose points (p),
@@ -186,26 +188,27 @@ typedef struct merger {
     uint32_t *head, *next, *cand, cand_cap, indexed;
     symline_point *out; /* NULL: rotations */
     uint32_t pos;       /* where the piece in hand starts in out */
+    symline_point *ap;  /* the piece in hand's points (in out, or in place) */
 } merger;
 
-/* Piece s's points, the piece in hand's in out. */
-static const symline_point *points_of(const merger *m, uint32_t s, uint32_t in_hand)
-{
-    return m->out != NULL && s == in_hand ? m->out + m->pos
-                                          : m->r->points + m->r->segments[s].first;
-}
-
-/* Moves segment j's points right behind segment i's (i < j, ranges ordered). */
-static void absorb(merger *m, uint32_t i, uint32_t j)
+/* Piece j joins piece i (i < j): the joined ends and max_dev, j's points
+ * right behind i's, slot j gone. */
+static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uint32_t dev)
 {
     symline_result *r = m->r;
     symline_segment *a = &r->segments[i];
     const uint32_t b_first = r->segments[j].first, b_count = r->segments[j].count;
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
+    const uint8_t lb = r->segments[j].level;
     uint32_t k;
+    set_ends(a, ends[0], ends[1], ends[2], ends[3]);
+    a->max_dev = dev;
+    a->kind = SYMLINE_KIND_LINE;
+    a->level = a->level > lb ? a->level : lb;
+    a->merged = true; /* points piece after piece (curvejoin.c) */
     if (m->out != NULL) {
-        copy_points(m->out + m->pos + a->count, r->points + b_first, b_count);
+        copy_points(m->ap + a->count, r->points + b_first, b_count);
     } else {
         symline_i_reverse_points(r->points + mid0, midn);
         symline_i_reverse_points(r->points + b_first, b_count);
@@ -218,87 +221,30 @@ static void absorb(merger *m, uint32_t i, uint32_t j)
     r->segments[j].kind = SL_GONE;
 }
 
-/* Joins piece j into piece i when the pair passes the merge's tests. */
-static bool try_join(merger *m, uint32_t i, uint32_t j)
+/* The joined piece's max_dev when piece j may join piece i (ends: the
+ * joined ends), else SL_NO_JOIN. */
+static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, int32_t ends[4])
 {
-    int32_t ends[4];
-    uint32_t dev;
-    symline_segment *a = &m->r->segments[i];
+    const symline_segment *a = &m->r->segments[i];
     const symline_segment *b = &m->r->segments[j];
     const uint32_t level = a->level > b->level ? a->level : b->level;
-    const uint32_t thr = m->curve_q8 + symline_i_block_half_q8(level);
-    const symline_point *bp;
-    if (b->kind == SL_GONE) {
-        return false;
-    }
-    bp = points_of(m, j, i);
+    const symline_point *bp = m->r->points + b->first;
     /* The cheap geometric test first; both are pure, so the order changes
      * nothing but the cost. */
-    if (!mergeable(a, b, m->gap2, m->dev_q8 + symline_i_block_half_q8(level), ends) ||
+    if (b->kind == SL_GONE ||
+        !mergeable(a, b, m->gap2, m->dev_q8 + symline_i_block_half_q8(level), ends) ||
         !joinable(b, bp, m->curve_q8)) {
-        return false;
+        return SL_NO_JOIN;
     }
-    dev = joined_dev(a, points_of(m, i, i), b, bp, ends, thr);
-    if (dev == SL_JOINED_IS_CURVE) {
-        return false;
-    }
-    set_ends(a, ends[0], ends[1], ends[2], ends[3]);
-    a->max_dev = dev;
-    a->kind = SYMLINE_KIND_LINE;
-    a->level = (uint8_t)level;
-    a->merged = true; /* points piece after piece (curvejoin.c) */
-    absorb(m, i, j);
-    return true;
-}
-
-/* Sorts v[0..n-1] ascending (heap sort: no recursion, no extra memory). */
-static void sort_u32(uint32_t *v, uint32_t n)
-{
-    uint32_t start = n / 2u, end = n;
-    while (end > 1u) {
-        uint32_t root, t;
-        if (start > 0u) {
-            start--;
-        } else {
-            end--;
-            t = v[0];
-            v[0] = v[end];
-            v[end] = t;
-        }
-        root = start;
-        for (;;) {
-            uint32_t child = 2u * root + 1u;
-            if (child >= end) {
-                break;
-            }
-            if (child + 1u < end && v[child + 1u] > v[child]) {
-                child++;
-            }
-            if (v[root] >= v[child]) {
-                break;
-            }
-            t = v[root];
-            v[root] = v[child];
-            v[child] = t;
-            root = child;
-        }
-    }
-}
-
-/* Ends farther from the origin than this (Q8) keep a piece out of the
- * grid's stretched chords (32-bit arithmetic); frame coordinates are below 2^24. */
-#define SL_MERGE_COORD_LIM ((int32_t)1 << 26)
-
-static bool coord_ok(int32_t v)
-{
-    return v > -SL_MERGE_COORD_LIM && v < SL_MERGE_COORD_LIM;
+    return joined_dev(a, m->ap, b, bp, ends,
+                      m->curve_q8 + symline_i_block_half_q8(level));
 }
 
 /*
  * The slots with an end in the cells within m->margin of a's chord
- * stretched by the gap past both ends, ascending, each once, in m->cand.
- * Returns their number, or -1 when more than m->cand_cap were found (or a's
- * ends are beyond the walk's range): then every later piece is tried.
+ * stretched by the gap past both ends, in m->cand (in cell order, a slot
+ * may come twice). Returns their number, or -1 when more than m->cand_cap
+ * were found: then every later piece is tried.
  */
 SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
 {
@@ -309,10 +255,6 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
      * |dx|, |dy| is no longer than the chord). */
     const int32_t k = cheb > 0u ? (int32_t)(m->gap_q8 / cheb + 1u) : 0;
     symline_i_cellwalk q;
-    uint32_t i, w;
-    if (!coord_ok(a->x0) || !coord_ok(a->y0) || !coord_ok(a->x1) || !coord_ok(a->y1)) {
-        return -1;
-    }
     q.cols = m->cols;
     q.rows = m->rows;
     q.mode = SL_WALK_GATHER;
@@ -325,37 +267,34 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
     q.n = 0u;
     symline_i_cellwalk_chord(&q, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k,
                              m->margin);
-    if (q.n > q.cand_cap) {
-        return -1;
-    }
-    sort_u32(m->cand, q.n);
-    for (i = 0, w = 0; i < q.n; i++) {
-        if (w == 0u || m->cand[w - 1u] != m->cand[i]) {
-            m->cand[w++] = m->cand[i];
-        }
-    }
-    return (int32_t)w;
+    return q.n > q.cand_cap ? -1 : (int32_t)q.n;
 }
 
 /* Piece i takes the first later piece (in slot order) that joins it: true,
  * or false when none does. */
 static bool join_first(merger *m, uint32_t i)
 {
-    uint32_t j = i + 1u;
+    int32_t ends[4];
+    uint32_t j = i + 1u, best = SL_NO_NODE, k, dev;
     if (m->cols != 0u) {
         const int32_t nc = candidates(m, &m->r->segments[i]);
         if (nc >= 0) {
-            int32_t k;
-            for (k = 0; k < nc; k++) {
-                if (m->cand[k] > i && try_join(m, i, m->cand[k])) {
-                    return true;
+            /* The first in slot order that joins is the smallest candidate
+             * that does (the tests are pure); failing that, the pieces not
+             * in the grid. */
+            for (k = 0; k < (uint32_t)nc; k++) {
+                const uint32_t c = m->cand[k];
+                if (c > i && c < best && pair_dev(m, i, c, ends) != SL_NO_JOIN) {
+                    best = c;
                 }
             }
-            j = m->indexed > j ? m->indexed : j; /* the pieces not in the grid */
+            j = best != SL_NO_NODE ? best : (m->indexed > j ? m->indexed : j);
         }
     }
     for (; j < m->n; j++) {
-        if (try_join(m, i, j)) {
+        dev = pair_dev(m, i, j, ends);
+        if (dev != SL_NO_JOIN) {
+            absorb(m, i, j, ends, dev);
             return true;
         }
     }
@@ -383,60 +322,51 @@ static void grid_build(merger *m)
 /* The grid in ws (cells, then two nodes per slot for as many slots as leave
  * a quarter for the candidates); none when ws is too small or the
  * thresholds too large for its 32-bit walk (then every pair is tried). */
-static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_t height,
-                      uint32_t max_level)
+static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_t height)
 {
-    uint8_t *cur = (uint8_t *)ws, *lim;
+    uint8_t *cur = (uint8_t *)ws;
     size_t e;
-    m->cols = 0u;
-    m->indexed = 0u;
-    if (ws == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
-        height > SYMLINE_MAX_DIM || m->gap_q8 > SL_PX_Q8(SYMLINE_MAX_DIM) ||
-        m->dev_q8 > SL_PX_Q8(SYMLINE_MAX_DIM) || max_level > 12u) {
-        return;
-    }
-    lim = cur + bytes;
+    m->cols = ((width - 1u) >> SL_CELL_SHIFT) + 1u;
     m->rows = ((height - 1u) >> SL_CELL_SHIFT) + 1u;
-    m->head = (uint32_t *)symline_i_carve(
-        &cur, lim, (size_t)(((width - 1u) >> SL_CELL_SHIFT) + 1u) * m->rows * sizeof(uint32_t));
-    m->next = (uint32_t *)symline_i_carve(&cur, lim, sizeof(uint32_t));
-    if (m->head == NULL || m->next == NULL) {
+    m->head = ws == NULL ? NULL
+                         : (uint32_t *)symline_i_carve(&cur, cur + bytes,
+                                                       (size_t)m->cols * m->rows * sizeof(uint32_t));
+    if (m->head == NULL) {
+        m->cols = 0u;
         return;
     }
-    e = (size_t)(lim - (uint8_t *)m->next) / sizeof(uint32_t);
-    if (e < 64u) {
-        return;
-    }
+    e = (size_t)((uint8_t *)ws + bytes - cur) / sizeof(uint32_t);
     m->indexed = (size_t)m->n < e * 3u / 8u ? m->n : (uint32_t)(e * 3u / 8u);
+    m->next = (uint32_t *)(void *)cur;
     m->cand = m->next + 2u * (size_t)m->indexed;
     e -= 2u * (size_t)m->indexed;
     m->cand_cap = e > 0xFFFFFFu ? 0xFFFFFFu : (uint32_t)e;
-    m->cols = ((width - 1u) >> SL_CELL_SHIFT) + 1u;
+    if (e < 16u) {
+        m->cols = 0u;
+    }
     /* A joining piece's end lies within the deviation of i's line (plus the
      * coarsest scale's half block, plus rounding). */
-    m->margin = (int32_t)(m->dev_q8 + symline_i_block_half_q8(max_level) + SL_PX_Q8(1u));
+    m->margin = (int32_t)(m->dev_q8 + symline_i_block_half_q8(SYMLINE_DETECT_MAX_LEVELS - 1u) +
+                          SL_PX_Q8(1u));
 }
 
 void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8,
                      uint32_t width, uint32_t height, void *ws, size_t ws_size)
 {
     merger m;
-    uint32_t i, w, max_level = 0u, sum = 0u;
-    bool changed = true, in_order = true;
+    uint32_t i, w;
+    bool changed = true;
     m.r = r;
     m.n = r->segment_count;
     m.gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
-    m.gap_q8 = gap_px > SYMLINE_MAX_DIM ? UINT32_MAX : gap_px << SL_Q8_SHIFT;
+    m.gap_q8 = gap_px << SL_Q8_SHIFT;
     m.dev_q8 = dev_q8;
     m.curve_q8 = curve_dev_q8;
-    for (i = 0; i < m.n; i++) {
-        const symline_segment *s = &r->segments[i];
-        max_level = s->level > max_level ? s->level : max_level;
-        in_order = in_order && s->first == sum && s->count <= r->point_count - sum;
-        sum = in_order ? sum + s->count : sum;
-    }
-    m.out = in_order && sum != 0u && r->point_cap - r->point_count >= sum ? r->points + r->point_count : NULL;
-    grid_init(&m, ws, ws_size, width, height, max_level);
+    /* Room for the layout: as many points again as there are. */
+    m.out = r->point_count != 0u && r->point_cap - r->point_count >= r->point_count
+                ? r->points + r->point_count
+                : NULL;
+    grid_init(&m, ws, ws_size, width, height);
     /* In slot order, each piece takes the first later piece that joins it,
      * again and again (the grown piece may reach pieces it missed), until a
      * whole round joins nothing. */
@@ -451,13 +381,15 @@ void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32
             if (a->kind == SL_GONE) {
                 continue;
             }
+            m.ap = r->points + a->first;
             if (m.out != NULL) {
-                copy_points(m.out + m.pos, r->points + a->first, a->count);
+                m.ap = m.out + m.pos;
+                copy_points(m.ap, r->points + a->first, a->count);
                 a->first = m.pos;
             }
             /* Whether piece i may join at all does not change while it is
              * tried against the others (a join makes it a line). */
-            if (joinable(a, points_of(&m, i, i), curve_dev_q8)) {
+            if (joinable(a, m.ap, curve_dev_q8)) {
                 while (join_first(&m, i)) {
                     changed = true;
                 }
@@ -470,10 +402,7 @@ void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32
     }
     for (i = 0, w = 0; i < m.n; i++) {
         if (r->segments[i].kind != SL_GONE) {
-            if (w != i) {
-                copy_segment(&r->segments[w], &r->segments[i]);
-            }
-            w++;
+            copy_segment(&r->segments[w++], &r->segments[i]);
         }
     }
     r->segment_count = w;

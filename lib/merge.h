@@ -17,7 +17,12 @@
  * segment ends); ws: ws_size bytes of scratch for that grid (any alignment,
  * may be NULL), and the free end of r's point storage for the points' new
  * layout. Less of either only costs time: every pair is tried then, with
- * the same result.
+ * the same result. As symline_detect() calls it: width, height 1 ..
+ * SYMLINE_MAX_DIM, gap_px <= SYMLINE_MAX_DIM, dev_q8 <= SYMLINE_MAX_DIM px,
+ * segment levels below SYMLINE_DETECT_MAX_LEVELS, segment ends within 2^25
+ * Q8 of the frame (the grid's walk is 32-bit), and the points [0,
+ * point_count) laid out piece after piece in slot order (as the passes
+ * leave them).
  */
 void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8,
                      uint32_t width, uint32_t height, void *ws, size_t ws_size);
