@@ -201,7 +201,6 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uin
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
     const uint8_t lb = r->segments[j].level;
-    uint32_t k;
     set_ends(a, ends[0], ends[1], ends[2], ends[3]);
     a->max_dev = dev;
     a->kind = SYMLINE_KIND_LINE;
@@ -210,6 +209,7 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uin
     if (m->out != NULL) {
         copy_points(m->ap + a->count, r->points + b_first, b_count);
     } else {
+        uint32_t k;
         symline_i_reverse_points(r->points + mid0, midn);
         symline_i_reverse_points(r->points + b_first, b_count);
         symline_i_reverse_points(r->points + mid0, midn + b_count);
@@ -236,8 +236,7 @@ static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, int32_t ends[4
         !joinable(b, bp, m->curve_q8)) {
         return SL_NO_JOIN;
     }
-    return joined_dev(a, m->ap, b, bp, ends,
-                      m->curve_q8 + symline_i_block_half_q8(level));
+    return joined_dev(a, m->ap, b, bp, ends, m->curve_q8 + symline_i_block_half_q8(level));
 }
 
 /*
@@ -275,10 +274,11 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
 static bool join_first(merger *m, uint32_t i)
 {
     int32_t ends[4];
-    uint32_t j = i + 1u, best = SL_NO_NODE, k, dev;
+    uint32_t j = i + 1u;
     if (m->cols != 0u) {
         const int32_t nc = candidates(m, &m->r->segments[i]);
         if (nc >= 0) {
+            uint32_t best = SL_NO_NODE, k;
             /* The first in slot order that joins is the smallest candidate
              * that does (the tests are pure); failing that, the pieces not
              * in the grid. */
@@ -292,7 +292,7 @@ static bool join_first(merger *m, uint32_t i)
         }
     }
     for (; j < m->n; j++) {
-        dev = pair_dev(m, i, j, ends);
+        const uint32_t dev = pair_dev(m, i, j, ends);
         if (dev != SL_NO_JOIN) {
             absorb(m, i, j, ends, dev);
             return true;
@@ -329,8 +329,8 @@ static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_
     m->cols = ((width - 1u) >> SL_CELL_SHIFT) + 1u;
     m->rows = ((height - 1u) >> SL_CELL_SHIFT) + 1u;
     m->head = ws == NULL ? NULL
-                         : (uint32_t *)symline_i_carve(&cur, cur + bytes,
-                                                       (size_t)m->cols * m->rows * sizeof(uint32_t));
+                         : (uint32_t *)symline_i_carve(
+                               &cur, cur + bytes, (size_t)m->cols * m->rows * sizeof(uint32_t));
     if (m->head == NULL) {
         m->cols = 0u;
         return;

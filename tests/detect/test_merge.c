@@ -107,7 +107,8 @@ static void merge_keeps_bent_joins_apart(void **state)
     r.truncated = false;
     symline_i_merge(&r, 12, 640, 512, 64, 64, NULL, 0); /* 3 px off > 2.5 px */
     assert_int_equal(r.segment_count, 2);
-    symline_i_merge(&r, 12, 1024, 5120, 64, 64, NULL, 0); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
+    symline_i_merge(&r, 12, 1024, 5120, 64, 64, NULL,
+                    0); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
     assert_int_equal(r.segment_count, 1);
     assert_true(segs[0].merged);
 }
@@ -201,7 +202,8 @@ static void merge_grid_equals_all_pairs(void **state)
     static symline_segment ref_segs[RAND_SEGS], segs[RAND_SEGS];
     static symline_point ref_pts[2u * RAND_PTS], pts[2u * RAND_PTS];
     static uint32_t ws[4096];
-    const size_t ws_sizes[] = {sizeof ws, 64u * 4u + 4u * 96u, 64u * 4u + 4u * 70u, 64u * 4u + 300u};
+    const size_t ws_sizes[] = {sizeof ws, 64u * 4u + 4u * 96u, 64u * 4u + 4u * 70u,
+                               64u * 4u + 300u};
     uint32_t seed, v, joins = 0u;
     (void)state;
     for (seed = 1u; seed <= 40u; seed++) {
