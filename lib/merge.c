@@ -340,10 +340,7 @@ static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_
     m->next = (uint32_t *)(void *)cur;
     m->cand = m->next + 2u * (size_t)m->indexed;
     e -= 2u * (size_t)m->indexed;
-    m->cand_cap = e > 0xFFFFFFu ? 0xFFFFFFu : (uint32_t)e;
-    if (e < 16u) {
-        m->cols = 0u;
-    }
+    m->cand_cap = e > 0xFFFFFFu ? 0xFFFFFFu : (uint32_t)e; /* too few: every later piece */
     /* A joining piece's end lies within the deviation of i's line (plus the
      * coarsest scale's half block, plus rounding). */
     m->margin = (int32_t)(m->dev_q8 + symline_i_block_half_q8(SYMLINE_DETECT_MAX_LEVELS - 1u) +
