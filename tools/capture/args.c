@@ -6,6 +6,7 @@
 
 #include "detopts.h"
 #include "symline/version.h"
+#include "stageprof.h"
 #include "v4l2_list.h"
 
 #include <stdio.h>
@@ -71,6 +72,9 @@ static void usage(FILE *f)
           "  --record K DIR         write the luma of every K-th frame as PGM (replayable)\n"
           "  --snapshot-every K DIR write every K-th frame with its detections drawn over it\n"
           "                         (lines solid, curves dotted) as DIR/snapNNNNNN.png\n"
+          "  --profile              split each frame's detect time by the detector's stages\n"
+          "                         (\"detect_stages_ms\" in the records, means in the final\n"
+          "                         summary)\n"
           "\n"
           "Options take --opt VALUE or --opt=VALUE. --version prints the version.\n"
           "Exit status: 0 stopped normally (frame count, end of replay, SIGINT/SIGTERM,\n"
@@ -117,7 +121,8 @@ enum {
     OPT_LOOP,
     OPT_SUMMARY,
     OPT_RECORD,
-    OPT_SNAPSHOT
+    OPT_SNAPSHOT,
+    OPT_PROFILE
 };
 
 static const struct option own_options[] = {
@@ -143,6 +148,7 @@ static const struct option own_options[] = {
     {"summary-every", required_argument, NULL, OPT_SUMMARY},
     {"record", required_argument, NULL, OPT_RECORD},
     {"snapshot-every", required_argument, NULL, OPT_SNAPSHOT},
+    {"profile", no_argument, NULL, OPT_PROFILE},
 };
 #define OWN_OPTIONS (sizeof own_options / sizeof own_options[0])
 
@@ -206,6 +212,12 @@ static int apply_own(app_options *o, int c, const char *arg, int argc, char **ar
         o->timeout_ms = (int)v;
         return 0;
     case OPT_LOOP: o->loop = 1; return 0;
+    case OPT_PROFILE:
+        if (!stageprof_available()) {
+            return usage_error("--profile: this build's detector has no stage marks%s", "");
+        }
+        o->profile = 1;
+        return 0;
     case OPT_SUMMARY:
         return detopts_u32(arg, 0, 86400, &o->summary_s) == 0
                    ? 0
