@@ -96,7 +96,8 @@ static void put_stages(FILE *out, const int64_t ns[SYMLINE_STAGE_COUNT], double 
     int k;
     fputs(json ? "{" : "", out);
     for (k = SYMLINE_STAGE_NONE + 1; k < SYMLINE_STAGE_COUNT; k++) {
-        fprintf(out, json ? "%s\"%s\": %.3f" : "%s%s=%.3f", k > SYMLINE_STAGE_NONE + 1 ? (json ? ", " : " ") : "",
+        fprintf(out, json ? "%s\"%s\": %.3f" : "%s%s=%.3f",
+                k > SYMLINE_STAGE_NONE + 1 ? (json ? ", " : " ") : "",
                 stageprof_name((symline_stage)k), (double)ns[k] * scale / 1e6);
     }
     fputs(json ? "}" : "", out);

@@ -8,9 +8,9 @@
 #include <string.h>
 #include <time.h>
 
-static int g_on;                             /* marks are ignored unless timing */
-static symline_stage g_cur;                  /* stage running since the last mark */
-static int64_t g_t0;                         /* clock at the last mark */
+static int g_on;            /* marks are ignored unless timing */
+static symline_stage g_cur; /* stage running since the last mark */
+static int64_t g_t0;        /* clock at the last mark */
 static int64_t g_ns[SYMLINE_STAGE_COUNT];
 
 static int64_t now_ns(void)

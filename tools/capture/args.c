@@ -5,7 +5,7 @@
 #include "args.h"
 
 #include "detopts.h"
-#include "symline/version.h"
+#include "hostopts.h"
 #include "stageprof.h"
 #include "v4l2_list.h"
 
@@ -17,10 +17,9 @@
 
 static int usage_error(const char *fmt, const char *arg)
 {
-    fputs("symline-capture: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputs(" (try --help)\n", stderr);
-    return APP_EXIT_USAGE;
+    char msg[256];
+    snprintf(msg, sizeof msg, fmt, arg);
+    return hostopts_usage_error("symline-capture", "symline-capture", "%s", msg);
 }
 
 static void usage(FILE *f)
@@ -257,20 +256,17 @@ int app_parse_args(int argc, char **argv, app_options *o)
     memcpy(longopts, own_options, sizeof own_options);
     n = OWN_OPTIONS + detopts_longopts(longopts + OWN_OPTIONS, 63);
     memset(&longopts[n], 0, sizeof longopts[n]);
-    opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, ":h", longopts, NULL)) != -1) {
-        if (c == 'h') {
+    while ((c = hostopts_next(argc, argv, ":h", longopts, "symline-capture", "symline-capture")) !=
+           -1) {
+        if (c == HOSTOPTS_HELP) {
             usage(stdout);
             return 1;
-        } else if (c == 'V') {
-            printf("symline-capture %s\n", SYMLINE_VERSION_STRING);
+        } else if (c == HOSTOPTS_VERSION) {
+            hostopts_version("symline-capture");
             return 1;
-        } else if (c == '?') {
-            char shortopt[3] = {'-', (char)optopt, '\0'};
-            return usage_error("unknown option '%s'", optopt ? shortopt : argv[optind - 1]);
-        } else if (c == ':') {
-            return usage_error("%s needs a value", argv[optind - 1]);
+        } else if (c == HOSTOPTS_ERROR) {
+            return APP_EXIT_USAGE;
         } else if ((rc = detopts_apply(&det, c, optarg, msg, sizeof msg)) != 0) {
             if (rc < 0) {
                 return usage_error("%s", msg);
