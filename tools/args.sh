@@ -19,6 +19,7 @@
 #   args_dirs           DATA (when set) must be a folder; DATA, BUILD and OUT
 #                       (when set) become absolute paths
 # Run rather than sourced, --help prints this.
+# shellcheck disable=SC2034 # the variables set here are the sourcing script's
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
 
 args_usage() {
