@@ -58,7 +58,7 @@ cd "$REPO" || exit 2
 # ---- builds (quiet; the output of a failed one is shown) ----
 quiet() { "$@" >"$TMP/log" 2>&1 || { tail -n 30 "$TMP/log" >&2; echo "figures.sh: failed: $*" >&2; exit 2; }; }
 [ -f "$BUILD/CMakeCache.txt" ] || quiet cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
-quiet cmake --build "$BUILD" -j2 --target detect_api
+quiet cmake --build "$BUILD" -j2 --target symline
 # cross NAME BUILD_TYPE TARGET CMAKE_ARGS...: the configurations of tools/firmware/check.sh.
 cross() {
     d=$FW-$1 bt=$2 t=$3
@@ -106,10 +106,36 @@ points() { # default|1axis1lvl FIELD: needed, bytes or kept
     sed -n "s/^point storage 320x240 m=3 $1: \([0-9]*\) points (\([0-9]*\) bytes) needed, \([0-9]*\) kept.*/\1 \2 \3/p" \
         "$TMP/bench" | awk -v f="$2" '{ print (f == "needed" ? $1 : (f == "bytes" ? $2 : $3)) }'
 }
-"$BUILD/tests/detect_api" >"$TMP/api" 2>&1 || true
-ws_host() { # WxH M default|one
-    sed -n "s/^  $1 m=$2: \([0-9]*\) (levels=1: \([0-9]*\)).*/\1 \2/p" "$TMP/api" |
-        awk -v w="$3" '{ print (w == "one" ? $2 : $1) }'
+# The host's workspace query (64-bit size_t), from a few lines of C against the host build.
+cat >"$TMP/ws.c" <<'EOF_C'
+#include <stdio.h>
+#include "symline/detect.h"
+int main(void)
+{
+    static const unsigned dims[3][2] = {{160u, 120u}, {320u, 240u}, {640u, 480u}}, radii[2] = {3u, 10u};
+    unsigned d, r;
+    for (r = 0; r < 2u; r++) {
+        for (d = 0; d < 3u; d++) {
+            symline_config def, one, paper;
+            symline_config_default(&def);
+            def.radius = radii[r];
+            one = paper = def;
+            one.axes = SYMLINE_AXES_HORIZONTAL;
+            one.levels = 1u;
+            paper.filter = SYMLINE_FILTER_PAPER;
+            printf("%ux%u m=%u %lu %lu %lu\n", dims[d][0], dims[d][1], radii[r],
+                   (unsigned long)symline_detect_workspace_size(dims[d][0], dims[d][1], &one),
+                   (unsigned long)symline_detect_workspace_size(dims[d][0], dims[d][1], &def),
+                   (unsigned long)symline_detect_workspace_size(dims[d][0], dims[d][1], &paper));
+        }
+    }
+    return 0;
+}
+EOF_C
+quiet cc -std=c99 -I"$REPO/include" -o "$TMP/ws" "$TMP/ws.c" "$BUILD/lib/libsymline.a"
+"$TMP/ws" >"$TMP/ws.txt"
+ws_host() { # WxH M one|default|paper
+    awk -v s="$1" -v m="m=$2" -v w="$3" '$1 == s && $2 == m { print (w == "one" ? $3 : (w == "default" ? $4 : $5)) }' "$TMP/ws.txt"
 }
 
 # ---- quotes ----
@@ -206,8 +232,11 @@ done
 for s in 160x120 320x240 640x480; do
     figure "workspace $s m=3, one axis, one scale, 64-bit host" "$(ws_host $s 3 one)" B
     quote docs/detector.md "^| $s | \\([0-9]*\\) | [0-9]* | [0-9]* | [0-9]* | [0-9]* |"
+    [ "$s" != 320x240 ] || quote docs/detector.md '(320x240, m = 3, one axis: \([0-9.]*\) KiB' KiB
     figure "workspace $s m=3, default, 64-bit host" "$(ws_host $s 3 default)" B
     quote docs/detector.md "^| $s | [0-9]* | \\([0-9]*\\) | [0-9]* | [0-9]* | [0-9]* |"
+    figure "workspace $s m=3, paper filter, 64-bit host" "$(ws_host $s 3 paper)" B
+    quote docs/detector.md "^| $s | [0-9]* | [0-9]* | \\([0-9]*\\) | [0-9]* | [0-9]* |"
     figure "workspace $s m=10, one axis, one scale, 64-bit host" "$(ws_host $s 10 one)" B
     quote docs/detector.md "^| $s | [0-9]* | [0-9]* | [0-9]* | \\([0-9]*\\) | [0-9]* |"
     figure "workspace $s m=10, default, 64-bit host" "$(ws_host $s 10 default)" B
