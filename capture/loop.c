@@ -90,7 +90,7 @@ typedef struct line_writer {
     FILE *mem;
 } line_writer;
 
-/* The detector's stages that ran, in their order (SYMLINE_STAGE_NONE is time outside them). */
+/* Every stage of the detector, in the order they first run (SYMLINE_STAGE_NONE left out). */
 static void put_stages(FILE *out, const int64_t ns[SYMLINE_STAGE_COUNT], double scale, int json)
 {
     int k;
