@@ -11,6 +11,10 @@
 
 #include <getopt.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define HOSTOPTS_USAGE 2     /* exit status of a usage error */
 #define HOSTOPTS_ERROR (-2)  /* hostopts_next(): a usage error was reported */
 #define HOSTOPTS_HELP 'h'    /* the codes hostopts_next() returns for --help / -h */
@@ -50,5 +54,9 @@ int hostopts_double(const char *s, double lo, double hi, double *out);
 
 /* A decimal integer in [lo, hi] (an optional '-' sign, digits only); 0 on success. */
 int hostopts_long(const char *s, long lo, long hi, long *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
