@@ -347,23 +347,26 @@ static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_
                           SL_PX_Q8(1u));
 }
 
-void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8,
-                     uint32_t width, uint32_t height, void *ws, size_t ws_size)
+void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
 {
+    symline_result *r = d->r;
+    const symline_config *cfg = d->cfg;
+    const uint32_t gap_px =
+        cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? d->img->width / 8u : cfg->merge_gap;
     merger m;
     uint32_t i, w;
     bool changed = true;
     m.r = r;
     m.n = r->segment_count;
-    m.gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
-    m.gap_q8 = gap_px << SL_Q8_SHIFT;
-    m.dev_q8 = dev_q8;
-    m.curve_q8 = curve_dev_q8;
+    m.gap_q8 = gap_px << SL_Q8_SHIFT; /* gap_px <= SYMLINE_MAX_DIM: no wrap */
+    m.gap2 = (uint64_t)m.gap_q8 * m.gap_q8;
+    m.dev_q8 = cfg->merge_dev_q8;
+    m.curve_q8 = cfg->curve_dev_q8;
     /* Room for the layout: as many points again as there are. */
     m.out = r->point_count != 0u && r->point_cap - r->point_count >= r->point_count
                 ? r->points + r->point_count
                 : NULL;
-    grid_init(&m, ws, ws_size, width, height);
+    grid_init(&m, ws, ws_size, d->img->width, d->img->height);
     /* In slot order, each piece takes the first later piece that joins it,
      * again and again (the grown piece may reach pieces it missed), until a
      * whole round joins nothing. */
@@ -386,7 +389,7 @@ void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32
             }
             /* Whether piece i may join at all does not change while it is
              * tried against the others (a join makes it a line). */
-            if (joinable(a, m.ap, curve_dev_q8)) {
+            if (joinable(a, m.ap, m.curve_q8)) {
                 while (join_first(&m, i)) {
                     changed = true;
                 }

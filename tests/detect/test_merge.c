@@ -14,6 +14,27 @@
 
 #include "merge.h"
 
+/* The merge of r with these thresholds, for a w x h frame. */
+static void merge(symline_result *r, uint32_t gap, uint32_t dev, uint32_t curve, uint32_t w,
+                  uint32_t h, void *ws, size_t ws_size)
+{
+    symline_config cfg;
+    symline_image img;
+    symline_i_run d;
+    symline_config_default(&cfg);
+    cfg.merge_gap = gap;
+    cfg.merge_dev_q8 = dev;
+    cfg.curve_dev_q8 = curve;
+    memset(&img, 0, sizeof img);
+    img.width = w;
+    img.height = h;
+    memset(&d, 0, sizeof d);
+    d.cfg = &cfg;
+    d.img = &img;
+    d.r = r;
+    symline_i_merge(&d, ws, ws_size);
+}
+
 static void merge_collinear(void **state)
 {
     symline_point pts[64];
@@ -55,10 +76,10 @@ static void merge_collinear(void **state)
     r.point_cap = 64;
     r.point_count = 23;
     r.truncated = false;
-    symline_i_merge(&r, 8, 640, 512, 64, 64, NULL, 0); /* gap 11 px > 8: no merge */
+    merge(&r, 8, 640, 512, 64, 64, NULL, 0); /* gap 11 px > 8: no merge */
     assert_int_equal(r.segment_count, 3);
     assert_false(segs[0].merged);
-    symline_i_merge(&r, 12, 640, 512, 64, 64, NULL, 0);
+    merge(&r, 12, 640, 512, 64, 64, NULL, 0);
     assert_int_equal(r.segment_count, 2);
     assert_int_equal(segs[0].x0, 0);
     assert_int_equal(segs[0].x1, 29 * 256);
@@ -105,10 +126,10 @@ static void merge_keeps_bent_joins_apart(void **state)
     r.point_cap = 64;
     r.point_count = 20;
     r.truncated = false;
-    symline_i_merge(&r, 12, 640, 512, 64, 64, NULL, 0); /* 3 px off > 2.5 px */
+    merge(&r, 12, 640, 512, 64, 64, NULL, 0); /* 3 px off > 2.5 px */
     assert_int_equal(r.segment_count, 2);
-    symline_i_merge(&r, 12, 1024, 5120, 64, 64, NULL,
-                    0); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
+    merge(&r, 12, 1024, 5120, 64, 64, NULL,
+          0); /* 4 px allowed; the joined piece (1.2 px off its chord) is no curve */
     assert_int_equal(r.segment_count, 1);
     assert_true(segs[0].merged);
 }
@@ -211,10 +232,10 @@ static void merge_grid_equals_all_pairs(void **state)
             symline_result ref, r;
             const uint32_t gap = 4u + seed % 24u;
             random_pieces(seed, &ref, ref_segs, ref_pts);
-            symline_i_merge(&ref, gap, 640, 512, 256, 256, NULL, 0);
+            merge(&ref, gap, 640, 512, 256, 256, NULL, 0);
             random_pieces(seed, &r, segs, pts);
             r.point_cap = v & 1u ? 2u * RAND_PTS : r.point_count; /* room for the layout */
-            symline_i_merge(&r, gap, 640, 512, 256, 256, ws, ws_sizes[v / 2u]);
+            merge(&r, gap, 640, 512, 256, 256, ws, ws_sizes[v / 2u]);
             assert_int_equal(r.segment_count, ref.segment_count);
             assert_memory_equal(segs, ref_segs, r.segment_count * sizeof segs[0]);
             assert_memory_equal(pts, ref_pts, r.point_count * sizeof pts[0]);
