@@ -26,41 +26,29 @@ static void turn_at(const symline_point *p, uint32_t i, int64_t *num, int64_t *d
     *den = ((int64_t)ax * ax + (int64_t)ay * ay) * ((int64_t)bx * bx + (int64_t)by * by);
 }
 
-static bool is_corner(int64_t num, int64_t den)
-{
-    return num * SL_COS2_DEN < (int64_t)SL_COS2_NUM * den;
-}
-
 uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
 {
-    uint32_t i;
-    if (n < 2u * SL_CORNER_SPAN + 1u) {
-        return n;
-    }
+    /* The sharpest point of the first run of turning points; n if none (and
+     * for chains too short for the test: the loop does not run). */
+    uint32_t i, best = n;
+    int64_t bnum = 0, bden = 1;
     for (i = SL_CORNER_SPAN; i + SL_CORNER_SPAN < n; i++) {
         int64_t num, den;
         turn_at(p, i, &num, &den);
-        if (is_corner(num, den)) {
-            /* Cut at the sharpest point of this run of turning points. */
-            uint32_t best = i, j;
-            int64_t bnum = num, bden = den;
-            for (j = i + 1u; j + SL_CORNER_SPAN < n; j++) {
-                int64_t jn, jd;
-                turn_at(p, j, &jn, &jd);
-                if (!is_corner(jn, jd)) {
-                    break;
-                }
-                /* jn/jd < bnum/bden, denominators positive (chords of K steps are never empty). */
-                if (jn * bden < bnum * jd) {
-                    best = j;
-                    bnum = jn;
-                    bden = jd;
-                }
+        if (num * SL_COS2_DEN >= (int64_t)SL_COS2_NUM * den) {
+            if (best != n) {
+                break; /* the run ended */
             }
-            return best;
+            continue;
+        }
+        /* num/den < bnum/bden, denominators positive (chords of K steps are never empty). */
+        if (best == n || num * bden < bnum * den) {
+            best = i;
+            bnum = num;
+            bden = den;
         }
     }
-    return n;
+    return best;
 }
 
 uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
@@ -164,6 +152,15 @@ static void shrink(int64_t *a, int64_t *b, unsigned bits)
  * the scatter has no direction (all points equal).
  */
 #define SL_FIT_SAMPLES 2048u
+
+/* Point q in Q4 full resolution relative to (ox, oy) (Q8) minus (mx, my) (Q4). */
+SL_NOINLINE static void rel_q4(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
+                               int32_t mx, int32_t my, int32_t *x, int32_t *y)
+{
+    *x = (symline_i_pt_q8x(q, level) - ox) / 16 - mx;
+    *y = (symline_i_pt_q8y(q, level) - oy) / 16 - my;
+}
+
 SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
                                 symline_segment *s)
 {
@@ -174,18 +171,20 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     int64_t a = 0, b = 0, c = 0, r, lam, vx, vy, len;
     uint32_t i, cnt = 0u;
     for (i = 0; i < n; i += step) {
-        sx += (symline_i_pt_q8x(&p[i], level) - ox) / 16;
-        sy += (symline_i_pt_q8y(&p[i], level) - oy) / 16;
+        int32_t qx, qy;
+        rel_q4(&p[i], level, ox, oy, 0, 0, &qx, &qy);
+        sx += qx;
+        sy += qy;
         cnt++;
     }
     mx = sx / (int32_t)cnt;
     my = sy / (int32_t)cnt;
     for (i = 0; i < n; i += step) {
-        const int64_t dx = (symline_i_pt_q8x(&p[i], level) - ox) / 16 - mx;
-        const int64_t dy = (symline_i_pt_q8y(&p[i], level) - oy) / 16 - my;
-        a += dx * dx;
-        b += dx * dy;
-        c += dy * dy;
+        int32_t dx, dy;
+        rel_q4(&p[i], level, ox, oy, mx, my, &dx, &dy);
+        a += (int64_t)dx * dx;
+        b += (int64_t)dx * dy;
+        c += (int64_t)dy * dy;
     }
     while (a >= ((int64_t)1 << 30) || c >= ((int64_t)1 << 30) || b >= ((int64_t)1 << 30) ||
            b <= -((int64_t)1 << 30)) {
@@ -206,10 +205,10 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     ux = (int32_t)(vx * 32768) / (int32_t)len;
     uy = (int32_t)(vy * 32768) / (int32_t)len;
     for (i = 0; i < 2u; i++) {
-        const symline_point *q = &p[i == 0u ? 0u : n - 1u];
-        const int64_t qx = (symline_i_pt_q8x(q, level) - ox) / 16 - mx;
-        const int64_t qy = (symline_i_pt_q8y(q, level) - oy) / 16 - my;
-        const int64_t t = qx * ux + qy * uy; /* Q4 * Q15 */
+        int32_t qx, qy;
+        int64_t t;
+        rel_q4(&p[i == 0u ? 0u : n - 1u], level, ox, oy, mx, my, &qx, &qy);
+        t = (int64_t)qx * ux + (int64_t)qy * uy; /* Q4 * Q15 */
         /* Back to Q8 absolute: mean + t*u, Q4*Q15*Q15 -> Q8 is a shift by 26. */
         const int32_t ex = ox + mx * 16 + (int32_t)((t * ux) >> 26);
         const int32_t ey = oy + my * 16 + (int32_t)((t * uy) >> 26);
