@@ -14,16 +14,18 @@
 #define SL_COS2_DEN 1000
 
 /* Turn at point i: cos of the angle between the chords i-K..i and i..i+K,
- * as a signed ratio num/den of squares (num = dot*|dot|, den = |v1|^2 |v2|^2). */
-static void turn_at(const symline_point *p, uint32_t i, int64_t *num, int64_t *den)
+ * as a signed ratio num/den of squares (num = dot*|dot|, den = |v1|^2 |v2|^2).
+ * p is a traced chain: neighbours differ by at most 1 in x and y, so each
+ * chord component is within +-K and every product here fits 32 bits. */
+static void turn_at(const symline_point *p, uint32_t i, int32_t *num, int32_t *den)
 {
     const int32_t ax = (int32_t)p[i].x - (int32_t)p[i - SL_CORNER_SPAN].x;
     const int32_t ay = (int32_t)p[i].y - (int32_t)p[i - SL_CORNER_SPAN].y;
     const int32_t bx = (int32_t)p[i + SL_CORNER_SPAN].x - (int32_t)p[i].x;
     const int32_t by = (int32_t)p[i + SL_CORNER_SPAN].y - (int32_t)p[i].y;
-    const int64_t dot = (int64_t)ax * bx + (int64_t)ay * by;
+    const int32_t dot = ax * bx + ay * by;
     *num = dot * (dot < 0 ? -dot : dot);
-    *den = ((int64_t)ax * ax + (int64_t)ay * ay) * ((int64_t)bx * bx + (int64_t)by * by);
+    *den = (ax * ax + ay * ay) * (bx * bx + by * by);
 }
 
 uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
@@ -31,11 +33,11 @@ uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
     /* The sharpest point of the first run of turning points; n if none (and
      * for chains too short for the test: the loop does not run). */
     uint32_t i, best = n;
-    int64_t bnum = 0, bden = 1;
+    int32_t bnum = 0, bden = 1;
     for (i = SL_CORNER_SPAN; i + SL_CORNER_SPAN < n; i++) {
-        int64_t num, den;
+        int32_t num, den;
         turn_at(p, i, &num, &den);
-        if (num * SL_COS2_DEN >= (int64_t)SL_COS2_NUM * den) {
+        if (num * SL_COS2_DEN >= SL_COS2_NUM * den) {
             if (best != n) {
                 break; /* the run ended */
             }
@@ -54,14 +56,15 @@ uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
 uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
                                 int32_t py)
 {
-    const int64_t wx = (int64_t)px - ax, wy = (int64_t)py - ay;
+    /* Differences of Q8 coordinates of one frame fit 25 bits; products 64. */
+    const int32_t wx = px - ax, wy = py - ay;
     uint64_t len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
     int64_t c;
     uint64_t cross;
     if (len == 0u) {
-        return (uint32_t)symline_i_isqrt64((uint64_t)(wx * wx + wy * wy));
+        return (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)wx * wx + (int64_t)wy * wy));
     }
-    c = wx * dy - wy * dx;
+    c = (int64_t)wx * dy - (int64_t)wy * dx;
     cross = (uint64_t)(c < 0 ? -c : c);
     return symline_i_div_q8(cross, len);
 }
@@ -70,7 +73,7 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
  * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-static inline int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0, int32_t y0,
+SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0, int32_t y0,
                                   int32_t dx, int32_t dy)
 {
     const int32_t wx = symline_i_pt_q8x(q, level) - x0, wy = symline_i_pt_q8y(q, level) - y0;
@@ -231,6 +234,14 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
  * thirds of its sagitta: a flat piece of the centre circle is told from a line
  * even where its largest deviation stays under the curve threshold.
  */
+/* sum / (cnt len) in Q7 grid pixels, signed (Q7 keeps a difference of two in range). */
+SL_NOINLINE static int32_t mean_q7(int64_t sum, uint32_t cnt, uint64_t len)
+{
+    const uint32_t a = symline_i_div_q8((uint64_t)(sum < 0 ? -sum : sum) << SL_Q8_SHIFT,
+                                        (uint64_t)cnt * len);
+    return sum < 0 ? -(int32_t)(a >> 1) : (int32_t)(a >> 1);
+}
+
 uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
 {
     /* Grid coordinates: differences fit 32 bits, products 64. */
@@ -239,8 +250,8 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     const int64_t dd = (int64_t)dx * dx + (int64_t)dy * dy;
     const uint64_t len = symline_i_isqrt64((uint64_t)dd);
     int64_t sm = 0, so = 0;
-    uint32_t nm = 0u, no = 0u, i, am, ao;
-    int32_t mm, mo, d;
+    uint32_t nm = 0u, no = 0u, i;
+    int32_t d;
     for (i = 0; i < n; i++) {
         const int32_t wx = (int32_t)p[i].x - x0, wy = (int32_t)p[i].y - y0;
         const int64_t t = 4 * ((int64_t)wx * dx + (int64_t)wy * dy);
@@ -256,23 +267,19 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     if (nm == 0u || no == 0u || len == 0u) {
         return 0u;
     }
-    /* Means in Q8 grid pixels: sum * 256 / (count * len). */
-    am = symline_i_div_q8((uint64_t)(sm < 0 ? -sm : sm) << SL_Q8_SHIFT, (uint64_t)nm * len);
-    ao = symline_i_div_q8((uint64_t)(so < 0 ? -so : so) << SL_Q8_SHIFT, (uint64_t)no * len);
-    mm = sm < 0 ? -(int32_t)(am >> 1) : (int32_t)(am >> 1);
-    mo = so < 0 ? -(int32_t)(ao >> 1) : (int32_t)(ao >> 1);
-    d = mm - mo; /* in Q7 to keep the difference in range */
+    d = mean_q7(sm, nm, len) - mean_q7(so, no, len);
     d = d < 0 ? -d : d;
     return (uint32_t)d << 1;
 }
 
-/* The chord of p[0..n-1]'s first and last point as s's ends. */
+/* The chord of p[0..n-1]'s first and last point as s's ends, and its max_dev. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
     s->x0 = symline_i_pt_q8x(&p[0], level);
     s->y0 = symline_i_pt_q8y(&p[0], level);
     s->x1 = symline_i_pt_q8x(&p[n - 1u], level);
     s->y1 = symline_i_pt_q8y(&p[n - 1u], level);
+    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }
 
 void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
@@ -281,7 +288,6 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
     bool curve;
     chord_ends(p, n, level, s);
-    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
     curve = symline_i_is_curve(s->x0, s->y0, s->x1, s->y1,
                                symline_i_smooth_dev(p, n, level, s->x0, s->y0, s->x1, s->y1), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
@@ -362,5 +368,4 @@ void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, ui
     /* A curve keeps the chord of its first and last point (no line fit). */
     s->kind = SYMLINE_KIND_CURVE;
     chord_ends(p, n, level, s);
-    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }
