@@ -31,6 +31,10 @@
 #define SL_ALWAYS_INLINE inline
 #endif
 
+/* True when v lies outside -lim..lim (lim >= 0, v + lim without overflow):
+ * one comparison instead of two. */
+#define SL_OUTSIDE(v, lim) ((uint32_t)((v) + (lim)) > 2u * (uint32_t)(lim))
+
 /* Alignment every workspace carve-out is rounded to. */
 #define SL_ALIGN 8u
 

@@ -170,8 +170,8 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     /* Coordinates in Q4 full resolution, relative to the first point. */
     const int32_t ox = symline_i_pt_q8x(&p[0], level), oy = symline_i_pt_q8y(&p[0], level);
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
-    int32_t sx = 0, sy = 0, mx, my, ux, uy;
-    int64_t a = 0, b = 0, c = 0, r, lam, vx, vy, len;
+    int32_t sx = 0, sy = 0, mx, my, ux, uy, len;
+    int64_t a = 0, b = 0, c = 0, r, lam, vx, vy;
     uint32_t i, cnt = 0u;
     for (i = 0; i < n; i += step) {
         int32_t qx, qy;
@@ -189,24 +189,32 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
         b += (int64_t)dx * dy;
         c += (int64_t)dy * dy;
     }
-    while (a >= ((int64_t)1 << 30) || c >= ((int64_t)1 << 30) || b >= ((int64_t)1 << 30) ||
-           b <= -((int64_t)1 << 30)) {
+    /* Until a, c (never negative) and |b| are below 2^30. */
+    while ((a | c) >= ((int64_t)1 << 30) ||
+           (uint64_t)(b + ((int64_t)1 << 30) - 1) > ((uint64_t)1 << 31) - 2u) {
         a >>= 1;
         b /= 2;
         c >>= 1;
     }
-    r = (int64_t)symline_i_isqrt64((uint64_t)((a - c) * (a - c) / 4 + b * b));
+    {
+        /* Below 2^30 each: 32-bit operands, 64-bit products. */
+        const int32_t ac = (int32_t)a - (int32_t)c, b32 = (int32_t)b;
+        r = (int64_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
+    }
     lam = (a + c) / 2 + r;
     vx = a >= c ? lam - c : b;
     vy = a >= c ? b : lam - a;
     shrink(&vx, &vy, 15);
-    len = (int64_t)symline_i_isqrt64((uint64_t)(vx * vx + vy * vy));
+    /* Both within +-2^15 now: 32 bits suffice. */
+    ux = (int32_t)vx;
+    uy = (int32_t)vy;
+    len = (int32_t)symline_i_isqrt64((uint32_t)(ux * ux + uy * uy));
     if (len == 0) {
         return false;
     }
     /* Unit direction in Q15 (32-bit divisions). */
-    ux = (int32_t)(vx * 32768) / (int32_t)len;
-    uy = (int32_t)(vy * 32768) / (int32_t)len;
+    ux = ux * 32768 / len;
+    uy = uy * 32768 / len;
     for (i = 0; i < 2u; i++) {
         int32_t qx, qy;
         int64_t t;
@@ -326,8 +334,8 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
      * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
      * no square root and no division, so this stays cheap and shallow. */
     t2 = tol;
-    while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 || wx > 32767 || wx < -32767 ||
-           wy > 32767 || wy < -32767 || t2 > 32767) {
+    while (SL_OUTSIDE(dx, 32767) || SL_OUTSIDE(dy, 32767) || SL_OUTSIDE(wx, 32767) ||
+           SL_OUTSIDE(wy, 32767) || t2 > 32767) {
         dx /= 2;
         dy /= 2;
         wx /= 2;
