@@ -311,8 +311,8 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
                               int32_t py, int32_t tol)
 {
     /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
-    int32_t dx, dy, wx, wy, t2;
-    int64_t t, dd, c;
+    int32_t dx, dy, wx, wy, t2, c;
+    int64_t t, dd;
     if ((px < ax - tol && px < bx - tol) || (px > ax + tol && px > bx + tol) ||
         (py < ay - tol && py < by - tol) || (py > ay + tol && py > by + tol)) {
         return false;
@@ -323,11 +323,9 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
     wy = py - ay;
     t = (int64_t)wx * dx + (int64_t)wy * dy;
     dd = (int64_t)dx * dx + (int64_t)dy * dy;
-    if (t <= 0 || dd == 0) {
-        return (int64_t)wx * wx + (int64_t)wy * wy <= (int64_t)tol * tol;
-    }
-    if (t >= dd) {
-        const int32_t ex = px - bx, ey = py - by;
+    if (t <= 0 || t >= dd) {
+        /* Beyond an end (or no chord, t = 0): the distance to that end. */
+        const int32_t ex = t <= 0 ? wx : px - bx, ey = t <= 0 ? wy : py - by;
         return (int64_t)ex * ex + (int64_t)ey * ey <= (int64_t)tol * tol;
     }
     /* Inside the chord: |w x d| <= tol |d|, squared. Coarsen all lengths alike
@@ -342,9 +340,9 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
         wy /= 2;
         t2 /= 2;
     }
-    c = (int64_t)wx * dy - (int64_t)wy * dx;
-    return (uint64_t)(c * c) <=
-           (uint64_t)((int64_t)t2 * t2) * (uint64_t)((int64_t)dx * dx + (int64_t)dy * dy);
+    /* All within +-32767 now: the cross and the squares fit 32 bits. */
+    c = wx * dy - wy * dx;
+    return (int64_t)c * c <= (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
 }
 
 bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,
