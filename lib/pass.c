@@ -67,7 +67,6 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
 {
     symline_point *q = d->r->points + at;
     symline_segment *s;
-    uint32_t i;
     if ((n << p->level) < d->cfg->min_length || n < SL_MIN_PIECE_POINTS) {
         return;
     }
@@ -96,9 +95,6 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
     s->axis = (uint8_t)p->axis;
     s->first = at;
     s->count = n;
-    for (i = 0; i < n; i++) {
-        symline_i_pt_to_full(&q[i], p->level);
-    }
 }
 
 /* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
@@ -181,16 +177,19 @@ SL_NOINLINE static void trace(symline_i_run *d, const symline_i_pass *p, const u
     } else {
         note_need(r, n == 0u ? base : sat_add(tail, 1u));
     }
-    /* Keep only the points the new segments use, right after the earlier ones. */
+    /* Keep only the points the new segments use, right after the earlier
+     * ones, as full-resolution points (w <= s->first: forward copy). */
     w = base;
     for (k = first_seg; k < d->nseg; k++) {
         symline_segment *s = &r->segments[k];
         uint32_t i;
         for (i = 0; i < s->count; i++) {
-            r->points[w + i].x = r->points[s->first + i].x;
-            r->points[w + i].y = r->points[s->first + i].y;
-            r->points[w + i].fx = r->points[s->first + i].fx;
-            r->points[w + i].fy = r->points[s->first + i].fy;
+            symline_point q = r->points[s->first + i];
+            symline_i_pt_to_full(&q, p->level);
+            r->points[w + i].x = q.x;
+            r->points[w + i].y = q.y;
+            r->points[w + i].fx = q.fx;
+            r->points[w + i].fy = q.fy;
         }
         s->first = w;
         w += s->count;
