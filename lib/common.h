@@ -43,16 +43,9 @@ static inline size_t symline_i_align_up(size_t n)
     return (n + (SL_ALIGN - 1u)) & ~(size_t)(SL_ALIGN - 1u);
 }
 
-/* Carves `bytes` from a workspace cursor, aligned; NULL if it does not fit. */
-static inline void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes)
-{
-    uintptr_t p = ((uintptr_t)*cur + (SL_ALIGN - 1u)) & ~(uintptr_t)(SL_ALIGN - 1u);
-    if (p > (uintptr_t)end || bytes > (size_t)((uintptr_t)end - p)) {
-        return NULL;
-    }
-    *cur = (uint8_t *)(p + bytes);
-    return (void *)p;
-}
+/* Carves `bytes` from a workspace cursor, aligned; NULL if it does not fit
+ * (status.c: one copy for every stage, not one per object). */
+void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes);
 
 /*
  * Checks that a caller buffer of `len` elements holds `rows` rows of `cols`

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * Status names and the image view check.
+ * Status names, the image view check and workspace carving.
  */
 #include "common.h"
 
@@ -49,4 +49,14 @@ symline_status symline_image_check(const symline_image *img)
         return SYMLINE_ERR_STRIDE;
     }
     return SYMLINE_OK;
+}
+
+void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes)
+{
+    uintptr_t p = ((uintptr_t)*cur + (SL_ALIGN - 1u)) & ~(uintptr_t)(SL_ALIGN - 1u);
+    if (p > (uintptr_t)end || bytes > (size_t)((uintptr_t)end - p)) {
+        return NULL;
+    }
+    *cur = (uint8_t *)(p + bytes);
+    return (void *)p;
 }
