@@ -69,6 +69,14 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
     return symline_i_div_q8(cross, len);
 }
 
+/* Q8 full-resolution position of grid point q at `level` minus (ox, oy). */
+SL_NOINLINE static void pt_off(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
+                               int32_t *x, int32_t *y)
+{
+    *x = symline_i_pt_q8x(q, level) - ox;
+    *y = symline_i_pt_q8y(q, level) - oy;
+}
+
 /* Cross product of point q's offset from (x0, y0) with the chord direction
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
@@ -76,7 +84,8 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
 SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0, int32_t y0,
                                   int32_t dx, int32_t dy)
 {
-    const int32_t wx = symline_i_pt_q8x(q, level) - x0, wy = symline_i_pt_q8y(q, level) - y0;
+    int32_t wx, wy;
+    pt_off(q, level, x0, y0, &wx, &wy);
     return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
                           : (int64_t)wx * dy - (int64_t)wy * dx;
 }
@@ -131,8 +140,8 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
 bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
                         uint32_t thr)
 {
-    const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
-    const uint64_t chord = symline_i_isqrt64((uint64_t)(dx * dx + dy * dy));
+    const int32_t dx = x1 - x0, dy = y1 - y0; /* 25 bits: Q8 coordinates of one frame */
+    const uint64_t chord = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
     return max_dev > thr && (uint64_t)max_dev * 32u > chord;
 }
 
@@ -160,19 +169,20 @@ static void shrink(int64_t *a, int64_t *b, unsigned bits)
 SL_NOINLINE static void rel_q4(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
                                int32_t mx, int32_t my, int32_t *x, int32_t *y)
 {
-    *x = (symline_i_pt_q8x(q, level) - ox) / 16 - mx;
-    *y = (symline_i_pt_q8y(q, level) - oy) / 16 - my;
+    pt_off(q, level, ox, oy, x, y);
+    *x = *x / 16 - mx;
+    *y = *y / 16 - my;
 }
 
 SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
                                 symline_segment *s)
 {
     /* Coordinates in Q4 full resolution, relative to the first point. */
-    const int32_t ox = symline_i_pt_q8x(&p[0], level), oy = symline_i_pt_q8y(&p[0], level);
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
-    int32_t sx = 0, sy = 0, mx, my, ux, uy, len;
+    int32_t ox, oy, sx = 0, sy = 0, mx, my, ux, uy, len;
     int64_t a = 0, b = 0, c = 0, r, lam, vx, vy;
     uint32_t i, cnt = 0u;
+    pt_off(&p[0], level, 0, 0, &ox, &oy);
     for (i = 0; i < n; i += step) {
         int32_t qx, qy;
         rel_q4(&p[i], level, ox, oy, 0, 0, &qx, &qy);
@@ -283,10 +293,8 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
 /* The chord of p[0..n-1]'s first and last point as s's ends, and its max_dev. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
-    s->x0 = symline_i_pt_q8x(&p[0], level);
-    s->y0 = symline_i_pt_q8y(&p[0], level);
-    s->x1 = symline_i_pt_q8x(&p[n - 1u], level);
-    s->y1 = symline_i_pt_q8y(&p[n - 1u], level);
+    pt_off(&p[0], level, 0, 0, &s->x0, &s->y0);
+    pt_off(&p[n - 1u], level, 0, 0, &s->x1, &s->y1);
     s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }
 
