@@ -274,7 +274,7 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
         const int32_t wx = (int32_t)p[i].x - x0, wy = (int32_t)p[i].y - y0;
         const int64_t t = 4 * ((int64_t)wx * dx + (int64_t)wy * dy);
         const int64_t c = (int64_t)wx * dy - (int64_t)wy * dx;
-        if (t >= dd && t <= 3 * dd) {
+        if ((uint64_t)(t - dd) <= (uint64_t)(2 * dd)) { /* dd <= t <= 3 dd */
             sm += c;
             nm++;
         } else {

@@ -159,24 +159,16 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
     }
     while (t->phase < 2u) {
         while (t->scan < t->n) {
-            const uint32_t i = t->scan;
-            uint32_t x, y, pos;
-            if (t->pts[i].y == SL_VISITED) {
-                t->scan++;
-                continue;
-            }
-            x = t->pts[i].x;
-            y = t->pts[i].y;
-            if (t->phase == 0u && symline_i_neighbours(t, x, y) != 1u) {
-                t->scan++;
+            /* The scan moves past i either way (a chain from i has visited it). */
+            const uint32_t i = t->scan++;
+            const uint32_t x = t->pts[i].x, y = t->pts[i].y;
+            uint32_t pos = 1u;
+            if (y == SL_VISITED || (t->phase == 0u && symline_i_neighbours(t, x, y) != 1u)) {
                 continue;
             }
             visit(t, (int32_t)i);
-            pos = 1u;
             if (!follow(t, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
-                /* Nothing left to follow from here: a lone rest of a traced line. */
-                t->scan++;
-                continue;
+                continue; /* nothing left to follow from here: a lone rest of a traced line */
             }
             dst[0].x = (uint16_t)x;
             dst[0].y = (uint16_t)y;
