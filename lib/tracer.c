@@ -47,7 +47,7 @@ void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
 static int32_t find(const symline_i_tracer *t, int32_t x, int32_t y)
 {
     uint32_t lo, hi;
-    if (x < 0 || y < 0 || (uint32_t)y >= t->h || x > 65535) {
+    if ((uint32_t)x > 65535u || (uint32_t)y >= t->h) { /* negatives wrap: out too */
         return -1;
     }
     lo = t->row_start[y];
