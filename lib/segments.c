@@ -53,32 +53,20 @@ uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
     return best;
 }
 
-/* Offset w's cross product with the direction (dx, dy): |.| / |d| is its
- * distance to the line; with no direction, its squared length. Differences of
- * Q8 coordinates of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-static int64_t cross_w(int32_t wx, int32_t wy, int32_t dx, int32_t dy)
-{
-    return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
-                          : (int64_t)wx * dy - (int64_t)wy * dx;
-}
-
-/* c / (win |d|), Q8, for a sum c of win crosses; with no direction (win 1),
- * sqrt(c). No 64-bit division (its library helper's frame would deepen the
- * stack): floor(floor(c / win) / len) = floor(c / (win len)). */
-SL_NOINLINE static uint32_t dist_q8(uint64_t c, int32_t dx, int32_t dy, uint32_t win)
-{
-    if ((dx | dy) == 0) {
-        return (uint32_t)symline_i_isqrt64(c);
-    }
-    return symline_i_div_q8(
-        c, symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy)) * win);
-}
-
 uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
                                 int32_t py)
 {
-    const int64_t c = cross_w(px - ax, py - ay, dx, dy);
-    return dist_q8((uint64_t)(c < 0 ? -c : c), dx, dy, 1u);
+    /* Differences of Q8 coordinates of one frame fit 25 bits; products 64. */
+    const int32_t wx = px - ax, wy = py - ay;
+    uint64_t len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    int64_t c;
+    uint64_t cross;
+    if (len == 0u) {
+        return (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)wx * wx + (int64_t)wy * wy));
+    }
+    c = (int64_t)wx * dy - (int64_t)wy * dx;
+    cross = (uint64_t)(c < 0 ? -c : c);
+    return symline_i_div_q8(cross, len);
 }
 
 /* Q8 full-resolution position of grid point q at `level` minus (ox, oy). */
@@ -89,13 +77,17 @@ SL_NOINLINE static void pt_off(const symline_point *q, uint32_t level, int32_t o
     *y = symline_i_pt_q8y(q, level) - oy;
 }
 
-/* cross_w() of grid point q's offset from (x0, y0) (Q8). */
-SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0,
-                                       int32_t y0, int32_t dx, int32_t dy)
+/* Cross product of point q's offset from (x0, y0) with the chord direction
+ * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
+ * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
+ * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
+SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0, int32_t y0,
+                                  int32_t dx, int32_t dy)
 {
     int32_t wx, wy;
     pt_off(q, level, x0, y0, &wx, &wy);
-    return cross_w(wx, wy, dx, dy);
+    return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
+                          : (int64_t)wx * dy - (int64_t)wy * dx;
 }
 
 /* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]. */
@@ -123,6 +115,7 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
                                          uint32_t win)
 {
     const int32_t dx = x1 - x0, dy = y1 - y0;
+    uint64_t best, len;
     if (n == 0u) {
         return 0u;
     }
@@ -131,7 +124,14 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
      * one division at the end. With no direction: the distance to the end
      * itself, point by point. */
     win = (dx | dy) == 0 || win < 1u ? 1u : (win > n ? n : win);
-    return dist_q8(window_max(p, n, level, x0, y0, dx, dy, win), dx, dy, win);
+    best = window_max(p, n, level, x0, y0, dx, dy, win);
+    if ((dx | dy) == 0) {
+        return (uint32_t)symline_i_isqrt64(best);
+    }
+    len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    /* floor(floor(best / win) / len) = floor(best / (win len)): no 64-bit
+     * division (its library helper's frame would deepen the stack). */
+    return symline_i_div_q8(best, len * win);
 }
 
 /* A curve bends away from its chord by more than the threshold and by more
