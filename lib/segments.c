@@ -290,19 +290,12 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     return (uint32_t)d << 1;
 }
 
-/* chord_dev() of p[0..n-1] against s's chord. */
-SL_NOINLINE static uint32_t seg_dev(const symline_point *p, uint32_t n, uint32_t level,
-                                    const symline_segment *s, uint32_t win)
-{
-    return symline_i_chord_dev(p, n, level, s->x0, s->y0, s->x1, s->y1, win);
-}
-
 /* The chord of p[0..n-1]'s first and last point as s's ends, and its max_dev. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
     pt_off(&p[0], level, 0, 0, &s->x0, &s->y0);
     pt_off(&p[n - 1u], level, 0, 0, &s->x1, &s->y1);
-    s->max_dev = seg_dev(p, n, level, s, 1u);
+    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }
 
 void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
@@ -312,10 +305,10 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     bool curve;
     chord_ends(p, n, level, s);
     curve = symline_i_is_curve(s->x0, s->y0, s->x1, s->y1,
-                               seg_dev(p, n, level, s, SL_SMOOTH_WIN), thr);
+                               symline_i_smooth_dev(p, n, level, s->x0, s->y0, s->x1, s->y1), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
-        s->max_dev = seg_dev(p, n, level, s, 1u);
+        s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
     }
     s->level = (uint8_t)level;
     s->merged = false;

@@ -31,8 +31,9 @@ static const uint8_t AT[10] = {0u, SL_O1, SL_O2, SL_O3, SL_O4, SL_O5, SL_O6, SL_
 
 const char *symline_status_str(symline_status st)
 {
-    /* -st for the codes, 9 (unknown) for anything else. */
+    /* -st for the codes, 9 (unknown) for anything else a caller may pass. */
     const uint32_t i = 0u - (uint32_t)st;
+    /* cppcheck-suppress knownConditionTrueFalse */
     return NAMES + AT[i <= 8u ? i : 9u];
 }
 

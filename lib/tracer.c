@@ -133,19 +133,15 @@ static bool follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, syml
 
 void symline_i_reverse_points(symline_point *p, uint32_t n)
 {
-    uint32_t i;
-    /* Field by field: a struct swap may become a libc memcpy call. */
+    uint32_t i, k;
+    /* Byte by byte: a struct swap may become a libc memcpy call. */
     for (i = 0; i < n / 2u; i++) {
-        const uint16_t x = p[i].x, y = p[i].y;
-        const int8_t fx = p[i].fx, fy = p[i].fy;
-        p[i].x = p[n - 1u - i].x;
-        p[i].y = p[n - 1u - i].y;
-        p[i].fx = p[n - 1u - i].fx;
-        p[i].fy = p[n - 1u - i].fy;
-        p[n - 1u - i].x = x;
-        p[n - 1u - i].y = y;
-        p[n - 1u - i].fx = fx;
-        p[n - 1u - i].fy = fy;
+        uint8_t *a = (uint8_t *)&p[i], *b = (uint8_t *)&p[n - 1u - i];
+        for (k = 0; k < sizeof(symline_point); k++) {
+            const uint8_t v = a[k];
+            a[k] = b[k];
+            b[k] = v;
+        }
     }
 }
 
