@@ -169,9 +169,8 @@ static void shrink(int64_t *a, int64_t *b, unsigned bits)
 SL_NOINLINE static void rel_q4(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
                                int32_t mx, int32_t my, int32_t *x, int32_t *y)
 {
-    pt_off(q, level, ox, oy, x, y);
-    *x = *x / 16 - mx;
-    *y = *y / 16 - my;
+    *x = (symline_i_pt_q8x(q, level) - ox) / 16 - mx;
+    *y = (symline_i_pt_q8y(q, level) - oy) / 16 - my;
 }
 
 SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
@@ -290,12 +289,11 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     return (uint32_t)d << 1;
 }
 
-/* The chord of p[0..n-1]'s first and last point as s's ends, and its max_dev. */
+/* The chord of p[0..n-1]'s first and last point as s's ends. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
     pt_off(&p[0], level, 0, 0, &s->x0, &s->y0);
     pt_off(&p[n - 1u], level, 0, 0, &s->x1, &s->y1);
-    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }
 
 void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
@@ -304,6 +302,7 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
     bool curve;
     chord_ends(p, n, level, s);
+    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
     curve = symline_i_is_curve(s->x0, s->y0, s->x1, s->y1,
                                symline_i_smooth_dev(p, n, level, s->x0, s->y0, s->x1, s->y1), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
@@ -382,4 +381,5 @@ void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, ui
     /* A curve keeps the chord of its first and last point (no line fit). */
     s->kind = SYMLINE_KIND_CURVE;
     chord_ends(p, n, level, s);
+    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }
