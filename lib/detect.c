@@ -111,11 +111,6 @@ static symline_config_field bad_field(const symline_config *c)
     return symline_i_field_config_ok(&c->field) ? SYMLINE_CFG_NONE : SYMLINE_CFG_FIELD;
 }
 
-symline_status symline_i_config_check(const symline_config *c)
-{
-    return bad_field(c) == SYMLINE_CFG_NONE ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
-}
-
 symline_status symline_config_check(const symline_config *cfg, symline_config_field *field)
 {
     const symline_config_field bad = cfg != NULL ? bad_field(cfg) : SYMLINE_CFG_NONE;
@@ -180,7 +175,7 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
     uint32_t levels, level, axis;
     size_t best = 0u;
     if (cfg == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
-        height > SYMLINE_MAX_DIM || symline_i_config_check(cfg) != SYMLINE_OK) {
+        height > SYMLINE_MAX_DIM || symline_config_check(cfg, NULL) != SYMLINE_OK) {
         return 0u;
     }
     levels = symline_i_level_count(cfg, width, height);
@@ -268,7 +263,7 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
 symline_status symline_i_config_ws_check(const symline_image *img, const symline_config *cfg,
                                          size_t ws_size)
 {
-    const symline_status st = symline_i_config_check(cfg);
+    const symline_status st = symline_config_check(cfg, NULL);
     if (st != SYMLINE_OK) {
         return st;
     }
