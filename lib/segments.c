@@ -69,14 +69,6 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
     return symline_i_div_q8(cross, len);
 }
 
-/* Q8 full-resolution position of grid point q at `level` minus (ox, oy). */
-SL_NOINLINE static void pt_off(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
-                               int32_t *x, int32_t *y)
-{
-    *x = symline_i_pt_q8x(q, level) - ox;
-    *y = symline_i_pt_q8y(q, level) - oy;
-}
-
 /* Cross product of point q's offset from (x0, y0) with the chord direction
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
@@ -85,7 +77,7 @@ SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, i
                                   int32_t dx, int32_t dy)
 {
     int32_t wx, wy;
-    pt_off(q, level, x0, y0, &wx, &wy);
+    symline_i_pt_off(q, level, x0, y0, &wx, &wy);
     return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
                           : (int64_t)wx * dy - (int64_t)wy * dx;
 }
@@ -181,7 +173,7 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     int32_t ox, oy, sx = 0, sy = 0, mx, my, ux, uy, len;
     int64_t a = 0, b = 0, c = 0, r, lam, vx, vy;
     uint32_t i, cnt = 0u;
-    pt_off(&p[0], level, 0, 0, &ox, &oy);
+    symline_i_pt_off(&p[0], level, 0, 0, &ox, &oy);
     for (i = 0; i < n; i += step) {
         int32_t qx, qy;
         rel_q4(&p[i], level, ox, oy, 0, 0, &qx, &qy);
@@ -292,8 +284,8 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
 /* The chord of p[0..n-1]'s first and last point as s's ends. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
-    pt_off(&p[0], level, 0, 0, &s->x0, &s->y0);
-    pt_off(&p[n - 1u], level, 0, 0, &s->x1, &s->y1);
+    symline_i_pt_off(&p[0], level, 0, 0, &s->x0, &s->y0);
+    symline_i_pt_off(&p[n - 1u], level, 0, 0, &s->x1, &s->y1);
 }
 
 void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
