@@ -43,9 +43,31 @@ static inline size_t symline_i_align_up(size_t n)
     return (n + (SL_ALIGN - 1u)) & ~(size_t)(SL_ALIGN - 1u);
 }
 
-/* Carves `bytes` from a workspace cursor, aligned; NULL if it does not fit
- * (status.c: one copy for every stage, not one per object). */
-void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes);
+/* Carves `bytes` from a workspace cursor, aligned; NULL if it does not fit. */
+static inline void *symline_i_carve_here(uint8_t **cur, uint8_t *end, size_t bytes)
+{
+    uintptr_t p = ((uintptr_t)*cur + (SL_ALIGN - 1u)) & ~(uintptr_t)(SL_ALIGN - 1u);
+    if (p > (uintptr_t)end || bytes > (size_t)((uintptr_t)end - p)) {
+        return NULL;
+    }
+    *cur = (uint8_t *)(p + bytes);
+    return (void *)p;
+}
+
+/* The same, out of line (status.c). */
+void *symline_i_carve_shared(uint8_t **cur, uint8_t *end, size_t bytes);
+
+/* What the stages call: where the build optimises for size (-Os, the
+ * firmware builds), the one shared copy instead of one per object; else
+ * inline (and GCC's -fanalyzer then sees where the pointer points). */
+static inline void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes)
+{
+#if defined(__OPTIMIZE_SIZE__)
+    return symline_i_carve_shared(cur, end, bytes);
+#else
+    return symline_i_carve_here(cur, end, bytes);
+#endif
+}
 
 /*
  * Checks that a caller buffer of `len` elements holds `rows` rows of `cols`

@@ -59,10 +59,10 @@ typedef struct symline_i_range {
 #define SL_R_ONE 4u    /* the smallest value is 1 (else 0) */
 #define SL_R_SIGNED 8u /* the smallest value is -max */
 
-#define SL_RANGE(f, flags, max)                                                                 \
-    {                                                                                            \
-        (uint8_t)offsetof(symline_config, f),                                                    \
-            (uint8_t)((flags) | (sizeof(((symline_config *)0)->f) == 1u ? SL_R_BYTE : 0u)), max \
+#define SL_RANGE(f, flags, max)                                                                    \
+    {                                                                                              \
+        (uint8_t) offsetof(symline_config, f),                                                     \
+            (uint8_t)((flags) | (sizeof(((symline_config *)0)->f) == 1u ? SL_R_BYTE : 0u)), max    \
     }
 
 static const symline_i_range RANGES[] = {

@@ -73,8 +73,8 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
  * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0, int32_t y0,
-                                  int32_t dx, int32_t dy)
+SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0,
+                                       int32_t y0, int32_t dx, int32_t dy)
 {
     int32_t wx, wy;
     symline_i_pt_off(q, level, x0, y0, &wx, &wy);
@@ -246,8 +246,8 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
 /* sum / (cnt len) in Q7 grid pixels, signed (Q7 keeps a difference of two in range). */
 SL_NOINLINE static int32_t mean_q7(int64_t sum, uint32_t cnt, uint64_t len)
 {
-    const uint32_t a = symline_i_div_q8((uint64_t)(sum < 0 ? -sum : sum) << SL_Q8_SHIFT,
-                                        (uint64_t)cnt * len);
+    const uint32_t a =
+        symline_i_div_q8((uint64_t)(sum < 0 ? -sum : sum) << SL_Q8_SHIFT, (uint64_t)cnt * len);
     return sum < 0 ? -(int32_t)(a >> 1) : (int32_t)(a >> 1);
 }
 
@@ -341,7 +341,8 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
     }
     /* All within +-32767 now: the cross and the squares fit 32 bits. */
     c = wx * dy - wy * dx;
-    return (int64_t)c * c <= (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
+    return (int64_t)c * c <=
+           (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
 }
 
 bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,

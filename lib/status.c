@@ -17,7 +17,7 @@
 #define SL_S8 "configuration value out of range"
 #define SL_S9 "unknown status"
 static const char NAMES[] = SL_S0 "\0" SL_S1 "\0" SL_S2 "\0" SL_S3 "\0" SL_S4 "\0" SL_S5 "\0" SL_S6
-    "\0" SL_S7 "\0" SL_S8 "\0" SL_S9;
+                                  "\0" SL_S7 "\0" SL_S8 "\0" SL_S9;
 #define SL_O1 sizeof(SL_S0)
 #define SL_O2 (SL_O1 + sizeof(SL_S1))
 #define SL_O3 (SL_O2 + sizeof(SL_S2))
@@ -52,12 +52,7 @@ symline_status symline_image_check(const symline_image *img)
     return SYMLINE_OK;
 }
 
-void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes)
+void *symline_i_carve_shared(uint8_t **cur, uint8_t *end, size_t bytes)
 {
-    uintptr_t p = ((uintptr_t)*cur + (SL_ALIGN - 1u)) & ~(uintptr_t)(SL_ALIGN - 1u);
-    if (p > (uintptr_t)end || bytes > (size_t)((uintptr_t)end - p)) {
-        return NULL;
-    }
-    *cur = (uint8_t *)(p + bytes);
-    return (void *)p;
+    return symline_i_carve_here(cur, end, bytes);
 }
