@@ -154,12 +154,14 @@ SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, u
         uint32_t i;
         /* w <= s->first: a forward copy. */
         for (i = 0; i < s->count; i++) {
-            symline_point q = r->points[s->first + i];
-            symline_i_pt_to_full(&q, level);
-            r->points[w + i].x = q.x;
-            r->points[w + i].y = q.y;
-            r->points[w + i].fx = q.fx;
-            r->points[w + i].fy = q.fy;
+            /* Converted in place (read only once), then copied field by
+             * field: a struct copy may become a libc memcpy call. */
+            symline_point *q = &r->points[s->first + i];
+            symline_i_pt_to_full(q, level);
+            r->points[w + i].x = q->x;
+            r->points[w + i].y = q->y;
+            r->points[w + i].fx = q->fx;
+            r->points[w + i].fy = q->fy;
         }
         s->first = w;
         w += s->count;
