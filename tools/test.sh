@@ -69,8 +69,8 @@ if [ "$mode" != "--host" ]; then
         record $rc "aarch64 tests under qemu-user"
     fi
 
-    step "6. fuzzing (libFuzzer + ASan + UBSan, ${FUZZ_SECONDS:-45} s per target)"
-    sh tests/fuzz/run.sh "${FUZZ_SECONDS:-45}"
+    step "6. fuzzing (libFuzzer + ASan + UBSan, ${FUZZ_SECONDS:-20} s per target)"
+    sh tests/fuzz/run.sh "${FUZZ_SECONDS:-20}"
     rc=$?
     if [ $rc -eq 77 ]; then
         skipped="$skipped

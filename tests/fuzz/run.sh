@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
 # Builds the libFuzzer targets (clang, ASan + UBSan, preset "fuzz") and runs
-# each for SECONDS (default 60), one after the other on one core, starting
+# each for SECONDS (default 20), one after the other on one core, starting
 # from the seed corpus in tests/fuzz/corpus/ (copied: the repository stays
 # clean). Fails on any crash, leak, timeout (10 s per input), out-of-memory
 # (2 GB) or sanitizer report; prints the executions per target.
@@ -12,9 +12,9 @@
 case "${1:-}" in -h | --help) sed -n '3,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -u
 cd "$(dirname "$0")/../.."
-secs=${1:-60}
+secs=${1:-20}
 [ $# -gt 0 ] && shift
-targets=${*:-fuzz_pgm fuzz_png fuzz_y4m fuzz_operator fuzz_detect}
+targets=${*:-fuzz_pgm fuzz_png fuzz_jpeg fuzz_y4m fuzz_operator fuzz_detect fuzz_field fuzz_muff fuzz_features fuzz_histogram fuzz_intersections}
 
 have_fuzzer() {
     command -v clang >/dev/null 2>&1 &&
@@ -39,6 +39,7 @@ fi
     echo "tests/fuzz/run.sh: build failed"; cmake --build --preset fuzz --target $targets 2>&1 | tail -20; exit 1; }
 
 failed=""
+total=0
 for t in $targets; do
     seeds=tests/fuzz/corpus/${t#fuzz_}
     work=build-fuzz/corpus/$t
@@ -58,7 +59,9 @@ for t in $targets; do
     else
         echo "$t: ${execs:-?} executions in ${secs} s, ${cov:-cov: ?} edges, corpus $(ls "$work" | wc -l) inputs, nothing found"
     fi
+    total=$((total + ${execs:-0}))
 done
+echo "tests/fuzz/run.sh: $(echo $targets | wc -w) targets, $total executions in all"
 if [ -n "$failed" ]; then
     echo "tests/fuzz/run.sh: findings in:$failed"
     exit 1
