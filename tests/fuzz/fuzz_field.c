@@ -29,8 +29,10 @@ static void check_queries(const symline_field_boundary *b, int32_t x, int32_t y)
     int32_t lo = 0, hi = 0;
     uint32_t i;
     if (b->count == 0u || b->count > SYMLINE_FIELD_MAX_VERTICES) {
-        if (fy != 0 || symline_field_above(b, x, y) != 0) {
-            abort(); /* empty (or beyond the vertex limit): 0 */
+        /* Empty: row 0 and nothing above it; beyond the vertex limit (not a
+         * boundary symline makes): row 0, so only rows above the image are above. */
+        if (fy != 0 || symline_field_above(b, x, y) != (b->count != 0u && y < 0 ? 1 : 0)) {
+            abort();
         }
         return;
     }

@@ -17,7 +17,8 @@
  * points the same set (symline_muff_find reorders them) or untouched; on
  * success counts within capacities, segments of kind line at level 0 inside
  * the frame, their points consecutive, stored and inside the frame, the axis
- * as documented, and the finder's points the same set as before.
+ * horizontal or vertical as the segment runs (within a slope of 2), and the
+ * finder's points the same set as before.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -107,8 +108,11 @@ static void check_result(const symline_result *r, uint32_t w, uint32_t h)
             s->count > r->point_count - s->first || s->x0 < 0 || s->x1 < 0 || s->y0 < 0 ||
             s->y1 < 0 || s->x0 > (int32_t)((w - 1u) << 8) || s->x1 > (int32_t)((w - 1u) << 8) ||
             s->y0 > (int32_t)((h - 1u) << 8) || s->y1 > (int32_t)((h - 1u) << 8) ||
-            (dx > dy && s->axis != SYMLINE_AXIS_HORIZONTAL) ||
-            (dx < dy && s->axis != SYMLINE_AXIS_VERTICAL)) {
+            /* The axis follows the parametrisation of the peak's line, which
+             * the fit keeps up to a slope of 2: a segment steeper than that
+             * is never called horizontal, nor a flatter one vertical. */
+            (dy > 2u * dx && s->axis != SYMLINE_AXIS_VERTICAL) ||
+            (dx > 2u * dy && s->axis != SYMLINE_AXIS_HORIZONTAL) || s->axis > 1u) {
             fprintf(stderr, "segment %u: (%d,%d)-(%d,%d) axis %u kind %u level %u first %u count %u of %u\n",
                     i, s->x0, s->y0, s->x1, s->y1, s->axis, s->kind, s->level, s->first, s->count,
                     r->point_count);
