@@ -3,8 +3,9 @@
 # Builds the libFuzzer targets (clang, ASan + UBSan, preset "fuzz") and runs
 # each for SECONDS (default 20), one after the other on one core, starting
 # from the seed corpus in tests/fuzz/corpus/ (copied: the repository stays
-# clean). Fails on any crash, leak, timeout (10 s per input), out-of-memory
-# (2 GB) or sanitizer report; prints the executions per target.
+# clean), with the dictionary tests/fuzz/NAME.dict when there is one. Fails
+# on any crash, leak, timeout (10 s per input), out-of-memory (2 GB) or
+# sanitizer report; prints the executions per target and in all.
 #   tests/fuzz/run.sh [SECONDS] [TARGET...]
 # Exit status: 0 all ran clean, 1 a finding or a build error, 77 skipped
 # (clang or its fuzzer runtime missing and not installable).
@@ -47,7 +48,9 @@ for t in $targets; do
     log=build-fuzz/$t.log
     mkdir -p "$work" "$found"
     [ -d "$seeds" ] && cp -n "$seeds"/* "$work"/ 2>/dev/null
-    build-fuzz/fuzz/$t -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    dict=tests/fuzz/${t#fuzz_}.dict
+    [ -f "$dict" ] && set -- -dict="$dict" || set --
+    build-fuzz/fuzz/$t "$@" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$found/" "$work" >"$log" 2>&1
     rc=$?
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
