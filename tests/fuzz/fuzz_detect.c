@@ -55,8 +55,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     segs = fz_buf(seg_bytes, 0x5A);
     pts = fz_buf(pt_bytes, 0x5A);
     /* NULL arrays are allowed with a capacity of 0 only. */
-    res.segments = ((nulls & 1u) || (res.segment_cap == 0u && (nulls & 8u))) ? NULL : (symline_segment *)(void *)segs;
-    res.points = ((nulls & 2u) || (res.point_cap == 0u && (nulls & 16u))) ? NULL : (symline_point *)(void *)pts;
+    res.segments = ((nulls & 1u) || (res.segment_cap == 0u && (nulls & 8u)))
+                       ? NULL
+                       : (symline_segment *)(void *)segs;
+    res.points = ((nulls & 2u) || (res.point_cap == 0u && (nulls & 16u)))
+                     ? NULL
+                     : (symline_point *)(void *)pts;
     res.segment_count = 0xDEADu;
     res.point_count = 0xBEEFu;
     res.truncated = true;
@@ -86,7 +90,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* symline_config_check names a culprit exactly when it reports an error. */
     cst = symline_config_check(&cfg, (field_sel & 4u) ? NULL : &bad);
     fz_check_status(cst, "symline_config_check");
-    if ((cst != SYMLINE_OK && cst != SYMLINE_ERR_CONFIG) || (unsigned)bad > (unsigned)SYMLINE_CFG_FIELD ||
+    if ((cst != SYMLINE_OK && cst != SYMLINE_ERR_CONFIG) ||
+        (unsigned)bad > (unsigned)SYMLINE_CFG_FIELD ||
         ((field_sel & 4u) == 0u && (cst == SYMLINE_OK) != (bad == SYMLINE_CFG_NONE)) ||
         (!fz_field_config_ok(&cfg.field) && cst == SYMLINE_OK) ||
         (bad == SYMLINE_CFG_FIELD && fz_field_config_ok(&cfg.field))) {
@@ -106,7 +111,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_check_status(st, "symline_detect");
     fz_check_status(symline_image_check(&img), "symline_image_check");
     if ((nulls & (4u | 32u | 64u | 128u)) == 0u && symline_image_check(&img) == SYMLINE_OK &&
-        !(res.segments == NULL && res.segment_cap != 0u) && !(res.points == NULL && res.point_cap != 0u) &&
+        !(res.segments == NULL && res.segment_cap != 0u) &&
+        !(res.points == NULL && res.point_cap != 0u) &&
         (st == SYMLINE_ERR_CONFIG) != (cst == SYMLINE_ERR_CONFIG)) {
         abort(); /* symline_detect and symline_config_check disagree */
     }
@@ -135,8 +141,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (i = 0; i < res.segment_count; i++) {
             const symline_segment *s = &res.segments[i];
             uint32_t k;
-            if (s->count > res.point_count || s->first > res.point_count - s->count || s->kind > 1u ||
-                s->axis > 1u || s->level > 5u) {
+            if (s->count > res.point_count || s->first > res.point_count - s->count ||
+                s->kind > 1u || s->axis > 1u || s->level > 5u) {
                 abort();
             }
             for (k = 0; k < s->count; k++) {

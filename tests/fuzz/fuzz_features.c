@@ -46,8 +46,10 @@ static uint32_t reference(const symline_image *img, uint32_t m, symline_point *o
     if (mh == NULL || mv == NULL || ws == NULL) {
         abort();
     }
-    if (symline_extrema(img, SYMLINE_AXIS_HORIZONTAL, m, mh, w, (size_t)w * h, ws, nh) != SYMLINE_OK ||
-        symline_extrema(img, SYMLINE_AXIS_VERTICAL, m, mv, w, (size_t)w * h, ws, nv) != SYMLINE_OK) {
+    if (symline_extrema(img, SYMLINE_AXIS_HORIZONTAL, m, mh, w, (size_t)w * h, ws, nh) !=
+            SYMLINE_OK ||
+        symline_extrema(img, SYMLINE_AXIS_VERTICAL, m, mv, w, (size_t)w * h, ws, nv) !=
+            SYMLINE_OK) {
         n = UINT32_MAX;
     } else {
         for (y = 0; y < h; y++) {
@@ -84,7 +86,8 @@ static void check_points(const symline_image *img, uint32_t m, const symline_poi
     for (i = 0; i < n; i++) {
         if (p[i].x < 1u || p[i].y < 1u || p[i].x + 1u >= w || p[i].y + 1u >= h || p[i].fx != 0 ||
             p[i].fy != 0 ||
-            (i > 0u && (p[i].y < p[i - 1u].y || (p[i].y == p[i - 1u].y && p[i].x <= p[i - 1u].x)))) {
+            (i > 0u &&
+             (p[i].y < p[i - 1u].y || (p[i].y == p[i - 1u].y && p[i].x <= p[i - 1u].x)))) {
             fprintf(stderr, "feature point %u (%u,%u) offset (%d,%d), frame %ux%u\n", i, p[i].x,
                     p[i].y, p[i].fx, p[i].fy, w, h);
             abort();
@@ -179,10 +182,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     img.stride = stride;
     img.data = none && (nulls & 1u) ? NULL : px;
 
-    st = symline_features(none && (nulls & 2u) ? NULL : &img, m, none && (nulls & 4u) ? NULL : ws, wsn,
-                          (none && (nulls & 8u)) || (cap == 0u && (nulls & 16u)) ? NULL
-                                                                             : (symline_point *)(void *)pts,
-                          cap, none && (nulls & 32u) ? NULL : &count);
+    st = symline_features(
+        none && (nulls & 2u) ? NULL : &img, m, none && (nulls & 4u) ? NULL : ws, wsn,
+        (none && (nulls & 8u)) || (cap == 0u && (nulls & 16u)) ? NULL
+                                                               : (symline_point *)(void *)pts,
+        cap, none && (nulls & 32u) ? NULL : &count);
     fz_check_status(st, "symline_features");
     fz_check_guard(ws, wsn, "workspace");
     fz_check_guard(pts, pt_bytes, "points");
@@ -212,9 +216,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         fz_check_untouched(pts, pt_bytes, 0x5A, "points");
     }
-    if (symline_features_max_points(w, h) != (w >= 3u && h >= 3u && w <= 65535u && h <= 65535u
-                                                  ? (uint32_t)(((uint64_t)(w - 2u) * (h - 2u) + 1u) / 2u)
-                                                  : 0u)) {
+    if (symline_features_max_points(w, h) !=
+        (w >= 3u && h >= 3u && w <= 65535u && h <= 65535u
+             ? (uint32_t)(((uint64_t)(w - 2u) * (h - 2u) + 1u) / 2u)
+             : 0u)) {
         abort();
     }
     free(px);

@@ -93,7 +93,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     fz_field_config(&in, &fc);
     wsq = symline_field_workspace_size(w, h, &fc);
-    if ((wsq > 0u) != (fz_field_config_ok(&fc) && w >= 1u && h >= 1u && w <= 65535u && h <= 65535u)) {
+    if ((wsq > 0u) !=
+        (fz_field_config_ok(&fc) && w >= 1u && h >= 1u && w <= 65535u && h <= 65535u)) {
         abort(); /* the query is 0 exactly for invalid arguments */
     }
     if (symline_field_workspace_size(w, h, NULL) != 0u) {

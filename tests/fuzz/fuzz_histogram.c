@@ -108,7 +108,8 @@ static void entry_frame(fz_in *in)
                 abort();
             }
         }
-        fz_check_untouched(counts + (size_t)w * 2u, cb - (size_t)w * 2u, 0x5A, "counts beyond width");
+        fz_check_untouched(counts + (size_t)w * 2u, cb - (size_t)w * 2u, 0x5A,
+                           "counts beyond width");
         free(sum);
     }
     free(px);
@@ -150,10 +151,10 @@ static void entry_row(fz_in *in)
         fz_check_guard(ws, wsn, "workspace");
         for (x = 0; x < n; x++) {
             const uint32_t d = (uint32_t)start[x] - copy[x];
-            if (st != SYMLINE_OK ? start[x] != copy[x]
-                                 : (start[x] < copy[x] || d > 1u ||
-                                    (copy[x] == 65535u && start[x] != 65535u) ||
-                                    ((x == 0u || x + 1u == n) && d != 0u))) {
+            if (st != SYMLINE_OK
+                    ? start[x] != copy[x]
+                    : (start[x] < copy[x] || d > 1u || (copy[x] == 65535u && start[x] != 65535u) ||
+                       ((x == 0u || x + 1u == n) && d != 0u))) {
                 fprintf(stderr, "histogram row column %zu: %u -> %u (status %d)\n", x, copy[x],
                         start[x], (int)st);
                 abort();

@@ -95,7 +95,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         s->count = fz_u8(&in) % 16u == 0u ? fz_u32(&in) : fz_u16(&in) % 64u;
         if (s->kind == SYMLINE_KIND_CURVE && s->count >= 2u && s->first < npt_cap) {
             /* a curve's ends are its first and last points (mostly) */
-            const uint32_t last = s->first + s->count - 1u < npt_cap ? s->first + s->count - 1u : s->first;
+            const uint32_t last =
+                s->first + s->count - 1u < npt_cap ? s->first + s->count - 1u : s->first;
             s->x0 = (int32_t)pts[s->first].x << 8;
             s->y0 = (int32_t)pts[s->first].y << 8;
             s->x1 = (int32_t)pts[last].x << 8;
@@ -108,7 +109,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     lines.segment_count = nseg;
     lines.points = none && (nulls & 2u) ? NULL : pts;
     lines.point_cap = npt_cap;
-    lines.point_count = fz_u8(&in) % 16u == 0u ? npt_cap + 1u : npt_cap - (npt_cap > 0u ? fz_u8(&in) % (npt_cap + 1u) : 0u);
+    lines.point_count = fz_u8(&in) % 16u == 0u
+                            ? npt_cap + 1u
+                            : npt_cap - (npt_cap > 0u ? fz_u8(&in) % (npt_cap + 1u) : 0u);
     seg_copy = (uint8_t *)malloc(((size_t)seg_cap + 1u) * sizeof *segs);
     pt_copy = (uint8_t *)malloc(((size_t)npt_cap + 1u) * sizeof *pts);
     if (seg_copy == NULL || pt_copy == NULL) {
@@ -121,13 +124,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     out.cap = fz_u8(&in) % 4u == 0u ? 0u : fz_u8(&in) % 24u;
     item_bytes = (size_t)out.cap * sizeof(symline_intersection);
     items = fz_buf(item_bytes, 0x5A);
-    out.items = (none && (nulls & 4u)) || (out.cap == 0u && (nulls & 8u)) ? NULL
-                                                                         : (symline_intersection *)(void *)items;
+    out.items = (none && (nulls & 4u)) || (out.cap == 0u && (nulls & 8u))
+                    ? NULL
+                    : (symline_intersection *)(void *)items;
     out.count = 0xDEADu;
     out.truncated = 0xEEu;
     memcpy(&before, &out, sizeof out);
 
-    st = symline_intersections(none && (nulls & 16u) ? NULL : &lines, none && (nulls & 32u) ? NULL : &cfg,
+    st = symline_intersections(none && (nulls & 16u) ? NULL : &lines,
+                               none && (nulls & 32u) ? NULL : &cfg,
                                none && (nulls & 0x3Fu) == 0u ? NULL : &out);
     fz_check_status(st, "symline_intersections");
     fz_check_guard(items, item_bytes, "intersections");
@@ -150,7 +155,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                       x->type != (uint8_t)(x->ray_count - 2u) || x->segment_count < 2u ||
                       x->segment_count > SYMLINE_INTERSECTION_SEGMENTS || x->support < 1u;
             for (k = 0; !bad && k < x->ray_count; k++) {
-                bad = x->rays[k] >= SYMLINE_DEG_Q8_FULL || (k > 0u && x->rays[k] <= x->rays[k - 1u]);
+                bad =
+                    x->rays[k] >= SYMLINE_DEG_Q8_FULL || (k > 0u && x->rays[k] <= x->rays[k - 1u]);
             }
             for (k = 0; !bad && k < x->segment_count; k++) {
                 bad = x->segments[k] >= nseg || (k > 0u && x->segments[k] <= x->segments[k - 1u]);

@@ -114,7 +114,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *in, size_t size)
             ok = jpeg_luma_decode(d, data, size, w, h, dst, stride, jerr, sizeof jerr) == 0;
             fz_check_guard(dst, n, "JPEG rows");
             for (y = 0; y + 1u < h; y++) {
-                fz_check_untouched(dst + (size_t)y * stride + w, stride - w, 0x5A, "bytes between rows");
+                fz_check_untouched(dst + (size_t)y * stride + w, stride - w, 0x5A,
+                                   "bytes between rows");
             }
             if (!ok) {
                 if (memchr(jerr, '\0', sizeof jerr) == NULL || jerr[0] == '\0') {

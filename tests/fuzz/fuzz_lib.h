@@ -107,9 +107,9 @@ static inline int fz_field_config_ok(const symline_field_config *fc)
     return (c == 0u || (c >= 2u && c <= 64u && (c & (c - 1u)) == 0u)) && fc->band_pct >= 1u &&
            fc->band_pct <= 100u && fc->mean_tol <= 255u && fc->local_tol <= 255u &&
            fc->tex_lo_pct <= 100u && fc->tex_hi_pct >= 100u && fc->tex_hi_pct <= 10000u &&
-           fc->miss_cost >= 1u && fc->miss_cost <= 16u && fc->gap_pct <= 100u && fc->support >= 1u &&
-           fc->support <= 8u && fc->restore_cells <= 64u && fc->col_cells >= 1u &&
-           fc->col_cells <= 4u && fc->edge_slope_pct <= 10000u;
+           fc->miss_cost >= 1u && fc->miss_cost <= 16u && fc->gap_pct <= 100u &&
+           fc->support >= 1u && fc->support <= 8u && fc->restore_cells <= 64u &&
+           fc->col_cells >= 1u && fc->col_cells <= 4u && fc->edge_slope_pct <= 10000u;
 }
 
 /* Aborts unless b is a boundary as symline/field.h describes it for a

@@ -38,7 +38,8 @@ static void muff_config(fz_in *in, symline_muff_config *mc)
     mc->min_votes = fz_pick(in, def.min_votes, 1, 65535);
     mc->nms_cells = fz_pick(in, def.nms_cells, 0, 16);
     mc->max_peaks = fz_pick(in, def.max_peaks, 1, 1024);
-    mc->tol_q8 = fz_u8(in) % 8u == 0u ? 0u : fz_pick(in, def.tol_q8 != 0u ? def.tol_q8 : 512u, 64, 8192);
+    mc->tol_q8 =
+        fz_u8(in) % 8u == 0u ? 0u : fz_pick(in, def.tol_q8 != 0u ? def.tol_q8 : 512u, 64, 8192);
     mc->gap = fz_pick(in, def.gap, 0, 65535);
     mc->min_points = fz_pick(in, def.min_points, 2, 65535);
     mc->min_length = fz_pick(in, def.min_length, 0, 65535);
@@ -113,9 +114,11 @@ static void check_result(const symline_result *r, uint32_t w, uint32_t h)
              * is never called horizontal, nor a flatter one vertical. */
             (dy > 2u * dx && s->axis != SYMLINE_AXIS_VERTICAL) ||
             (dx > 2u * dy && s->axis != SYMLINE_AXIS_HORIZONTAL) || s->axis > 1u) {
-            fprintf(stderr, "segment %u: (%d,%d)-(%d,%d) axis %u kind %u level %u first %u count %u of %u\n",
-                    i, s->x0, s->y0, s->x1, s->y1, s->axis, s->kind, s->level, s->first, s->count,
-                    r->point_count);
+            fprintf(
+                stderr,
+                "segment %u: (%d,%d)-(%d,%d) axis %u kind %u level %u first %u count %u of %u\n", i,
+                s->x0, s->y0, s->x1, s->y1, s->axis, s->kind, s->level, s->first, s->count,
+                r->point_count);
             abort();
         }
         next = s->first + s->count; /* a point supports one segment: consecutive ranges */
@@ -147,8 +150,11 @@ static void outs_make(outs *o, uint32_t seg_cap, uint32_t pt_cap, uint32_t nulls
     o->pt_bytes = (size_t)pt_cap * sizeof(symline_point);
     o->segs = fz_buf(o->seg_bytes, 0x5A);
     o->pts = fz_buf(o->pt_bytes, 0x5A);
-    o->r.segments = ((nulls & 1u) || (seg_cap == 0u && (nulls & 2u))) ? NULL : (symline_segment *)(void *)o->segs;
-    o->r.points = ((nulls & 4u) || (pt_cap == 0u && (nulls & 8u))) ? NULL : (symline_point *)(void *)o->pts;
+    o->r.segments = ((nulls & 1u) || (seg_cap == 0u && (nulls & 2u)))
+                        ? NULL
+                        : (symline_segment *)(void *)o->segs;
+    o->r.points =
+        ((nulls & 4u) || (pt_cap == 0u && (nulls & 8u))) ? NULL : (symline_point *)(void *)o->pts;
     o->r.segment_count = 0xDEADu;
     o->r.point_count = 0xBEEFu;
     o->r.truncated = true;
@@ -328,10 +334,11 @@ static void entry_image(fz_in *in, int muff)
 
     if (muff) {
         const int none = (nulls & 0xC0u) == 0xC0u;
-        st = symline_detect_muff(none && (nulls & 32u) ? NULL : &img, none && (nulls & 2u) ? NULL : &cfg,
-                                 none && (nulls & 8u) ? NULL : &mc,
-                                 none && (nulls & 1u) ? NULL : (uint16_t *)(void *)acc, accn,
-                                 none && (nulls & 4u) ? NULL : ws, wsn, none && (nulls & 0x3Fu) == 0u ? NULL : &o.r);
+        st = symline_detect_muff(
+            none && (nulls & 32u) ? NULL : &img, none && (nulls & 2u) ? NULL : &cfg,
+            none && (nulls & 8u) ? NULL : &mc,
+            none && (nulls & 1u) ? NULL : (uint16_t *)(void *)acc, accn,
+            none && (nulls & 4u) ? NULL : ws, wsn, none && (nulls & 0x3Fu) == 0u ? NULL : &o.r);
         fz_check_status(st, "symline_detect_muff");
         if (st != SYMLINE_OK) {
             if (memcmp(&o.r, &o.before, sizeof o.r) != 0) {
@@ -347,10 +354,10 @@ static void entry_image(fz_in *in, int muff)
         bool truncated = true;
         const int none = (nulls & 0xC0u) == 0xC0u;
         symline_point *pts = (symline_point *)(void *)o.pts;
-        st = symline_line_points(none && (nulls & 32u) ? NULL : &img, none && (nulls & 2u) ? NULL : &cfg,
-                                 none && (nulls & 4u) ? NULL : ws, wsn, o.r.points, o.r.point_cap,
-                                 none && (nulls & 8u) ? NULL : &count,
-                                 none && (nulls & 1u) ? NULL : &truncated);
+        st = symline_line_points(
+            none && (nulls & 32u) ? NULL : &img, none && (nulls & 2u) ? NULL : &cfg,
+            none && (nulls & 4u) ? NULL : ws, wsn, o.r.points, o.r.point_cap,
+            none && (nulls & 8u) ? NULL : &count, none && (nulls & 1u) ? NULL : &truncated);
         fz_check_status(st, "symline_line_points");
         if (st != SYMLINE_OK) {
             if (count != 0xDEADu || !truncated) {
