@@ -12,7 +12,7 @@
 # Findings are kept in build-fuzz/findings/TARGET/ (reproduce: build-fuzz/fuzz/TARGET FILE).
 case "${1:-}" in -h | --help) sed -n '3,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -u
-cd "$(dirname "$0")/../.."
+cd "$(dirname "$0")/../.." || exit 1
 secs=${1:-20}
 [ $# -gt 0 ] && shift
 targets=${*:-fuzz_pgm fuzz_png fuzz_jpeg fuzz_y4m fuzz_operator fuzz_detect fuzz_field fuzz_muff fuzz_features fuzz_histogram fuzz_intersections}
@@ -41,6 +41,7 @@ fi
 
 failed=""
 total=0
+count=0
 for t in $targets; do
     seeds=tests/fuzz/corpus/${t#fuzz_}
     work=build-fuzz/corpus/$t
@@ -49,7 +50,8 @@ for t in $targets; do
     mkdir -p "$work" "$found"
     [ -d "$seeds" ] && cp -n "$seeds"/* "$work"/ 2>/dev/null
     dict=tests/fuzz/${t#fuzz_}.dict
-    [ -f "$dict" ] && set -- -dict="$dict" || set --
+    set --
+    if [ -f "$dict" ]; then set -- -dict="$dict"; fi
     build-fuzz/fuzz/$t "$@" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$found/" "$work" >"$log" 2>&1
     rc=$?
@@ -63,8 +65,9 @@ for t in $targets; do
         echo "$t: ${execs:-?} executions in ${secs} s, ${cov:-cov: ?} edges, corpus $(ls "$work" | wc -l) inputs, nothing found"
     fi
     total=$((total + ${execs:-0}))
+    count=$((count + 1))
 done
-echo "tests/fuzz/run.sh: $(echo $targets | wc -w) targets, $total executions in all"
+echo "tests/fuzz/run.sh: $count targets, $total executions in all"
 if [ -n "$failed" ]; then
     echo "tests/fuzz/run.sh: findings in:$failed"
     exit 1
