@@ -549,43 +549,22 @@ int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
 void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
                           uint32_t width, uint32_t margin, uint16_t *rows)
 {
-    /* symline_field_y() at every grid column's centre, without its division
-     * per column: along a chord the row moves by the remainder's carries (the
-     * chord's rows, rounded toward the top, as chord_y() gives them). */
+    /* symline_field_y() at every grid column's centre; the centres only move
+     * right, so the chord is found by stepping on from the last one. */
     const uint32_t s = 1u << level, last = b->count - 1u;
     uint32_t x, i = 0u;
-    int32_t xp = -1, y = 0, dy = 0, den = 1;
-    int64_t r = 0;
     for (x = 0; x < w; x++) {
         /* Keep grid row y when its centre y*s + s/2 >= boundary - margin. */
         const int32_t xc = (int32_t)(x * s + s / 2u < width ? x * s + s / 2u : width - 1u);
-        int64_t lim;
+        int32_t y;
         while (i < last && xc > b->v[i + 1u].x) {
             i++;
-            xp = -1; /* the next chord */
         }
-        if (xc <= b->v[0].x || i >= last) {
-            y = xc <= b->v[0].x ? b->v[0].y : b->v[last].y;
-        } else if (xp < 0) {
-            const symline_field_vertex *a = &b->v[i];
-            den = b->v[i + 1u].x - a->x;
-            dy = b->v[i + 1u].y - a->y;
-            y = chord_y(a, &b->v[i + 1u], xc);
-            r = (int64_t)dy * (xc - a->x) - (int64_t)(y - a->y) * den; /* 0 <= r < den */
-            xp = xc;
-        } else {
-            r += (int64_t)dy * (xc - xp);
-            xp = xc;
-            for (; r >= den; r -= den) {
-                y++;
-            }
-            for (; r < 0; r += den) {
-                y--;
-            }
-        }
-        lim = (int64_t)y - margin - s / 2u;
-        lim = lim <= 0 ? 0 : (lim + s - 1u) >> level;
-        rows[x] = (uint16_t)(lim > 0xFFFF ? 0xFFFF : lim);
+        y = (xc <= b->v[0].x || i >= last) ? b->v[xc <= b->v[0].x ? 0u : last].y
+                                            : chord_y(&b->v[i], &b->v[i + 1u], xc);
+        y -= (int32_t)(margin + s / 2u);
+        y = y <= 0 ? 0 : (y + (int32_t)s - 1) >> level;
+        rows[x] = (uint16_t)(y > 0xFFFF ? 0xFFFF : y);
     }
 }
 
