@@ -89,7 +89,7 @@ typedef struct symline_i_fcol {
 } symline_i_fcol;
 
 typedef struct symline_i_fstate {
-    uint32_t s, k, nc, nr;
+    uint32_t s, nc, nr;
     uint32_t sx;             /* column spacing: s * col_cells */
     uint32_t lo, hi;         /* accepted cell means */
     uint32_t mid;            /* the carpet's median */
@@ -247,7 +247,8 @@ SL_NOINLINE static void carpet_model(const symline_image *img, const symline_fie
     out->carpet_tex = (uint8_t)(tb > 255u ? 255u : tb);
 }
 
-/* Upward scan of every column: the best-scoring run of carpet. */
+/* Upward scan of every column: the best-scoring run of carpet; col[].top
+ * becomes its top row in pixels (the frame's height: no carpet). */
 SL_NOINLINE static void scan_columns(const symline_image *img, const symline_field_config *fc,
                                      const symline_i_fstate *f, symline_i_fcol *col)
 {
@@ -307,6 +308,11 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
                 q->top = (int32_t)r;
             }
         }
+    }
+    for (c = 0; c < f->nc; c++) {
+        /* Top row of the run's highest cell, pixels; no carpet: the bottom. */
+        const int32_t y = (int32_t)img->height - (col[c].top + 1) * (int32_t)f->s;
+        col[c].top = col[c].top < 0 ? (int32_t)img->height : (y < 0 ? 0 : y);
     }
 }
 
@@ -470,8 +476,6 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
         return; /* not reached: the workspace size was checked */
     }
     f->s = symline_i_field_cell(img->width, fc);
-    for (f->k = 0u; (1u << f->k) < f->s; f->k++) {
-    }
     f->sx = f->s * fc->col_cells;
     f->nc = (img->width + f->sx - 1u) / f->sx;
     f->nr = (img->height + f->s - 1u) / f->s;
@@ -484,12 +488,6 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
     out->cell = (uint8_t)f->s;
     carpet_model(img, fc, f, out);
     scan_columns(img, fc, f, col);
-    for (c = 0; c < f->nc; c++) {
-        /* Top row of the run's highest cell, pixels; no carpet: the bottom. */
-        const int32_t r = col[c].top;
-        const int32_t y = (int32_t)img->height - (r + 1) * (int32_t)f->s;
-        col[c].top = r < 0 ? (int32_t)img->height : (y < 0 ? 0 : (int32_t)y);
-    }
     support_filter(f, fc->support, col);
     hull(img, f, fc->edge_slope_pct, col, out);
     if (fc->restore_cells != 0u) {
