@@ -163,8 +163,8 @@ static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint3
          * pair's sum less twice its smaller value. */
         const uint32_t a0 = p[0], a1 = p[1], a2 = p[2], a3 = p[3], a4 = p[4], a5 = p[5], a6 = p[6],
                        a7 = p[7];
-        const uint32_t lows = (a0 < a1 ? a0 : a1) + (a2 < a3 ? a2 : a3) + (a4 < a5 ? a4 : a5) +
-                              (a6 < a7 ? a6 : a7);
+        const uint32_t lows =
+            (a0 < a1 ? a0 : a1) + (a2 < a3 ? a2 : a3) + (a4 < a5 ? a4 : a5) + (a6 < a7 ? a6 : a7);
         sum = a0 + a1 + a2 + a3 + a4 + a5 + a6 + a7;
         *mean = sum >> 3;
         *tex = rel_tex(2u * (sum - 2u * lows), sum, 8u);
@@ -567,7 +567,7 @@ void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint3
             i++;
         }
         y = (xc <= b->v[0].x || i >= last) ? b->v[xc <= b->v[0].x ? 0u : last].y
-                                            : chord_y(&b->v[i], &b->v[i + 1u], xc);
+                                           : chord_y(&b->v[i], &b->v[i + 1u], xc);
         y -= (int32_t)(margin + s / 2u);
         y = y <= 0 ? 0 : (y + (int32_t)s - 1) >> level;
         rows[x] = (uint16_t)(y > 0xFFFF ? 0xFFFF : y);
