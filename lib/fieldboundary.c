@@ -471,7 +471,6 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
     uint8_t *cur = ws, *const end = ws + ws_size;
     symline_i_fstate *f = (symline_i_fstate *)symline_i_carve(&cur, end, sizeof(symline_i_fstate));
     symline_i_fcol *col;
-    uint32_t c;
     if (f == NULL) {
         return; /* not reached: the workspace size was checked */
     }
@@ -495,6 +494,7 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
          * slope: every column's own top counts again, but no higher than
          * restore_cells above the robust boundary. */
         const int32_t d = (int32_t)(fc->restore_cells * f->s);
+        uint32_t c;
         for (c = 0; c < f->nc; c++) {
             const int32_t hf = symline_field_y(out, col_x(f, c, img->width));
             int32_t t = col[c].top;
@@ -566,8 +566,13 @@ void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint3
         while (i < last && xc > b->v[i + 1u].x) {
             i++;
         }
-        y = (xc <= b->v[0].x || i >= last) ? b->v[xc <= b->v[0].x ? 0u : last].y
-                                           : chord_y(&b->v[i], &b->v[i + 1u], xc);
+        if (xc <= b->v[0].x) {
+            y = b->v[0].y;
+        } else if (i >= last) {
+            y = b->v[last].y;
+        } else {
+            y = chord_y(&b->v[i], &b->v[i + 1u], xc);
+        }
         y -= (int32_t)(margin + s / 2u);
         y = y <= 0 ? 0 : (y + (int32_t)s - 1) >> level;
         rows[x] = (uint16_t)(y > 0xFFFF ? 0xFFFF : y);
