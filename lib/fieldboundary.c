@@ -171,6 +171,11 @@ static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint3
         return;
     }
     n = left < f->s ? left : f->s;
+    if (n == 0u) {
+        *mean = 0u; /* not reached: a cell starts inside its row */
+        *tex = 0u;
+        return;
+    }
     for (i = 0; i < n; i++) {
         sum += p[i];
         if (i + 1u < left) {
@@ -224,7 +229,7 @@ SL_NOINLINE static void carpet_model(const symline_image *img, const symline_fie
         row_cells(img, f, r, NULL, 0u, f->band + 2u * (size_t)r * f->nc); /* kept for the scan */
     }
     for (i = 0; i < f->nb * f->nc; i++) {
-        const uint32_t m = f->band[2u * i], t = f->band[2u * i + 1u];
+        const uint32_t m = f->band[2u * (size_t)i], t = f->band[2u * (size_t)i + 1u];
         if (m >= SL_FIELD_BLACK) {
             f->hm[m >> 2]++;
             f->ht[t < 2u * SL_FIELD_BINS ? t >> 1 : SL_FIELD_BINS - 1u]++;
