@@ -603,10 +603,10 @@ uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *p
         }
         for (; i < end; i++) {
             if (pts[i].y >= rows[pts[i].x]) {
-                pts[k].x = pts[i].x; /* field by field: no memcpy call */
-                pts[k].y = pts[i].y;
-                pts[k].fx = pts[i].fx;
-                pts[k++].fy = pts[i].fy;
+                /* Field by field (no memcpy call); the offsets fx, fy are
+                 * not set before the sub-pixel stage. */
+                pts[k].x = pts[i].x;
+                pts[k++].y = pts[i].y;
             }
         }
     }

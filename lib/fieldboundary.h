@@ -31,7 +31,8 @@ void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint3
 
 /* Drops the points of a pass's raster list (row_start[0..h], points in grid
  * coordinates) that lie above rows[x] (w entries); compacts the list in
- * place and returns the number kept. */
+ * place (x, y only: the offsets are set later, symline_i_subpixel()) and
+ * returns the number kept. */
 uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *pts,
                               uint32_t *row_start, uint32_t h);
 
