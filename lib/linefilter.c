@@ -84,9 +84,14 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
 #define SL_SIGMA10_Q4_DIV 160
 /* side_sigma10 of this much or more leaves the sides alone. */
 #define SL_SIDE_SIGMA10_OFF 100
+/* At full resolution the sides are sampled radius + 1 px from the centre,
+ * inside a bright line's blur; at 2x and coarser 8 px and more away. A
+ * saturated line on bright carpet lifts them over the limit there: one sigma
+ * more at level 0 (docs/detector.md, the overexposed synthetic scenes). */
+#define SL_SIDE_FULL_RES_SIGMA10 10
 
 void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *cfg,
-                                const symline_i_frame_stats *st)
+                                const symline_i_frame_stats *st, uint32_t level)
 {
     const uint32_t mean = st->mean, sigma_q4 = st->sigma_q4;
     const int64_t t = (int64_t)mean + (int64_t)cfg->bright_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
@@ -101,8 +106,8 @@ void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *c
         f->ridge_min = ridge;
     }
     if (cfg->side_sigma10 < SL_SIDE_SIGMA10_OFF) {
-        const int64_t sm =
-            (int64_t)mean + (int64_t)cfg->side_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
+        const int32_t s10 = cfg->side_sigma10 + (level == 0u ? SL_SIDE_FULL_RES_SIGMA10 : 0);
+        const int64_t sm = (int64_t)mean + (int64_t)s10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
         f->side_max = sm < 0 ? 0u : (sm > 255 ? 255u : (uint32_t)sm);
     }
 }
