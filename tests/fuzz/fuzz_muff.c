@@ -17,7 +17,7 @@
  * points the same set (symline_muff_find reorders them) or untouched; on
  * success counts within capacities, segments of kind line at level 0 inside
  * the frame, their points consecutive, stored and inside the frame, the axis
- * horizontal or vertical as the segment runs (within a slope of 2), and the
+ * horizontal exactly when |x1-x0| >= |y1-y0| (muff.h), and the
  * finder's points the same set as before.
  */
 #include <stdint.h>
@@ -109,11 +109,8 @@ static void check_result(const symline_result *r, uint32_t w, uint32_t h)
             s->count > r->point_count - s->first || s->x0 < 0 || s->x1 < 0 || s->y0 < 0 ||
             s->y1 < 0 || s->x0 > (int32_t)((w - 1u) << 8) || s->x1 > (int32_t)((w - 1u) << 8) ||
             s->y0 > (int32_t)((h - 1u) << 8) || s->y1 > (int32_t)((h - 1u) << 8) ||
-            /* The axis follows the parametrisation of the peak's line, which
-             * the fit keeps up to a slope of 2: a segment steeper than that
-             * is never called horizontal, nor a flatter one vertical. */
-            (dy > 2u * dx && s->axis != SYMLINE_AXIS_VERTICAL) ||
-            (dx > 2u * dy && s->axis != SYMLINE_AXIS_HORIZONTAL) || s->axis > 1u) {
+            /* muff.h: horizontal exactly when |x1-x0| >= |y1-y0| */
+            s->axis != (dx >= dy ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL)) {
             fprintf(
                 stderr,
                 "segment %u: (%d,%d)-(%d,%d) axis %u kind %u level %u first %u count %u of %u\n", i,
