@@ -34,21 +34,29 @@ void symline_i_linefilter_setup(symline_i_linefilter *f, const symline_config *c
     f->side_max = 255u;
 }
 
-/* Summed per row so a row's sums stay in 32 bits. */
+/* Column by column: the column's first field row is looked up once, not
+ * once per sample. */
 SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const uint16_t *top,
                                                uint32_t *hist, symline_i_frame_stats *st)
 {
-    uint32_t x, y, i, n = 0u, half, acc, med, mad;
+    const size_t step = (size_t)img->stride * SL_STATS_STEP;
+    uint32_t x, i, n = 0u, half, acc, med, mad;
     for (i = 0; i < 256u; i++) {
         hist[i] = 0u;
     }
-    for (y = 0; y < img->height; y += SL_STATS_STEP) {
-        const uint8_t *row = img->data + (size_t)y * img->stride;
-        for (x = 0; x < img->width; x += SL_STATS_STEP) {
-            if (top == NULL || y >= top[x]) {
-                hist[row[x]]++;
-                n++;
-            }
+    for (x = 0; x < img->width; x += SL_STATS_STEP) {
+        /* The first sampled row at or below top[x], and the samples from it down. */
+        const uint32_t y0 =
+            top == NULL ? 0u : ((uint32_t)top[x] + SL_STATS_STEP - 1u) & ~(SL_STATS_STEP - 1u);
+        uint32_t cnt;
+        size_t at;
+        if (y0 >= img->height) {
+            continue;
+        }
+        cnt = (img->height - y0 + SL_STATS_STEP - 1u) / SL_STATS_STEP;
+        n += cnt;
+        for (at = (size_t)y0 * img->stride + x; cnt > 0u; cnt--, at += step) {
+            hist[img->data[at]]++;
         }
     }
     st->mean = 0u;
