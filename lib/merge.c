@@ -396,7 +396,7 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
             }
             m.pos += a->count;
         }
-        if (m.out != NULL && changed) {
+        if (m.out != NULL) { /* unchanged: the same points */
             copy_points(r->points, m.out, m.pos);
         }
     }
