@@ -345,6 +345,14 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
            (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
 }
 
+bool symline_i_near_piece(const symline_point *a, const symline_point *b, int32_t x, int32_t y,
+                          int32_t tol_q8)
+{
+    /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
+    return near_chord((int32_t)a->x << SL_Q8_SHIFT, (int32_t)a->y << SL_Q8_SHIFT,
+                      (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, x, y, tol_q8);
+}
+
 bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,
                             int32_t y, int32_t tol_q8)
 {
@@ -353,12 +361,9 @@ bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, 
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
         return near_chord(s->x0, s->y0, s->x1, s->y1, x, y, tol_q8);
     }
-    /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
-        if (near_chord((int32_t)p[i].x << SL_Q8_SHIFT, (int32_t)p[i].y << SL_Q8_SHIFT,
-                       (int32_t)p[j].x << SL_Q8_SHIFT, (int32_t)p[j].y << SL_Q8_SHIFT, x, y,
-                       tol_q8)) {
+        if (symline_i_near_piece(&p[i], &p[j], x, y, tol_q8)) {
             return true;
         }
     }

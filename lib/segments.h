@@ -67,6 +67,10 @@ bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t
  * and the grid of earlier segments, segindex.c). */
 #define SL_POLY_STEP 4u
 
+/* True when (x, y) (Q8) lies within tol_q8 of the curve piece a-b (whole
+ * pixels): one step of symline_i_near_segment()'s polyline. */
+bool symline_i_near_piece(const symline_point *a, const symline_point *b, int32_t x, int32_t y,
+                          int32_t tol_q8);
 /* True when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
  * (its chord for lines, its points for curves). */
 bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,
