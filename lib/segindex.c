@@ -2,10 +2,10 @@
 /*
  * The grid of earlier segments (segindex.h). Built once per pass in two
  * sweeps over the segments: count the cells each one touches, then enter its
- * id; cells hold their ids in one array (compressed rows), so the grid needs
- * 4 bytes per cell and 4 per entry and nothing else. A cell the previous
- * piece of the same segment touched is skipped (a curve that comes back to a
- * cell may list itself there twice: harmless).
+ * id (a line) or its pieces (a curve); cells hold their entries in one array
+ * (compressed rows), so the grid needs 4 bytes per cell and 4 per entry (8
+ * per curve piece) and nothing else. A cell the previous piece of the same
+ * line touched is skipped.
  *
  * A point near a chord lies within tol of one of the chord's pieces of at
  * most one cell's length, hence inside that piece's bounding box grown by
@@ -51,12 +51,15 @@ static void visit_cell(symline_i_cellwalk *w, uint32_t c)
     uint32_t node;
     /* if/else rather than a switch: no jump table helper on small cores. */
     if (w->mode == SL_WALK_COUNT) {
-        w->end[c]++;
-        w->added++;
+        w->end[c] += w->width;
+        w->added += w->width;
     } else if (w->mode == SL_WALK_UNCOUNT) {
-        w->end[c]--;
+        w->end[c] -= w->width;
     } else if (w->mode == SL_WALK_FILL) {
         w->ids[w->end[c]++] = w->seg;
+        if (w->width == 2u) {
+            w->ids[w->end[c]++] = w->piece_end;
+        }
     } else {
         for (node = w->head[c]; node != 0xFFFFFFFFu && w->n <= w->cand_cap; node = w->next[node]) {
             if (w->n < w->cand_cap) {
@@ -103,20 +106,30 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     }
 }
 
-/* Every piece symline_i_near_segment() tests for segment s. */
-static void visit_segment(symline_i_cellwalk *v, const symline_result *r, const symline_segment *s,
-                          int32_t tol)
+/* Every piece symline_i_near_segment() tests for segment id: a line as its
+ * id, a curve piece by piece (a cell then asks only the pieces near it, not
+ * a long curve along its whole length), each piece in every cell it
+ * touches. Point indices from 2^31 on (16 GiB of points) list the curve whole. */
+static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32_t id, int32_t tol)
 {
+    const symline_segment *s = &r->segments[id];
     const symline_point *p = r->points + s->first;
     uint32_t i;
     v->px0 = 1u; /* no previous piece */
     v->px1 = 0u;
-    if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
+    v->seg = id;
+    v->width = 1u;
+    if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
         symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, tol);
         return;
     }
+    v->width = 2u;
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
+        v->seg = SL_PIECE | (s->first + i);
+        v->piece_end = s->first + j;
+        v->px0 = 1u;
+        v->px1 = 0u;
         symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
                                  (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, tol);
     }
@@ -168,14 +181,13 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
     /* Count, segment by segment, while the ids fit. */
     v.mode = SL_WALK_COUNT;
-    for (s = 0; s < nseg; s++) {
-        v.seg = s;
+    for (s = 0; s < nseg && s < SL_PIECE; s++) {
         v.added = 0u;
-        visit_segment(&v, r, &r->segments[s], tol_q8);
+        visit_segment(&v, r, s, tol_q8);
         if (v.added > cap - total) {
             /* Does not fit: take its counts back; it and later ones stay out. */
             v.mode = SL_WALK_UNCOUNT;
-            visit_segment(&v, r, &r->segments[s], tol_q8);
+            visit_segment(&v, r, s, tol_q8);
             break;
         }
         total += v.added;
@@ -189,8 +201,7 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
     v.mode = SL_WALK_FILL;
     for (s = 0; s < ix->indexed; s++) {
-        v.seg = s;
-        visit_segment(&v, r, &r->segments[s], tol_q8);
+        visit_segment(&v, r, s, tol_q8);
     }
 }
 
@@ -203,7 +214,11 @@ bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result 
             symline_i_cell_of(y, ix->rows) * ix->cols + symline_i_cell_of(x, ix->cols);
         uint32_t k;
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
-            if (symline_i_near_segment(&r->segments[ix->ids[k]], r->points, x, y, tol_q8)) {
+            const uint32_t e = ix->ids[k];
+            if ((e & SL_PIECE) != 0u
+                    ? symline_i_near_piece(&r->points[e - SL_PIECE], &r->points[ix->ids[++k]], x,
+                                           y, tol_q8)
+                    : symline_i_near_segment(&r->segments[e], r->points, x, y, tol_q8)) {
                 return true;
             }
         }

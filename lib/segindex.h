@@ -17,11 +17,14 @@
  * ids go to the free end of the point storage instead when that is larger.
  * Segments that fit in neither stay out of the grid and are tested one by one. */
 #define SL_IDS_PER_CELL 4u
+/* Marks a grid entry that is a curve piece (segindex_ids). */
+#define SL_PIECE 0x80000000u
 
 typedef struct symline_i_segindex {
     uint32_t cols, rows; /* cells across and down */
     uint32_t *end;       /* cols*rows: cell c holds ids[end[c-1] .. end[c]-1] (end[-1] = 0) */
-    uint32_t *ids;       /* segment ids, ascending within a cell */
+    uint32_t *ids;       /* a line's segment id, or a curve piece as two entries:
+                            SL_PIECE | its first point's index, its last point's index */
     uint32_t indexed;    /* segments [0, indexed) are in the grid */
 } symline_i_segindex;
 
@@ -44,6 +47,7 @@ typedef struct symline_i_cellwalk {
     symline_i_walk_mode mode;
     uint32_t px0, py0, px1, py1;     /* the previous piece's cells; set px0 > px1 to start */
     uint32_t *end, *ids, seg, added; /* COUNT, UNCOUNT, FILL */
+    uint32_t piece_end, width;       /* FILL: a curve piece's second entry; 2 then, else 1 */
     const uint32_t *head, *next;     /* GATHER */
     uint32_t *cand, cand_cap, n;     /* GATHER: n found; cap + 1 when full */
 } symline_i_cellwalk;
