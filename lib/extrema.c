@@ -11,36 +11,100 @@
 
 #include "symmetry.h"
 
-/* The run rule over a row. Run [a, i-1] ends where E changes; the last run
- * touches n-1 and is never marked. Inlined into both callers: with
- * SL_RUN_ANY_LENGTH the plateau test folds away in the public row call. */
-static SL_ALWAYS_INLINE void mark_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
+uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
+                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
 {
-    uint32_t a = 0u, i;
-    for (i = 0; i < n; i++) {
-        map[i] = SYMLINE_MAP_NONE;
+    uint32_t x, flat = 0u;
+    /* E < 2^31 for every radius (symline_emax(255) < 2^31), so the sign of
+     * a difference is its top bit: mid is an S point when both up - mid and
+     * dn - mid are positive (mid - up and mid - dn negative), an A point when
+     * both are negative. Subtractions and shifts only: baseline SSE2 has no
+     * unsigned 32-bit compare or min/max. */
+    for (x = 0; x < n; x++) {
+        const uint32_t a = up[x], b = mid[x], c = dn[x];
+        const uint32_t s = ((b - a) & (b - c)) >> 31;
+        const uint32_t l = ((a - b) & (c - b)) >> 31;
+        map[x] = (uint8_t)((0u - s) | (l << 7));
+        flat |= (uint32_t)(a == b) | (uint32_t)(b == c);
+    }
+    return flat;
+}
+
+/* The run rule over a row. Every entry with unequal neighbours is already
+ * decided (symline_i_extrema_kinds()); what is left are the runs of two or
+ * more equal energies: run [a, i-1] ends where E changes, and is marked at
+ * its middle unless it touches either end or is longer than the plateau
+ * limit allows. */
+void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
+{
+    uint32_t a, i;
+    map[0] = SYMLINE_MAP_NONE;
+    map[n - 1u] = SYMLINE_MAP_NONE;
+    if (n < 3u || symline_i_extrema_kinds(E, E + 1, E + 2, n - 2u, map + 1) == 0u) {
+        return;
     }
     for (i = 1u; i < n; i++) {
-        if (E[i] == E[a]) {
+        if (E[i] != E[i - 1u]) {
             continue;
         }
-        if (a >= 1u) {
+        a = i - 1u;
+        while (i < n && E[i] == E[a]) {
+            i++;
+        }
+        if (a >= 1u && i < n) {
             const uint32_t mid = (a + i - 1u) / 2u;
             if (i - 1u - mid <= lag) {
-                if (E[a - 1u] > E[a] && E[i] > E[i - 1u]) {
+                if (E[a - 1u] > E[a] && E[i] > E[a]) {
                     map[mid] = SYMLINE_MAP_S;
-                } else if (E[a - 1u] < E[a] && E[i] < E[i - 1u]) {
+                } else if (E[a - 1u] < E[a] && E[i] < E[a]) {
                     map[mid] = SYMLINE_MAP_A;
                 }
             }
         }
-        a = i;
     }
 }
 
-void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
+/* The slow path of symline_i_extrema_down(): columns x .. x_end-1 where a
+ * run of equal energies begins or ends at row t-1. A run begins when
+ * mid == dn != up (or t = 1); left says whether the row above it is larger
+ * (+1), smaller (-1) or absent (0). It ends when up == mid != dn, and is an
+ * extremum at its middle row when the row below is on the same side. */
+static void plateaus_down(const symline_i_coldown *cd, const uint32_t *up, const uint32_t *mid,
+                          const uint32_t *dn, uint32_t t, uint32_t x, uint32_t x_end)
 {
-    mark_runs(E, n, lag, map);
+    for (; x < x_end; x++) {
+        if (mid[x] == dn[x]) {
+            if (up[x] != mid[x] || t == 1u) {
+                cd->run_start[x] = (uint16_t)(t - 1u);
+                cd->left[x] = (int8_t)((up[x] > mid[x]) - (up[x] < mid[x]));
+            }
+        } else if (up[x] == mid[x] && t >= 2u) {
+            const int8_t right = (int8_t)((dn[x] > mid[x]) ? 1 : -1);
+            const uint32_t y = ((uint32_t)cd->run_start[x] + t - 1u) / 2u;
+            if (cd->left[x] == right && t - 1u - y <= cd->lag) {
+                cd->map[(size_t)(y % cd->ring) * cd->stride + x] =
+                    (uint8_t)((right > 0) ? SYMLINE_MAP_S : SYMLINE_MAP_A);
+            }
+        }
+    }
+}
+
+void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint32_t t)
+{
+    /* Row t-2 is row t-1 itself at t = 1: row 0 has no row above, so it is
+     * never marked, and a run that starts there has no side. */
+    const uint32_t w = cd->width;
+    const uint32_t *mid = cd->E[(t + 2u) % 3u];
+    const uint32_t *up = (t >= 2u) ? cd->E[(t + 1u) % 3u] : mid;
+    uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
+    uint32_t i;
+    /* In blocks, so that a plateau sends only its block down the slow path. */
+    for (i = 0; i < w; i += SL_PLATEAU_BLOCK) {
+        const uint32_t nb = (w - i < SL_PLATEAU_BLOCK) ? w - i : SL_PLATEAU_BLOCK;
+        if (symline_i_extrema_kinds(up + i, mid + i, E + i, nb, mr + i) != 0u) {
+            plateaus_down(cd, up, mid, E, t, i, i + nb);
+        }
+    }
 }
 
 symline_status symline_extrema_row(const uint32_t *E, uint32_t n, uint8_t *map)
@@ -51,7 +115,7 @@ symline_status symline_extrema_row(const uint32_t *E, uint32_t n, uint8_t *map)
     if (n == 0u || n > SYMLINE_MAX_DIM) {
         return SYMLINE_ERR_SIZE;
     }
-    mark_runs(E, n, SL_RUN_ANY_LENGTH, map);
+    symline_i_extrema_runs(E, n, SL_RUN_ANY_LENGTH, map);
     return SYMLINE_OK;
 }
 

@@ -6,8 +6,10 @@
  * energies, extrema and the filter run row by row.
  *
  * Horizontal axis (symmetry along columns): energies of grid row t need rows
- * t-m .. t+m; the column-run follower reports an extremum of a run [a, b]
- * when row b+1 arrives, at row (a+b) div 2. Extrema of plateaus longer than
+ * t-m .. t+m. Three rows of energies decide the extrema of the middle one
+ * with row-wise comparisons; a run of equal energies [a, b] down a column (a
+ * plateau, rare) is followed on a slow path and reported when row b+1
+ * arrives, at row (a+b) div 2. Extrema of plateaus longer than
  * 2*lag+1 rows are not line points (no thin line has them), so every
  * extremum of row y is known once row y+lag+1 has been pushed, and the
  * decision for row y (which looks a_distance rows of extrema and k rows of gray
@@ -87,7 +89,7 @@ typedef struct hring {
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 6 bytes per extremum and 8 per
  * row pointer, and the ring state within its fixed part (see pass.c). */
-typedef char symline_i_ring_state_fits_ws_budget[(sizeof(hring) + sizeof(symline_colrun) <= 80u &&
+typedef char symline_i_ring_state_fits_ws_budget[(sizeof(hring) <= 80u &&
                                                   sizeof(symline_extremum) <= 6u &&
                                                   sizeof(const uint8_t *) <= 8u)
                                                      ? 1
@@ -108,10 +110,9 @@ size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
         }
         return n;
     }
-    n += symline_i_align_up(sizeof(hring)) + symline_i_align_up(sizeof(symline_colrun)) +
-         (size_t)2u * SL_ALIGN;
-    n += symline_colrun_buffer_size(p->w);
-    n += symline_i_align_up(w * sizeof(symline_extremum));
+    n += symline_i_align_up(sizeof(hring));
+    n += symline_i_align_up(2u * w * sizeof(uint32_t)); /* two more rows of energies */
+    n += symline_i_align_up(w * sizeof(uint16_t)) + symline_i_align_up(w); /* plateau state */
     n += symline_i_align_up(w * (size_t)h_map_rows(p));
     if (p->level > 0u) {
         n += symline_i_align_up(w * (size_t)h_gray_rows(p));
@@ -240,25 +241,24 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
                                                      uint32_t *dropped)
 {
     hring *rp = (hring *)symline_i_carve(&cur, end, sizeof(hring));
-    symline_colrun *cr = (symline_colrun *)symline_i_carve(&cur, end, sizeof(symline_colrun));
     const uint32_t w = p->w, h = p->h, m = p->m;
     const uint32_t delta = h_delta(p);
-    if (rp == NULL || cr == NULL) {
-        return SYMLINE_ERR_BUFFER;
-    }
-    const size_t cr_bytes = symline_colrun_buffer_size(w);
-    uint32_t *E = (uint32_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint32_t));
-    void *cr_buf = symline_i_carve(&cur, end, cr_bytes);
-    symline_extremum *ev =
-        (symline_extremum *)symline_i_carve(&cur, end, (size_t)w * sizeof(symline_extremum));
+    /* Energies of rows t-2, t-1, t in turn (E3 + w * (row % 3)). */
+    uint32_t *E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * w * sizeof(uint32_t));
+    symline_i_coldown cd;
     const uint8_t **rows;
     uint16_t *acc = NULL;
     uint32_t t, y, produced = 0u, i;
+    if (rp == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
     rp->img = img;
     rp->p = p;
     rp->map_rows = h_map_rows(p);
     rp->gray_rows = h_gray_rows(p);
     rp->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->map_rows);
+    cd.run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint16_t));
+    cd.left = (int8_t *)symline_i_carve(&cur, end, w);
     rp->gray = NULL;
     if (p->level > 0u) {
         rp->gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->gray_rows);
@@ -269,12 +269,20 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
     }
     rows = (const uint8_t **)symline_i_carve(&cur, end,
                                              (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
-    if (E == NULL || cr_buf == NULL || ev == NULL || rp->map == NULL || rows == NULL) {
+    if (E3 == NULL || cd.run_start == NULL || cd.left == NULL || rp->map == NULL || rows == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    (void)symline_colrun_init(cr, w, cr_buf, cr_bytes);
+    cd.E[0] = E3;
+    cd.E[1] = E3 + w;
+    cd.E[2] = E3 + 2u * (size_t)w;
+    cd.map = rp->map;
+    cd.stride = w;
+    cd.width = w;
+    cd.ring = rp->map_rows;
+    cd.lag = p->lag;
     for (t = 0; t < h; t++) {
-        uint32_t count = 0u, j;
+        uint32_t j;
+        uint32_t *E = cd.E[t % 3u];
         if (p->level > 0u) {
             const uint32_t need = (t + m < h) ? t + m : h - 1u;
             SL_STAGE(GRID);
@@ -292,22 +300,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
         (void)symline_energy_across(rows, m, w, E);
         SL_STAGE(EXTREMA);
         if (t >= 1u) {
-            uint8_t *mr = h_map(rp, t - 1u);
-            for (i = 0; i < w; i++) {
-                mr[i] = SYMLINE_MAP_NONE;
-            }
-        }
-        (void)symline_colrun_push(cr, E, ev, w, &count);
-        if (count > 0u) {
-            /* Ring slot of row t-1 once per row; an event's row is at most lag above it. */
-            const uint32_t last = (t - 1u) % rp->map_rows;
-            for (i = 0; i < count; i++) {
-                const uint32_t back = t - 1u - ev[i].y;
-                if (back <= p->lag) {
-                    const uint32_t slot = last >= back ? last - back : last + rp->map_rows - back;
-                    rp->map[(size_t)slot * w + ev[i].x] = ev[i].kind;
-                }
-            }
+            symline_i_extrema_down(&cd, E, t);
         }
         if (t >= delta) {
             SL_STAGE(FILTER);
