@@ -94,8 +94,8 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
     /* Row t-2 is row t-1 itself at t = 1: row 0 has no row above, so it is
      * never marked, and a run that starts there has no side. */
     const uint32_t w = cd->width;
-    const uint32_t *mid = cd->E[(t + 2u) % 3u];
-    const uint32_t *up = (t >= 2u) ? cd->E[(t + 1u) % 3u] : mid;
+    const uint32_t *mid = cd->E3 + (size_t)((t + 2u) % 3u) * w;
+    const uint32_t *up = (t >= 2u) ? cd->E3 + (size_t)((t + 1u) % 3u) * w : mid;
     uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
     uint32_t i;
     /* In blocks, so that a plateau sends only its block down the slow path. */

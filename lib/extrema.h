@@ -41,21 +41,20 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
 
 /*
  * Extrema down the columns, one row at a time: the state of a frame's or a
- * ring's map. Energies of row y live in E[y % 3]; map row y at
+ * ring's map. Energies of row y live in E3 + (y % 3) * width; map row y at
  * map + (y % ring) * stride (ring: rows held, at least lag + 2); run_start
  * and left (width entries each) follow the plateaus.
  */
 typedef struct symline_i_coldown {
-    uint32_t *E[3];
+    uint32_t *E3;
     uint16_t *run_start;
     int8_t *left;
     uint8_t *map;
-    size_t stride;
-    uint32_t width, ring, lag;
+    uint32_t stride, width, ring, lag;
 } symline_i_coldown;
 
 /*
- * Row t >= 1 of energies E (= cd->E[t % 3], rows t-1 and t-2 held there too)
+ * Row t >= 1 of energies E (row t % 3 of cd->E3, rows t-1 and t-2 held there too)
  * has arrived: writes the whole map row t-1 (row 0: NONE) and marks the
  * plateaus that end at t-1 at their middle rows, if no more than lag rows
  * above t-1. Runs touching the bottom row are never marked; the caller

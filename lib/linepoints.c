@@ -82,9 +82,9 @@ static uint32_t h_gray_rows(const symline_i_pass *p)
 typedef struct hring {
     const symline_image *img;
     const symline_i_pass *p;
-    uint8_t *map;  /* map_rows rows of w */
     uint8_t *gray; /* gray_rows rows of w (levels > 0) */
-    uint32_t map_rows, gray_rows;
+    uint32_t gray_rows;
+    symline_i_coldown cd; /* extrema down the columns into the map ring (cd.ring rows of w) */
 } hring;
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 6 bytes per extremum and 8 per
@@ -206,7 +206,7 @@ static const uint8_t *h_row(const hring *r, uint32_t y)
 
 static uint8_t *h_map(const hring *r, uint32_t y)
 {
-    return r->map + (size_t)(y % r->map_rows) * r->p->w;
+    return r->cd.map + (size_t)(y % r->cd.ring) * r->p->w;
 }
 
 static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap, uint32_t *n,
@@ -227,7 +227,7 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
             continue;
         }
         if (p->filter.a_distance != 0u &&
-            !symline_i_linefilter_a_near(&p->filter, r->map + x, r->map_rows, p->w, p->h, y)) {
+            !symline_i_linefilter_a_near(&p->filter, r->cd.map + x, r->cd.ring, p->w, p->h, y)) {
             continue;
         }
         push_point(pts, cap, n, x, y, dropped);
@@ -245,20 +245,25 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
     const uint32_t delta = h_delta(p);
     /* Energies of rows t-2, t-1, t in turn (E3 + w * (row % 3)). */
     uint32_t *E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * w * sizeof(uint32_t));
-    symline_i_coldown cd;
+    symline_i_coldown *cd;
     const uint8_t **rows;
     uint16_t *acc = NULL;
-    uint32_t t, y, produced = 0u, i;
+    uint32_t t, y, produced = 0u;
     if (rp == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
+    cd = &rp->cd;
     rp->img = img;
     rp->p = p;
-    rp->map_rows = h_map_rows(p);
     rp->gray_rows = h_gray_rows(p);
-    rp->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->map_rows);
-    cd.run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint16_t));
-    cd.left = (int8_t *)symline_i_carve(&cur, end, w);
+    cd->E3 = E3;
+    cd->stride = w;
+    cd->width = w;
+    cd->ring = h_map_rows(p);
+    cd->lag = p->lag;
+    cd->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * cd->ring);
+    cd->run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint16_t));
+    cd->left = (int8_t *)symline_i_carve(&cur, end, w);
     rp->gray = NULL;
     if (p->level > 0u) {
         rp->gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->gray_rows);
@@ -269,20 +274,13 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
     }
     rows = (const uint8_t **)symline_i_carve(&cur, end,
                                              (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
-    if (E3 == NULL || cd.run_start == NULL || cd.left == NULL || rp->map == NULL || rows == NULL) {
+    if (E3 == NULL || cd->run_start == NULL || cd->left == NULL || cd->map == NULL ||
+        rows == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    cd.E[0] = E3;
-    cd.E[1] = E3 + w;
-    cd.E[2] = E3 + 2u * (size_t)w;
-    cd.map = rp->map;
-    cd.stride = w;
-    cd.width = w;
-    cd.ring = rp->map_rows;
-    cd.lag = p->lag;
     for (t = 0; t < h; t++) {
         uint32_t j;
-        uint32_t *E = cd.E[t % 3u];
+        uint32_t *E = E3 + (size_t)(t % 3u) * w;
         if (p->level > 0u) {
             const uint32_t need = (t + m < h) ? t + m : h - 1u;
             SL_STAGE(GRID);
@@ -300,7 +298,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
         (void)symline_energy_across(rows, m, w, E);
         SL_STAGE(EXTREMA);
         if (t >= 1u) {
-            symline_i_extrema_down(&cd, E, t);
+            symline_i_extrema_down(cd, E, t);
         }
         if (t >= delta) {
             SL_STAGE(FILTER);
@@ -310,6 +308,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
     SL_STAGE(FILTER);
     {
         uint8_t *mr = h_map(rp, h - 1u);
+        uint32_t i;
         for (i = 0; i < w; i++) {
             mr[i] = SYMLINE_MAP_NONE;
         }
