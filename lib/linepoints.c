@@ -89,11 +89,11 @@ typedef struct hring {
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 6 bytes per extremum and 8 per
  * row pointer, and the ring state within its fixed part (see pass.c). */
-typedef char symline_i_ring_state_fits_ws_budget[(sizeof(hring) <= 80u &&
-                                                  sizeof(symline_extremum) <= 6u &&
-                                                  sizeof(const uint8_t *) <= 8u)
-                                                     ? 1
-                                                     : -1];
+typedef char
+    symline_i_ring_state_fits_ws_budget[(sizeof(hring) <= 80u && sizeof(symline_extremum) <= 6u &&
+                                         sizeof(const uint8_t *) <= 8u)
+                                            ? 1
+                                            : -1];
 
 size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
 {
@@ -113,6 +113,10 @@ size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
     n += symline_i_align_up(sizeof(hring));
     n += symline_i_align_up(2u * w * sizeof(uint32_t)); /* two more rows of energies */
     n += symline_i_align_up(w * sizeof(uint16_t)) + symline_i_align_up(w); /* plateau state */
+    /* 2 B per column unused since the column extrema need no event list; kept
+     * until SYMLINE_DETECT_WORKSPACE_SIZE (detect.h) and its sizing test drop
+     * them together. */
+    n += symline_i_align_up(2u * w) + (size_t)2u * SL_ALIGN;
     n += symline_i_align_up(w * (size_t)h_map_rows(p));
     if (p->level > 0u) {
         n += symline_i_align_up(w * (size_t)h_gray_rows(p));
