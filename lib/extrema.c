@@ -14,8 +14,8 @@
 
 #include "symmetry.h"
 
-uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
+uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
+                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
 {
     uint32_t x, flat = 0u;
     /* E < 2^31 for every radius (symline_emax(255) < 2^31), so the sign of
@@ -32,6 +32,14 @@ uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *re
     }
     return flat;
 }
+
+#ifndef SYMLINE_PORT_EXTREMA_KINDS
+uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
+                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
+{
+    return symline_i_extrema_kinds_c(up, mid, dn, n, map);
+}
+#endif
 
 /*
  * The run rule over a row. Every entry with unequal neighbours is decided in

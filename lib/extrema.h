@@ -21,7 +21,12 @@
  * equals up[x] or dn[x]: a plateau, which the caller decides on its slow path
  * (map[x] is NONE there). Rows of a frame (extrema down the columns) or one
  * row shifted by one entry (along it). Energies below 2^31.
+ * symline_i_extrema_kinds_c() is the portable reference; symline_i_extrema_kinds()
+ * is the build's choice: a SIMD version from port/ (SYMLINE_PORT_EXTREMA_KINDS,
+ * CMake option SYMLINE_SIMD) with the same output, or the reference.
  */
+uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
+                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map);
 uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
                                  const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map);
 
