@@ -137,6 +137,44 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
     (*n)++;
 }
 
+/* The byte-lane pre-filter below pays where the compiler has vector lanes for
+ * it (16 bytes per instruction); on scalar cores (Cortex-M) it would cost about
+ * what it saves, in code size too, so it is left out there. */
+#if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__)
+#define SL_ROW_PREFILTER 1
+#endif
+
+#ifdef SL_ROW_PREFILTER
+/*
+ * Drops from map[0 .. n-1] the S points that the line filter's first tests
+ * reject (symline_i_linefilter_gray() repeats them on what is left): gray c
+ * below the illumination minimum and, for the contrast filter, a ridge not
+ * above its sides lo, hi by ridge_min or sides brighter than side_max. Byte
+ * lanes, whole rows; A points stay. Limits above 255 are clamped, which only
+ * keeps more points for the exact test.
+ */
+SL_NOINLINE static void drop_dim_s(const symline_i_linefilter *f, const uint8_t *c,
+                                   const uint8_t *lo, const uint8_t *hi, uint32_t n, uint8_t *map)
+{
+    const uint8_t mg = (uint8_t)(f->min_gray < 255u ? f->min_gray : 255u);
+    uint8_t sm = 255u, rm = 0u;
+    uint32_t x;
+    if (f->kind != SYMLINE_FILTER_PAPER) {
+        sm = (uint8_t)(f->side_max < 255u ? f->side_max : 255u);
+        rm = (uint8_t)(f->ridge_min < 1u ? 1u : f->ridge_min < 255u ? f->ridge_min : 255u);
+    } else {
+        lo = c; /* the paper's filter: gray only (side c, ridge 0 >= rm = 0) */
+        hi = c;
+    }
+    for (x = 0; x < n; x++) {
+        const uint8_t side = lo[x] > hi[x] ? lo[x] : hi[x];
+        const uint8_t d = (uint8_t)(c[x] > side ? (uint32_t)c[x] - side : 0u);
+        const unsigned keep = (unsigned)(c[x] >= mg) & (unsigned)(side <= sm) & (unsigned)(d >= rm);
+        map[x] = (uint8_t)((map[x] == SYMLINE_MAP_S && keep == 0u) ? SYMLINE_MAP_NONE : map[x]);
+    }
+}
+#endif
+
 /* ---- vertical axis: along rows ---- */
 
 SL_NOINLINE static symline_status collect_vertical(const symline_image *img,
@@ -179,6 +217,11 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img,
         SL_STAGE(EXTREMA);
         symline_i_extrema_runs(E, w, p->lag, map);
         SL_STAGE(FILTER);
+#ifdef SL_ROW_PREFILTER
+        if (w > 2u * k) { /* the interior, where both sides lie in the row */
+            drop_dim_s(&p->filter, row + k, row, row + 2u * k, w - 2u * k, map + k);
+        }
+#endif
         for (x = 0; x < w; x++) {
             if (map[x] != SYMLINE_MAP_S) {
                 continue;
@@ -217,12 +260,15 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
                      uint32_t *row_start, uint32_t *dropped)
 {
     const symline_i_pass *p = r->p;
-    const uint8_t *map = h_map(r, y);
+    uint8_t *map = h_map(r, y);
     const uint8_t *c = h_row(r, y);
     const uint8_t *lo = h_row(r, y >= p->k ? y - p->k : 0u);
     const uint8_t *hi = h_row(r, y + p->k < p->h ? y + p->k : p->h - 1u);
     uint32_t x;
     row_start[y] = *n;
+#ifdef SL_ROW_PREFILTER
+    drop_dim_s(&p->filter, c, lo, hi, p->w, map);
+#endif
     for (x = 0; x < p->w; x++) {
         if (map[x] != SYMLINE_MAP_S) {
             continue;
