@@ -30,11 +30,14 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
 {
     const uint32_t s = 1u << p->level;
     const uint32_t shift = 2u * p->level;
-    const uint32_t span = p->w * s;
+    /* The width in a local: out (bytes) might alias *p, and a bound read
+     * through p after every store keeps the loops from vectorising. */
+    const uint32_t w = p->w;
+    const uint32_t span = w * s;
     uint32_t x, d;
     const uint8_t *src = img->data + (size_t)(y * s) * img->stride;
     if (p->level == 0u) {
-        for (x = 0; x < p->w; x++) {
+        for (x = 0; x < w; x++) {
             out[x] = src[x];
         }
         return;
@@ -49,13 +52,13 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
         }
     }
     if (s == 2u) { /* the common first step, as a plain lane loop */
-        for (x = 0; x < p->w; x++) {
+        for (x = 0; x < w; x++) {
             const uint16_t *pair = acc + (size_t)2u * x;
             out[x] = (uint8_t)(((uint32_t)pair[0] + pair[1] + 2u) >> 2);
         }
         return;
     }
-    for (x = 0; x < p->w; x++) {
+    for (x = 0; x < w; x++) {
         uint32_t sum = 0u;
         for (d = 0; d < s; d++) {
             sum += acc[x * s + d];
