@@ -222,7 +222,7 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img,
         SL_STAGE(FILTER);
 #ifdef SL_ROW_PREFILTER
         if (w > 2u * k) { /* the interior, where both sides lie in the row */
-            drop_dim_s(&p->filter, row + k, row, row + 2u * k, w - 2u * k, map + k);
+            drop_dim_s(&p->filter, row + k, row, row + (size_t)2u * k, w - 2u * k, map + k);
         }
 #endif
         for (x = 0; x < w; x++) {
