@@ -23,6 +23,8 @@ typedef struct caploop_options {
     const char *snapshot_dir;  /* must exist */
     uint32_t record_every;     /* every K-th frame as PGM into record_dir; 0 = none */
     const char *record_dir;    /* must exist */
+    int profile;               /* 1: time per detector stage in each record and the final
+                                  summary (needs stageprof_available()) */
     const symline_config *cfg; /* detector settings */
 } caploop_options;
 

@@ -262,7 +262,7 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
             symline_i_pass_setup(p, cfg, symline_i_axis_of(cfg, axis), level, d->img->width,
                                  d->img->height);
             if (cfg->adaptive) {
-                symline_i_linefilter_adapt(&p->filter, cfg, &d->stats);
+                symline_i_linefilter_adapt(&p->filter, cfg, &d->stats, level);
             }
             if (symline_i_pass_run(d, p, cur, end) != SYMLINE_OK) {
                 return; /* not reached: the workspace size was checked */

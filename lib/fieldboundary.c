@@ -89,7 +89,7 @@ typedef struct symline_i_fcol {
 } symline_i_fcol;
 
 typedef struct symline_i_fstate {
-    uint32_t s, k, nc, nr;
+    uint32_t s, nc, nr;
     uint32_t sx;             /* column spacing: s * col_cells */
     uint32_t lo, hi;         /* accepted cell means */
     uint32_t mid;            /* the carpet's median */
@@ -112,7 +112,7 @@ static size_t cols_bytes(uint32_t nc)
 /* Grid rows of the carpet model's band. */
 static uint32_t band_rows(uint32_t nr, const symline_field_config *fc)
 {
-    const uint32_t nb = (uint32_t)(((uint64_t)nr * fc->band_pct + 99u) / 100u);
+    const uint32_t nb = (nr * fc->band_pct + 99u) / 100u; /* nr <= 32768: 32 bits */
     return nb < 1u ? 1u : nb;
 }
 
@@ -150,40 +150,57 @@ static uint32_t absdiff(uint32_t a, uint32_t b)
     return a > b ? a - b : b - a;
 }
 
-/* Mean gray value and relative texture of cell c of a sample row: its
- * pixels, and the differences of neighbours among them. This is the stage's
- * cost. */
-static inline void cell_stats(const symline_i_fstate *f, const uint8_t *row, uint32_t w, uint32_t c,
+/* Mean gray value and relative texture of the cell whose pixels start at p,
+ * left (>= 1) pixels before the row's end: its pixels, and the differences of
+ * neighbours among them. This is the stage's cost. */
+static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint32_t left,
                               uint32_t *mean, uint32_t *tex)
 {
-    const uint32_t x0 = c * f->sx;
-    const uint8_t *p = row + x0;
     uint32_t i, n, sum = 0u, d = 0u;
-    if (f->s == 8u && x0 + 8u <= w) {
+    if (f->s == 8u && left >= 8u) {
         /* Written out: all 8 pixels, and 4 of the differences (every other
-         * pair measures the grain as well at half the cost). */
+         * pair measures the grain as well at half the cost), each as the
+         * pair's sum less twice its smaller value. */
         const uint32_t a0 = p[0], a1 = p[1], a2 = p[2], a3 = p[3], a4 = p[4], a5 = p[5], a6 = p[6],
                        a7 = p[7];
+        const uint32_t lows =
+            (a0 < a1 ? a0 : a1) + (a2 < a3 ? a2 : a3) + (a4 < a5 ? a4 : a5) + (a6 < a7 ? a6 : a7);
         sum = a0 + a1 + a2 + a3 + a4 + a5 + a6 + a7;
         *mean = sum >> 3;
-        *tex = rel_tex(2u * (absdiff(a0, a1) + absdiff(a2, a3) + absdiff(a4, a5) + absdiff(a6, a7)),
-                       sum, 8u);
+        *tex = rel_tex(2u * (sum - 2u * lows), sum, 8u);
         return;
     }
-    n = w - x0 < f->s ? w - x0 : f->s; /* >= 1: cells start inside the row */
+    n = left < f->s ? left : f->s;
     if (n == 0u) {
-        *mean = 0u;
+        *mean = 0u; /* not reached: a cell starts inside its row */
         *tex = 0u;
         return;
     }
     for (i = 0; i < n; i++) {
         sum += p[i];
-        if (i + 1u < w - x0) {
+        if (i + 1u < left) {
             d += absdiff(p[i], p[i + 1u]);
         }
     }
     *mean = sum / n;
-    *tex = (x0 + 1u < w) ? rel_tex(d, sum, n) : 0u;
+    *tex = left > 1u ? rel_tex(d, sum, n) : 0u;
+}
+
+/* The cells (mean, texture) of grid row r into out, two bytes per column;
+ * a column behind a barrier (col not NULL, gap > gmax) is left out. */
+static void row_cells(const symline_image *img, const symline_i_fstate *f, uint32_t r,
+                      const symline_i_fcol *col, uint32_t gmax, uint8_t *out)
+{
+    const uint8_t *row = img->data + (size_t)sample_row(f, img->height, r) * img->stride;
+    uint32_t c, x0 = 0u;
+    for (c = 0; c < f->nc; c++, x0 += f->sx, out += 2) {
+        if (col == NULL || col[c].gap <= gmax) {
+            uint32_t m, t;
+            cell_stats(f, row + x0, img->width - x0, &m, &t);
+            out[0] = (uint8_t)m;
+            out[1] = (uint8_t)t;
+        }
+    }
 }
 
 /* Smallest bin value v with at least half the count at or below it. */
@@ -203,24 +220,20 @@ static uint32_t hist_median(const uint32_t *hist, uint32_t total)
 SL_NOINLINE static void carpet_model(const symline_image *img, const symline_field_config *fc,
                                      symline_i_fstate *f, symline_field_boundary *out)
 {
-    uint32_t r, c, i, total = 0u, tb;
-    uint8_t *keep = f->band;
+    uint32_t r, i, total = 0u, tb;
     for (i = 0; i < SL_FIELD_BINS; i++) {
         f->hm[i] = 0u;
         f->ht[i] = 0u;
     }
     for (r = 0; r < f->nb; r++) {
-        const uint8_t *row = img->data + (size_t)sample_row(f, img->height, r) * img->stride;
-        for (c = 0; c < f->nc; c++) {
-            uint32_t m, t;
-            cell_stats(f, row, img->width, c, &m, &t);
-            *keep++ = (uint8_t)m; /* kept for the column scan */
-            *keep++ = (uint8_t)t;
-            if (m >= SL_FIELD_BLACK) {
-                f->hm[m >> 2]++;
-                f->ht[t < 2u * SL_FIELD_BINS ? t >> 1 : SL_FIELD_BINS - 1u]++;
-                total++;
-            }
+        row_cells(img, f, r, NULL, 0u, f->band + 2u * (size_t)r * f->nc); /* kept for the scan */
+    }
+    for (i = 0; i < f->nb * f->nc; i++) {
+        const uint32_t m = f->band[2u * (size_t)i], t = f->band[2u * (size_t)i + 1u];
+        if (m >= SL_FIELD_BLACK) {
+            f->hm[m >> 2]++;
+            f->ht[t < 2u * SL_FIELD_BINS ? t >> 1 : SL_FIELD_BINS - 1u]++;
+            total++;
         }
     }
     if (total == 0u) {
@@ -239,7 +252,8 @@ SL_NOINLINE static void carpet_model(const symline_image *img, const symline_fie
     out->carpet_tex = (uint8_t)(tb > 255u ? 255u : tb);
 }
 
-/* Upward scan of every column: the best-scoring run of carpet. */
+/* Upward scan of every column: the best-scoring run of carpet; col[].top
+ * becomes its top row in pixels (the frame's height: no carpet). */
 SL_NOINLINE static void scan_columns(const symline_image *img, const symline_field_config *fc,
                                      const symline_i_fstate *f, symline_i_fcol *col)
 {
@@ -255,21 +269,19 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
         col[c].gap = 0u;
     }
     for (r = 0; r < f->nr; r++) {
-        const uint8_t *row = img->data + (size_t)sample_row(f, img->height, r) * img->stride;
-        for (c = 0; c < f->nc; c++) {
-            uint32_t m, t;
+        /* The band's cells were kept; above it, each row's into the band's first row. */
+        const uint8_t *cells = f->band + 2u * (size_t)r * f->nc;
+        if (r >= f->nb) {
+            cells = f->band;
+            row_cells(img, f, r, col, gmax, f->band);
+        }
+        for (c = 0; c < f->nc; c++, cells += 2) {
+            const uint32_t m = cells[0], t = cells[1];
             int32_t v, dm;
             int tex_ok;
             symline_i_fcol *q = &col[c];
             if (q->gap > gmax) {
                 continue; /* behind a barrier: this column is done */
-            }
-            if (r < f->nb) {
-                const size_t at = 2u * ((size_t)r * f->nc + c);
-                m = f->band[at];
-                t = f->band[at + 1u];
-            } else {
-                cell_stats(f, row, img->width, c, &m, &t);
             }
             tex_ok = t >= f->tex_lo && t <= f->tex_hi;
             dm = (int32_t)(m << 4) - q->ema;
@@ -301,6 +313,11 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
                 q->top = (int32_t)r;
             }
         }
+    }
+    for (c = 0; c < f->nc; c++) {
+        /* Top row of the run's highest cell, pixels; no carpet: the bottom. */
+        const int32_t y = (int32_t)img->height - (col[c].top + 1) * (int32_t)f->s;
+        col[c].top = col[c].top < 0 ? (int32_t)img->height : (y < 0 ? 0 : y);
     }
 }
 
@@ -427,11 +444,13 @@ SL_NOINLINE static void hull(const symline_image *img, const symline_i_fstate *f
          * robot or a person standing there holds the last columns down and
          * nothing beyond them can bridge it. The end segments fall toward
          * the edges no steeper than edge_pct % (too high only keeps clutter). */
-        const int64_t l = col[1].best + (int64_t)(col[1].cur - col[0].cur) * edge_pct / 100u;
-        const int64_t r =
-            col[n - 2u].best + (int64_t)(col[n - 1u].cur - col[n - 2u].cur) * edge_pct / 100u;
-        col[0].best = col[0].best > l ? (int32_t)l : col[0].best;
-        col[n - 1u].best = col[n - 1u].best > r ? (int32_t)r : col[n - 1u].best;
+        const int32_t l =
+            col[1].best + (int32_t)((uint32_t)(col[1].cur - col[0].cur) * edge_pct / 100u);
+        const int32_t r =
+            col[n - 2u].best +
+            (int32_t)((uint32_t)(col[n - 1u].cur - col[n - 2u].cur) * edge_pct / 100u);
+        col[0].best = col[0].best > l ? l : col[0].best;
+        col[n - 1u].best = col[n - 1u].best > r ? r : col[n - 1u].best;
     }
     /* Columns without field at the sides: the boundary continues level to
      * the image edges. */
@@ -457,13 +476,10 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
     uint8_t *cur = ws, *const end = ws + ws_size;
     symline_i_fstate *f = (symline_i_fstate *)symline_i_carve(&cur, end, sizeof(symline_i_fstate));
     symline_i_fcol *col;
-    uint32_t c;
     if (f == NULL) {
         return; /* not reached: the workspace size was checked */
     }
     f->s = symline_i_field_cell(img->width, fc);
-    for (f->k = 0u; (1u << f->k) < f->s; f->k++) {
-    }
     f->sx = f->s * fc->col_cells;
     f->nc = (img->width + f->sx - 1u) / f->sx;
     f->nr = (img->height + f->s - 1u) / f->s;
@@ -476,12 +492,6 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
     out->cell = (uint8_t)f->s;
     carpet_model(img, fc, f, out);
     scan_columns(img, fc, f, col);
-    for (c = 0; c < f->nc; c++) {
-        /* Top row of the run's highest cell, pixels; no carpet: the bottom. */
-        const int32_t r = col[c].top;
-        const int64_t y = (int64_t)img->height - ((int64_t)r + 1) * f->s;
-        col[c].top = r < 0 ? (int32_t)img->height : (y < 0 ? 0 : (int32_t)y);
-    }
     support_filter(f, fc->support, col);
     hull(img, f, fc->edge_slope_pct, col, out);
     if (fc->restore_cells != 0u) {
@@ -489,6 +499,7 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
          * slope: every column's own top counts again, but no higher than
          * restore_cells above the robust boundary. */
         const int32_t d = (int32_t)(fc->restore_cells * f->s);
+        uint32_t c;
         for (c = 0; c < f->nc; c++) {
             const int32_t hf = symline_field_y(out, col_x(f, c, img->width));
             int32_t t = col[c].top;
@@ -549,30 +560,53 @@ int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
 void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
                           uint32_t width, uint32_t margin, uint16_t *rows)
 {
-    const uint32_t s = 1u << level;
-    uint32_t x;
+    /* symline_field_y() at every grid column's centre; the centres only move
+     * right, so the chord is found by stepping on from the last one. */
+    const uint32_t s = 1u << level, last = b->count - 1u;
+    uint32_t x, i = 0u;
     for (x = 0; x < w; x++) {
         /* Keep grid row y when its centre y*s + s/2 >= boundary - margin. */
-        const uint32_t xc = x * s + s / 2u < width ? x * s + s / 2u : width - 1u;
-        const int64_t lim = (int64_t)symline_field_y(b, (int32_t)xc) - margin - s / 2u;
-        const int64_t y = lim <= 0 ? 0 : (lim + s - 1u) >> level;
+        const int32_t xc = (int32_t)(x * s + s / 2u < width ? x * s + s / 2u : width - 1u);
+        int32_t y;
+        while (i < last && xc > b->v[i + 1u].x) {
+            i++;
+        }
+        if (xc <= b->v[0].x) {
+            y = b->v[0].y;
+        } else if (i >= last) {
+            y = b->v[last].y;
+        } else {
+            y = chord_y(&b->v[i], &b->v[i + 1u], xc);
+        }
+        y -= (int32_t)(margin + s / 2u);
+        y = y <= 0 ? 0 : (y + (int32_t)s - 1) >> level;
         rows[x] = (uint16_t)(y > 0xFFFF ? 0xFFFF : y);
     }
 }
 
-uint32_t symline_i_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start,
-                              uint32_t h)
+uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *pts,
+                              uint32_t *row_start, uint32_t h)
 {
-    uint32_t y, i = 0u, k = 0u;
+    uint32_t y, i = 0u, k = 0u, lo = 0xFFFFu, hi = 0u;
+    for (y = 0; y < w; y++) {
+        lo = rows[y] < lo ? rows[y] : lo;
+        hi = rows[y] > hi ? rows[y] : hi;
+    }
     for (y = 0; y < h; y++) {
         const uint32_t end = row_start[y + 1u];
+        if (y >= hi && k == i) {
+            return row_start[h]; /* the rest is field and stays where it is */
+        }
         row_start[y] = k;
+        if (y < lo) {
+            i = end; /* the whole row lies above the field */
+        }
         for (; i < end; i++) {
             if (pts[i].y >= rows[pts[i].x]) {
-                pts[k].x = pts[i].x; /* field by field: no memcpy call */
-                pts[k].y = pts[i].y;
-                pts[k].fx = pts[i].fx;
-                pts[k++].fy = pts[i].fy;
+                /* Field by field (no memcpy call); the offsets fx, fy are
+                 * not set before the sub-pixel stage. */
+                pts[k].x = pts[i].x;
+                pts[k++].y = pts[i].y;
             }
         }
     }

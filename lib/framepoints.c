@@ -62,7 +62,7 @@ SL_NOINLINE static uint32_t collect_all(const symline_image *img, const symline_
             }
             symline_i_pass_setup(p, cfg, symline_i_axis_of(cfg, a), l, img->width, img->height);
             if (cfg->adaptive) {
-                symline_i_linefilter_adapt(&p->filter, cfg, stats);
+                symline_i_linefilter_adapt(&p->filter, cfg, stats, l);
             }
             row_start =
                 (uint32_t *)symline_i_carve(&cur, end, ((size_t)p->h + 1u) * sizeof(uint32_t));

@@ -34,21 +34,29 @@ void symline_i_linefilter_setup(symline_i_linefilter *f, const symline_config *c
     f->side_max = 255u;
 }
 
-/* Summed per row so a row's sums stay in 32 bits. */
+/* Column by column: the column's first field row is looked up once, not
+ * once per sample. */
 SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const uint16_t *top,
                                                uint32_t *hist, symline_i_frame_stats *st)
 {
-    uint32_t x, y, i, n = 0u, half, acc, med, mad;
+    const size_t step = (size_t)img->stride * SL_STATS_STEP;
+    uint32_t x, i, n = 0u, half, acc, med, mad;
     for (i = 0; i < 256u; i++) {
         hist[i] = 0u;
     }
-    for (y = 0; y < img->height; y += SL_STATS_STEP) {
-        const uint8_t *row = img->data + (size_t)y * img->stride;
-        for (x = 0; x < img->width; x += SL_STATS_STEP) {
-            if (top == NULL || y >= top[x]) {
-                hist[row[x]]++;
-                n++;
-            }
+    for (x = 0; x < img->width; x += SL_STATS_STEP) {
+        /* The first sampled row at or below top[x], and the samples from it down. */
+        const uint32_t y0 =
+            top == NULL ? 0u : ((uint32_t)top[x] + SL_STATS_STEP - 1u) & ~(SL_STATS_STEP - 1u);
+        uint32_t cnt;
+        size_t at;
+        if (y0 >= img->height) {
+            continue;
+        }
+        cnt = (img->height - y0 + SL_STATS_STEP - 1u) / SL_STATS_STEP;
+        n += cnt;
+        for (at = (size_t)y0 * img->stride + x; cnt > 0u; cnt--, at += step) {
+            hist[img->data[at]]++;
         }
     }
     st->mean = 0u;
@@ -76,9 +84,14 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
 #define SL_SIGMA10_Q4_DIV 160
 /* side_sigma10 of this much or more leaves the sides alone. */
 #define SL_SIDE_SIGMA10_OFF 100
+/* At full resolution the sides are sampled radius + 1 px from the centre,
+ * inside a bright line's blur; at 2x and coarser 8 px and more away. A
+ * saturated line on bright carpet lifts them over the limit there: one sigma
+ * more at level 0 (docs/detector.md, the overexposed synthetic scenes). */
+#define SL_SIDE_FULL_RES_SIGMA10 10
 
 void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *cfg,
-                                const symline_i_frame_stats *st)
+                                const symline_i_frame_stats *st, uint32_t level)
 {
     const uint32_t mean = st->mean, sigma_q4 = st->sigma_q4;
     const int64_t t = (int64_t)mean + (int64_t)cfg->bright_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
@@ -93,8 +106,8 @@ void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *c
         f->ridge_min = ridge;
     }
     if (cfg->side_sigma10 < SL_SIDE_SIGMA10_OFF) {
-        const int64_t sm =
-            (int64_t)mean + (int64_t)cfg->side_sigma10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
+        const int32_t s10 = cfg->side_sigma10 + (level == 0u ? SL_SIDE_FULL_RES_SIGMA10 : 0);
+        const int64_t sm = (int64_t)mean + (int64_t)s10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
         f->side_max = sm < 0 ? 0u : (sm > 255 ? 255u : (uint32_t)sm);
     }
 }

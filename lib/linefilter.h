@@ -42,10 +42,11 @@ void symline_i_linefilter_setup(symline_i_linefilter *f, const symline_config *c
 void symline_i_frame_stats_measure(const symline_image *img, const uint16_t *top, uint32_t *hist,
                                    symline_i_frame_stats *st);
 
-/* The adaptive thresholds (cfg->adaptive) folded into f: each only raises
- * the configured one (side_max: replaces it unless side_sigma10 is 100). */
+/* The adaptive thresholds (cfg->adaptive) for a pass at `level` folded into
+ * f: each only raises the configured one (side_max: replaces it unless
+ * side_sigma10 is 100; one sigma higher at level 0). */
 void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *cfg,
-                                const symline_i_frame_stats *st);
+                                const symline_i_frame_stats *st, uint32_t level);
 
 /* The gray-value part of the line filter for an S point with centre value c
  * and values lo, hi at k pixels before and after it across the line (clamped

@@ -204,7 +204,13 @@ void symline_i_extent_segment(const symline_i_extent *e, const symline_i_uvline 
     s->first = e->used;
     s->count = cnt;
     s->kind = SYMLINE_KIND_LINE;
-    s->axis = (uint8_t)(ft->u_is_y ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL);
+    /* The axis as muff.h defines it, from the end points: a fit parametrised
+     * along y can still end up flatter than 45 degrees. */
+    {
+        const int32_t dx = s->x1 - s->x0, dy = s->y1 - s->y0;
+        const uint32_t adx = (uint32_t)(dx < 0 ? -dx : dx), ady = (uint32_t)(dy < 0 ? -dy : dy);
+        s->axis = (uint8_t)(adx >= ady ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL);
+    }
     s->level = 0u;
     s->merged = false;
 }

@@ -218,9 +218,12 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, const symline_i_pass
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         /* Above the field: nothing to trace. */
         SL_STAGE(FIELD);
-        symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
-                             d->field_rows);
-        *n = symline_i_field_drop(d->field_rows, point_at(d->r, d->npts), row_start, p->h);
+        if (p->axis == SYMLINE_AXIS_HORIZONTAL || d->cfg->axes != SYMLINE_AXES_BOTH) {
+            /* The rows depend on the level alone: once per level (horizontal first). */
+            symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
+                                 d->field_rows);
+        }
+        *n = symline_i_field_drop(d->field_rows, p->w, point_at(d->r, d->npts), row_start, p->h);
     }
     return st;
 }
@@ -240,6 +243,7 @@ SL_NOINLINE static const symline_i_segindex *index_earlier(const symline_i_run *
     symline_point *spare = used < d->r->point_cap ? d->r->points + (size_t)used : NULL;
     const size_t spare_bytes =
         spare != NULL ? (size_t)(d->r->point_cap - used) * sizeof(symline_point) : 0u;
+    SL_STAGE(SEGMENTS); /* it serves the overlap test with earlier passes */
     if (ix != NULL) {
         symline_i_segindex_build(ix, ws, (size_t)(end - ws), spare, spare_bytes, d->img->width,
                                  d->img->height, d->r, d->prev_seg,

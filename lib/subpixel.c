@@ -71,43 +71,56 @@ static uint32_t energy_at(const symline_i_across *a, int32_t k)
     return e;
 }
 
-/* E (docs/algorithm.md) at i-1, i and i+1. Inside the grid (the common case) in
- * one sweep out from i that reads each gray value once (2m+3 of them, no
- * buffer): l0, l1, l2 hold the values at i-(j-1), i-j, i-(j+1), r0, r1, r2
- * those at i+(j-1), i+j, i+(j+1). Near the border term by term. */
+/* E (docs/algorithm.md) at i-1, i and i+1 inside the grid, in one sweep out
+ * from i that reads each gray value once (2m+3 of them, no buffer): l0, l1,
+ * l2 hold the values at i-(j-1), i-j, i-(j+1), r0, r1, r2 those at i+(j-1),
+ * i+j, i+(j+1). The weights m+1-j come from running sums: term j is added
+ * once for every t = j..m. Inline with a constant level 0 (most points, one
+ * byte per gray value) and with the pass's level. */
+static inline void sweep(const symline_i_across *a, uint32_t level, uint32_t e[3])
+{
+    /* Pointers walk out from i: pl to i-(j+1), pr to i+(j+1). */
+    const uint8_t *pl = a->at - a->step, *pr = a->at + a->step;
+    uint32_t l0 = grid_px(a->at, a->stride, level), l1 = grid_px(pl, a->stride, level);
+    uint32_t r0 = l0, r1 = grid_px(pr, a->stride, level), j;
+    uint32_t s0 = 0u, s1 = 0u, s2 = 0u, e0 = 0u, e1 = 0u, e2 = 0u;
+    for (j = a->m; j > 0u; j--) {
+        uint32_t l2, r2;
+        int32_t d0, d1, d2;
+        pl -= a->step;
+        pr += a->step;
+        l2 = grid_px(pl, a->stride, level);
+        r2 = grid_px(pr, a->stride, level);
+        d0 = (int32_t)l2 - (int32_t)r0; /* centre i-1: i-1-j, i-1+j */
+        d1 = (int32_t)l1 - (int32_t)r1; /* centre i:   i-j,   i+j */
+        d2 = (int32_t)l0 - (int32_t)r2; /* centre i+1: i+1-j, i+1+j */
+        s0 += (uint32_t)(d0 * d0);
+        s1 += (uint32_t)(d1 * d1);
+        s2 += (uint32_t)(d2 * d2);
+        e0 += s0;
+        e1 += s1;
+        e2 += s2;
+        l0 = l1;
+        l1 = l2;
+        r0 = r1;
+        r1 = r2;
+    }
+    e[0] = e0;
+    e[1] = e1;
+    e[2] = e2;
+}
+
+/* E at i-1, i and i+1; near the border term by term. */
 static void energies3(const symline_i_across *a, uint32_t e[3])
 {
     if (a->i < a->m + 1u || a->i + a->m + 1u >= a->n) {
         e[0] = energy_at(a, -1);
         e[1] = energy_at(a, 0);
         e[2] = energy_at(a, 1);
-        return;
-    }
-    {
-        /* Pointers walk out from i: pl to i-(j+1), pr to i+(j+1). */
-        const uint8_t *pl = a->at - a->step, *pr = a->at + a->step;
-        uint32_t l0 = grid_px(a->at, a->stride, a->level), l1 = grid_px(pl, a->stride, a->level);
-        uint32_t r0 = l0, r1 = grid_px(pr, a->stride, a->level), j;
-        e[0] = e[1] = e[2] = 0u;
-        for (j = 1u; j <= a->m; j++) {
-            uint32_t l2, r2, w;
-            int32_t d0, d1, d2;
-            pl -= a->step;
-            pr += a->step;
-            l2 = grid_px(pl, a->stride, a->level);
-            r2 = grid_px(pr, a->stride, a->level);
-            w = a->m + 1u - j;
-            d0 = (int32_t)l2 - (int32_t)r0; /* centre i-1: i-1-j, i-1+j */
-            d1 = (int32_t)l1 - (int32_t)r1; /* centre i:   i-j,   i+j */
-            d2 = (int32_t)l0 - (int32_t)r2; /* centre i+1: i+1-j, i+1+j */
-            e[0] += w * (uint32_t)(d0 * d0);
-            e[1] += w * (uint32_t)(d1 * d1);
-            e[2] += w * (uint32_t)(d2 * d2);
-            l0 = l1;
-            l1 = l2;
-            r0 = r1;
-            r1 = r2;
-        }
+    } else if (a->level == 0u) {
+        sweep(a, 0u, e);
+    } else {
+        sweep(a, a->level, e);
     }
 }
 

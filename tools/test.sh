@@ -9,7 +9,7 @@
 #   5. 64-bit Arm Linux: cross build, the cmocka tests (golden ones included) under
 #      qemu-user (tools/aarch64/check.sh).
 #   6. fuzzing: every libFuzzer target of tests/fuzz for FUZZ_SECONDS each
-#      (default 45 s; five targets, about 5 minutes with the build).
+#      (default 20 s; eleven targets, about 4 minutes plus the build).
 # Installs what it needs (apt-get, as root) when missing. Every step runs even
 # when an earlier one failed; the exit status is non-zero if any failed. A step
 # that cannot run here (exit status 77) is reported as SKIPPED, not as passed.
@@ -69,8 +69,8 @@ if [ "$mode" != "--host" ]; then
         record $rc "aarch64 tests under qemu-user"
     fi
 
-    step "6. fuzzing (libFuzzer + ASan + UBSan, ${FUZZ_SECONDS:-45} s per target)"
-    sh tests/fuzz/run.sh "${FUZZ_SECONDS:-45}"
+    step "6. fuzzing (libFuzzer + ASan + UBSan, ${FUZZ_SECONDS:-20} s per target)"
+    sh tests/fuzz/run.sh "${FUZZ_SECONDS:-20}"
     rc=$?
     if [ $rc -eq 77 ]; then
         skipped="$skipped

@@ -217,16 +217,6 @@ static int apply_named(detopts *d, const char *name, const char *value, char *er
     return 1;
 }
 
-int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t errlen)
-{
-    const char *value = *i + 1 < argc ? argv[*i + 1] : NULL;
-    const int rc = apply_named(d, argv[*i], value, err, errlen);
-    if (rc == 1) {
-        (*i)++;
-    }
-    return rc;
-}
-
 /* The option names getopt_long sees, without "--": the two word options, then the numeric table. */
 static const char *long_name(size_t k)
 {

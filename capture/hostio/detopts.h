@@ -28,14 +28,6 @@ int detopts_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out);
 void detopts_init(detopts *d);
 
 /*
- * For argument loops of their own (the benchmark): tries argv[*i] (and its
- * value argv[*i+1]) as a detector option. Returns 1 when it was one (*i then
- * advanced to its value), 0 when not, -1 on a missing or bad value (a message
- * in err).
- */
-int detopts_parse(detopts *d, int argc, char **argv, int *i, char *err, size_t errlen);
-
-/*
  * The detector options for getopt_long: appends one `struct option` per detector
  * option to out (at most cap; each takes a value, val = DETOPTS_VAL + k) and
  * returns how many it wrote.

@@ -14,6 +14,9 @@
  *   capture-check json FILE N          FILE holds N lines, each a well-formed JSON
  *                                      object with the per-frame keys, frame
  *                                      numbers 0..N-1 and rising sequence numbers
+ *   capture-check stages FILE N STAGE... the same, and each line's detect_stages_ms
+ *                                      holds exactly these stages, whose times add
+ *                                      up to no more than stages_ms.detect
  *
  * Exit 0 when the check holds, 1 (with a reason on stderr) when not.
  */
@@ -151,7 +154,8 @@ static int bars(const char *path, const char *ref, const char *expect)
     return rc;
 }
 
-static int json(const char *path, const char *count)
+/* names: NULL, or the detector's stages each line must split its detect time into (--profile). */
+static int json(const char *path, const char *count, const char *const *names, size_t nnames)
 {
     char line[1 << 16];
     long want = strtol(count, NULL, 10), n = 0;
@@ -163,6 +167,9 @@ static int json(const char *path, const char *count)
     while (fgets(line, sizeof line, f) != NULL) {
         json_frame_info info;
         const char *why = json_check_frame_line(line, &info);
+        if (why == NULL && names != NULL) {
+            why = json_check_stages(line, names, nnames);
+        }
         if (why != NULL) {
             fprintf(stderr, "capture-check: %s line %ld: %s\n", path, n + 1, why);
             fclose(f);
@@ -208,8 +215,11 @@ int main(int argc, char **argv)
         return bars(argv[2], ref, expect);
     }
     if (argc == 4 && strcmp(argv[1], "json") == 0) {
-        return json(argv[2], argv[3]);
+        return json(argv[2], argv[3], NULL, 0);
     }
-    fputs("usage: capture-check press DEVICE NAME | set DEVICE NAME VALUE | bars PGM [REF.pgm] [=Y0,...,Y7] | json FILE N\n", stderr);
+    if (argc >= 5 && strcmp(argv[1], "stages") == 0) {
+        return json(argv[2], argv[3], (const char *const *)argv + 4, (size_t)argc - 4);
+    }
+    fputs("usage: capture-check press DEVICE NAME | set DEVICE NAME VALUE | bars PGM [REF.pgm] [=Y0,...,Y7] | json FILE N | stages FILE N STAGE...\n", stderr);
     return 2;
 }

@@ -120,6 +120,13 @@ granted() {
     grep -q " YUYV 1280x720 bytesperline 2560, 10/1 fps" /tmp/g.err && capture-check json /tmp/g.json 3
 }
 check size-and-rate granted
+# --profile on a live camera: each record splits its detect time by the detector's stages.
+profiled() {
+    cap --device /dev/video0 --format YUYV --frames 3 --profile >/tmp/p.json 2>/tmp/p.err
+    rc=$?; cat /tmp/p.err; [ $rc -eq 0 ] && grep -q 'detect stages, mean ms per frame: setup=' /tmp/p.err &&
+        capture-check stages /tmp/p.json 3 setup field stats grid operator extrema filter trace segments subpixel merge curvejoin
+}
+check profile profiled
 # A size the webcam input does not offer: the driver's nearest size is used,
 # reported, and matches the frames' own size; the buffer count is honoured.
 odd_size() {

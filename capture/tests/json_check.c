@@ -240,3 +240,28 @@ const char *json_check_frame_line(const char *line, json_frame_info *info)
         p.s++;
     }
 }
+
+const char *json_check_stages(const char *line, const char *const *names, size_t n)
+{
+    const char *stages = member(line, "detect_stages_ms"), *times = member(line, "stages_ms"), *v;
+    double sum = 0.0, detect;
+    size_t i, keys = 0;
+    if (stages == NULL || *stages != '{') return "detect_stages_ms object missing";
+    if (times == NULL || *times != '{' || !is_number(v = member(times, "detect"))) return "stages_ms.detect missing";
+    detect = strtod(v, NULL);
+    for (i = 0; i < n; i++) {
+        double t;
+        v = member(stages, names[i]);
+        if (!is_number(v)) return "a detector stage is missing from detect_stages_ms";
+        t = strtod(v, NULL);
+        if (t < 0.0) return "a negative stage time";
+        sum += t;
+    }
+    for (v = stages; *v != '}'; v++) {
+        keys += *v == ':'; /* the values are numbers: every colon is a key's */
+    }
+    if (keys != n) return "detect_stages_ms holds other keys than the detector's stages";
+    /* Each figure is rounded to 0.001 ms. */
+    if (sum > detect + 0.0005 * (double)(n + 1)) return "the stage times add up to more than the detect time";
+    return NULL;
+}

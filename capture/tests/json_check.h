@@ -20,6 +20,14 @@ typedef struct json_frame_info {
  */
 const char *json_check_frame_line(const char *line, json_frame_info *info);
 
+/*
+ * Checks a --profile line (already accepted by json_check_frame_line): the
+ * object detect_stages_ms holds exactly the n stage names, each a time >= 0,
+ * and together no more than stages_ms.detect. NULL when it holds.
+ */
+#include <stddef.h>
+const char *json_check_stages(const char *line, const char *const *names, size_t n);
+
 /* Checks that text is exactly one well-formed JSON value (surrounding white space allowed). */
 const char *json_check_value(const char *text);
 

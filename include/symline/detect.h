@@ -127,7 +127,9 @@ typedef struct symline_config {
     int32_t side_sigma10;  /* adaptive, contrast filter: both sides of the ridge
                               must stay at or below mean + side_sigma10/10 *
                               sigma (a line lies on the darker carpet, not on a
-                              bright wall), -100..100; 100 = off; default 30 */
+                              bright wall), one sigma more at full resolution
+                              (the sides lie in a bright line's blur there),
+                              -100..100; 100 = off; default 30 */
     uint32_t a_distance;   /* paper filter: largest distance (px, at the pass's
                               scale) of the A point across the line,
                               1..SYMLINE_DETECT_MAX_A_DISTANCE (32);

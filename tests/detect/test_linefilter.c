@@ -138,16 +138,27 @@ static void statistics_and_adaptive_thresholds(void **state)
     st.sigma_q4 = 640u;
     symline_config_default(&cfg);
     symline_i_linefilter_setup(&f, &cfg);
-    symline_i_linefilter_adapt(&f, &cfg, &st);
+    symline_i_linefilter_adapt(&f, &cfg, &st, 1u);
     assert_int_equal(f.min_gray, 100); /* mean + 0 sigma */
     assert_int_equal(f.ridge_min, 36); /* 0.9 sigma */
     assert_int_equal(f.side_max, 220); /* mean + 3.0 sigma */
+    /* Full resolution: the sides one sigma higher (they lie in a bright
+     * line's blur); the other thresholds as at coarser scales. */
+    st.sigma_q4 = 320u;
+    symline_i_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_adapt(&f, &cfg, &st, 1u);
+    assert_int_equal(f.side_max, 160); /* mean + 3.0 sigma */
+    symline_i_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_adapt(&f, &cfg, &st, 0u);
+    assert_int_equal(f.side_max, 180); /* mean + 4.0 sigma */
+    assert_int_equal(f.ridge_min, 18); /* 0.9 sigma */
+    st.sigma_q4 = 640u;
     /* Configured thresholds above the adaptive ones stay; side_sigma10 100 is off. */
     cfg.illumination = 150u;
     cfg.contrast_min = 120u;
     cfg.side_sigma10 = 100;
     symline_i_linefilter_setup(&f, &cfg);
-    symline_i_linefilter_adapt(&f, &cfg, &st);
+    symline_i_linefilter_adapt(&f, &cfg, &st, 0u);
     assert_int_equal(f.min_gray, 150);
     assert_int_equal(f.ridge_min, 120);
     assert_int_equal(f.side_max, 255);
@@ -156,7 +167,7 @@ static void statistics_and_adaptive_thresholds(void **state)
     cfg.illumination = 0u;
     cfg.side_sigma10 = 99;
     symline_i_linefilter_setup(&f, &cfg);
-    symline_i_linefilter_adapt(&f, &cfg, &st);
+    symline_i_linefilter_adapt(&f, &cfg, &st, 0u);
     assert_int_equal(f.min_gray, 0);
     assert_int_equal(f.side_max, 255);
 }

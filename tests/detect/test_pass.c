@@ -81,7 +81,7 @@ static void one_pass(void **state)
     d.r = &r;
     symline_i_frame_stats_measure(&img, NULL, hist, &d.stats);
     symline_i_pass_setup(&p, &cfg, SYMLINE_AXIS_HORIZONTAL, 0, W, H);
-    symline_i_linefilter_adapt(&p.filter, &cfg, &d.stats);
+    symline_i_linefilter_adapt(&p.filter, &cfg, &d.stats, 0u);
     ws = (uint8_t *)malloc(symline_i_pass_ws_size(&p, W, H));
     assert_int_equal(symline_i_pass_run(&d, &p, ws, ws + symline_i_pass_ws_size(&p, W, H)),
                      SYMLINE_OK);

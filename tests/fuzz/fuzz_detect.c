@@ -2,97 +2,45 @@
 /*
  * Fuzz target: symline_detect() with fuzzer-chosen geometry, every
  * configuration field (its default, inside its range, just outside it, or
- * any 32-bit value), workspace size and output capacities (exact, one short,
- * zero, NULL). Checks: no read past the image, no write past the workspace
- * or the outputs (guard bytes), nothing changed in the result on an error,
- * and a consistent result on success (counts within the capacities, every
- * segment's points stored and inside the frame).
+ * any 32-bit value; the field boundary's mode, margin and settings too),
+ * workspace size and output capacities (exact, one short, zero, NULL), and
+ * symline_config_check() and symline_image_check() on the same arguments.
+ * Checks: no read past the image, no write past the workspace or the outputs
+ * (guard bytes), a known status, nothing changed in the result on an error,
+ * symline_config_check() naming a culprit exactly when symline_detect()
+ * reports ERR_CONFIG, and a consistent result on success (counts within the
+ * capacities, points_needed within the point capacity when not truncated,
+ * every segment's points stored and inside the frame, the field boundary a
+ * polyline across the frame).
  */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "fuzz_util.h"
+#include "fuzz_lib.h"
 #include "symline/detect.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-/* A field with documented range [lo, hi]: default, inside, just outside, anything. */
-static uint32_t pick_field(fz_in *in, uint32_t def, int64_t lo, int64_t hi)
-{
-    switch (fz_u8(in) % 8u) {
-    case 0:
-    case 1:
-    case 2: return def;
-    case 3: return (uint32_t)(lo + (int64_t)(fz_u32(in) % (uint64_t)(hi - lo + 1)));
-    case 4: return (uint32_t)(hi + 1);
-    case 5: return (uint32_t)(lo - 1);
-    case 6: return (uint32_t)(fz_u8(in) & 1u ? lo : hi);
-    default: return fz_u32(in);
-    }
-}
-
-static uint32_t pick_dim(fz_in *in)
-{
-    const uint32_t v = fz_u8(in);
-    if (v == 0u) {
-        return 0u;
-    }
-    if (v == 255u) {
-        return 65536u;
-    }
-    return 1u + v % 96u;
-}
-
-static int result_equal(const symline_result *a, const symline_result *b)
-{
-    return a->segments == b->segments && a->segment_cap == b->segment_cap &&
-           a->segment_count == b->segment_count && a->points == b->points &&
-           a->point_cap == b->point_cap && a->point_count == b->point_count &&
-           a->truncated == b->truncated;
-}
-
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = {data, size};
-    symline_config cfg, def;
+    symline_config cfg;
     symline_image img;
     symline_result res, before;
-    uint32_t w = pick_dim(&in), h = pick_dim(&in), stride, i;
+    uint32_t w = fz_dim(&in), h = fz_dim(&in), stride, i;
     const uint32_t nulls = fz_u8(&in);
     size_t img_len, wsq, wsn, seg_bytes, pt_bytes;
     uint8_t *px, *ws, *segs, *pts;
-    symline_status st;
+    symline_status st, cst;
+    symline_config_field bad = SYMLINE_CFG_NONE;
+    uint32_t field_sel;
 
     stride = w + (fz_u8(&in) % 4u == 0u ? fz_u8(&in) % 9u : 0u);
     if (fz_u8(&in) % 16u == 0u && w > 0u) {
         stride = w - 1u; /* ERR_STRIDE */
     }
-    symline_config_default(&def);
-    cfg = def;
-    cfg.axes = (symline_axes)pick_field(&in, (uint32_t)def.axes, 0, 2);
-    cfg.radius = pick_field(&in, def.radius, 1, 32);
-    cfg.levels = pick_field(&in, def.levels, 0, 5);
-    cfg.filter = (symline_filter)pick_field(&in, (uint32_t)def.filter, 0, 1);
-    cfg.illumination = pick_field(&in, def.illumination, 0, 255);
-    cfg.adaptive = pick_field(&in, def.adaptive, 0, 1);
-    cfg.bright_sigma10 = (int32_t)pick_field(&in, (uint32_t)def.bright_sigma10, -100, 100);
-    cfg.ridge_sigma10 = pick_field(&in, def.ridge_sigma10, 0, 100);
-    cfg.side_sigma10 = (int32_t)pick_field(&in, (uint32_t)def.side_sigma10, -100, 100);
-    cfg.a_distance = pick_field(&in, def.a_distance, 0, 32);
-    cfg.contrast_pct = pick_field(&in, def.contrast_pct, 0, 100);
-    cfg.contrast_min = pick_field(&in, def.contrast_min, 0, 255);
-    cfg.contrast_asym_pct = pick_field(&in, def.contrast_asym_pct, 0, 1000);
-    cfg.min_length = pick_field(&in, def.min_length, 0, 65535);
-    cfg.curve_dev_q8 = pick_field(&in, def.curve_dev_q8, 0, 65535 << 8);
-    cfg.curve_bend_q8 = pick_field(&in, def.curve_bend_q8, 0, 65535 << 8);
-    cfg.merge_gap = pick_field(&in, def.merge_gap, 0, 65535);
-    cfg.merge_dev_q8 = pick_field(&in, def.merge_dev_q8, 0, 65535 << 8);
-    if (fz_u8(&in) % 4u != 0u) {
-        /* Mostly small line lengths, so that short fuzzed frames give segments. */
-        cfg.min_length = fz_u8(&in) % 16u;
-    }
-
+    fz_detect_config(&in, &cfg);
     wsq = symline_detect_workspace_size(w, h, &cfg);
     wsn = fz_size(&in, wsq > 0u ? wsq : 256u);
     memset(&res, 0, sizeof res);
@@ -106,14 +54,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     pt_bytes = (size_t)res.point_cap * sizeof(symline_point);
     segs = fz_buf(seg_bytes, 0x5A);
     pts = fz_buf(pt_bytes, 0x5A);
-    ws = fz_buf(wsn, 0x33);
     /* NULL arrays are allowed with a capacity of 0 only. */
-    res.segments = ((nulls & 1u) || (res.segment_cap == 0u && (nulls & 8u))) ? NULL : (symline_segment *)(void *)segs;
-    res.points = ((nulls & 2u) || (res.point_cap == 0u && (nulls & 16u))) ? NULL : (symline_point *)(void *)pts;
+    res.segments = ((nulls & 1u) || (res.segment_cap == 0u && (nulls & 8u)))
+                       ? NULL
+                       : (symline_segment *)(void *)segs;
+    res.points = ((nulls & 2u) || (res.point_cap == 0u && (nulls & 16u)))
+                     ? NULL
+                     : (symline_point *)(void *)pts;
     res.segment_count = 0xDEADu;
     res.point_count = 0xBEEFu;
     res.truncated = true;
-    before = res;
+    memcpy(&before, &res, sizeof res);
 
     if (w > 65535u && h > 1u) {
         h = 1u; /* invalid anyway; keep the pixels small */
@@ -124,27 +75,74 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     img.stride = stride;
     img.data = (nulls & 4u) ? NULL : px;
 
+    /* The field boundary's mode, margin and settings: from the bytes after the
+     * ones read so far (the pixels repeat them), mostly the defaults. */
+    field_sel = fz_u8(&in);
+    if (field_sel % 4u == 3u) {
+        cfg.field_boundary = (symline_field_mode)fz_pick(&in, (uint32_t)cfg.field_boundary, 0, 2);
+        cfg.field_margin = fz_pick(&in, cfg.field_margin, 0, 65535);
+        fz_field_config(&in, &cfg.field);
+        wsq = symline_detect_workspace_size(w, h, &cfg);
+        wsn = fz_size(&in, wsq > 0u ? wsq : 256u);
+    }
+    ws = fz_buf(wsn, 0x33);
+
+    /* symline_config_check names a culprit exactly when it reports an error. */
+    cst = symline_config_check(&cfg, (field_sel & 4u) ? NULL : &bad);
+    fz_check_status(cst, "symline_config_check");
+    if ((cst != SYMLINE_OK && cst != SYMLINE_ERR_CONFIG) ||
+        (unsigned)bad > (unsigned)SYMLINE_CFG_FIELD ||
+        ((field_sel & 4u) == 0u && (cst == SYMLINE_OK) != (bad == SYMLINE_CFG_NONE)) ||
+        (!fz_field_config_ok(&cfg.field) && cst == SYMLINE_OK) ||
+        (bad == SYMLINE_CFG_FIELD && fz_field_config_ok(&cfg.field))) {
+        abort();
+    }
+    if (symline_config_check(NULL, &bad) != SYMLINE_ERR_NULL || bad != SYMLINE_CFG_NONE) {
+        abort();
+    }
+    /* The workspace query is 0 exactly for invalid arguments. */
+    if ((cst == SYMLINE_OK && w >= 1u && h >= 1u && w <= 65535u && h <= 65535u) !=
+        (symline_detect_workspace_size(w, h, &cfg) > 0u)) {
+        abort();
+    }
+
     st = symline_detect(&img, (nulls & 32u) ? NULL : &cfg, (nulls & 64u) ? NULL : ws, wsn,
                         (nulls & 128u) ? NULL : &res);
+    fz_check_status(st, "symline_detect");
+    fz_check_status(symline_image_check(&img), "symline_image_check");
+    if ((nulls & (4u | 32u | 64u | 128u)) == 0u && symline_image_check(&img) == SYMLINE_OK &&
+        !(res.segments == NULL && res.segment_cap != 0u) &&
+        !(res.points == NULL && res.point_cap != 0u) &&
+        (st == SYMLINE_ERR_CONFIG) != (cst == SYMLINE_ERR_CONFIG)) {
+        abort(); /* symline_detect and symline_config_check disagree */
+    }
 
     fz_check_guard(segs, seg_bytes, "segments");
     fz_check_guard(pts, pt_bytes, "points");
     fz_check_guard(ws, wsn, "workspace");
     if (st != SYMLINE_OK) {
-        if (!result_equal(&res, &before)) {
+        if (memcmp(&res, &before, sizeof res) != 0) {
             abort(); /* the result struct changed on an error */
         }
         fz_check_untouched(segs, seg_bytes, 0x5A, "segments");
         fz_check_untouched(pts, pt_bytes, 0x5A, "points");
     } else {
-        if (res.segment_count > res.segment_cap || res.point_count > res.point_cap) {
+        if (res.segment_count > res.segment_cap || res.point_count > res.point_cap ||
+            (!res.truncated && res.points_needed > res.point_cap)) {
             abort();
+        }
+        if (cfg.field_boundary == SYMLINE_FIELD_OFF) {
+            if (res.field.count != 0u) {
+                abort();
+            }
+        } else {
+            fz_check_boundary(&res.field, w, h);
         }
         for (i = 0; i < res.segment_count; i++) {
             const symline_segment *s = &res.segments[i];
             uint32_t k;
-            if (s->count > res.point_count || s->first > res.point_count - s->count || s->kind > 1u ||
-                s->axis > 1u || s->level > 5u) {
+            if (s->count > res.point_count || s->first > res.point_count - s->count ||
+                s->kind > 1u || s->axis > 1u || s->level > 5u) {
                 abort();
             }
             for (k = 0; k < s->count; k++) {

@@ -73,7 +73,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_in in = {data, size};
     const uint32_t entry = fz_u8(&in) % 9u;
     uint32_t w = pick_dim(&in), h = pick_dim(&in);
-    const uint32_t nulls = fz_u8(&in); /* bit 0: image/input NULL, bit 1: output NULL, bit 2: ws NULL */
+    const uint32_t nulls =
+        fz_u8(&in); /* bit 0: image/input NULL, bit 1: output NULL, bit 2: ws NULL */
     uint32_t stride, m;
     symline_axis axis;
     symline_image img;
@@ -98,8 +99,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     case 0: { /* one row along the row */
         const size_t n = (size_t)w * 4u;
         uint8_t *E = out_buf(n, (nulls & 2u) != 0u);
-        st = symline_energy_row((nulls & 1u) ? NULL : px, w > 65536u ? 1u : (w <= img_len ? w : 0u), m,
-                                (uint32_t *)(void *)E);
+        st = symline_energy_row((nulls & 1u) ? NULL : px, w > 65536u ? 1u : (w <= img_len ? w : 0u),
+                                m, (uint32_t *)(void *)E);
         done_out(E, n, st, "energy_row E");
         break;
     }
@@ -117,7 +118,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             /* Each non-NULL row holds exactly w pixels of the image buffer. */
             const uint32_t y = h > 0u ? i % h : 0u;
             const int hole = (holes >> (i % 32u)) & 1u;
-            rows[i] = (hole || w == 0u || (size_t)y * stride + w > img_len) ? NULL : px + (size_t)y * stride;
+            rows[i] = (hole || w == 0u || (size_t)y * stride + w > img_len)
+                          ? NULL
+                          : px + (size_t)y * stride;
         }
         if (nulls & 1u) {
             rows[span / 2u] = NULL; /* the centre row must not be NULL */
@@ -232,8 +235,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         free(E);
         break;
     }
-    default:
-        break;
+    default: break;
     }
     (void)st;
     free(px);

@@ -35,7 +35,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (r == NULL) {
         return 0;
     }
-    if (y4m_width(r) == 0 || y4m_height(r) == 0 || (uint64_t)y4m_width(r) * y4m_height(r) > (1u << 20)) {
+    if (y4m_width(r) == 0 || y4m_height(r) == 0 ||
+        (uint64_t)y4m_width(r) * y4m_height(r) > (1u << 20)) {
         __builtin_trap();
     }
     /* Twice through the stream: the replay loop rewinds. */

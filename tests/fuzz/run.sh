@@ -1,20 +1,21 @@
 #!/bin/sh
 # SPDX-License-Identifier: Apache-2.0
 # Builds the libFuzzer targets (clang, ASan + UBSan, preset "fuzz") and runs
-# each for SECONDS (default 60), one after the other on one core, starting
+# each for SECONDS (default 20), one after the other on one core, starting
 # from the seed corpus in tests/fuzz/corpus/ (copied: the repository stays
-# clean). Fails on any crash, leak, timeout (10 s per input), out-of-memory
-# (2 GB) or sanitizer report; prints the executions per target.
+# clean), with the dictionary tests/fuzz/NAME.dict when there is one. Fails
+# on any crash, leak, timeout (10 s per input), out-of-memory (2 GB) or
+# sanitizer report; prints the executions per target and in all.
 #   tests/fuzz/run.sh [SECONDS] [TARGET...]
 # Exit status: 0 all ran clean, 1 a finding or a build error, 77 skipped
 # (clang or its fuzzer runtime missing and not installable).
 # Findings are kept in build-fuzz/findings/TARGET/ (reproduce: build-fuzz/fuzz/TARGET FILE).
 case "${1:-}" in -h | --help) sed -n '3,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0"; exit 0 ;; esac
 set -u
-cd "$(dirname "$0")/../.."
-secs=${1:-60}
+cd "$(dirname "$0")/../.." || exit 1
+secs=${1:-20}
 [ $# -gt 0 ] && shift
-targets=${*:-fuzz_pgm fuzz_png fuzz_y4m fuzz_operator fuzz_detect}
+targets=${*:-fuzz_pgm fuzz_png fuzz_jpeg fuzz_y4m fuzz_operator fuzz_detect fuzz_field fuzz_muff fuzz_features fuzz_histogram fuzz_intersections}
 
 have_fuzzer() {
     command -v clang >/dev/null 2>&1 &&
@@ -39,6 +40,8 @@ fi
     echo "tests/fuzz/run.sh: build failed"; cmake --build --preset fuzz --target $targets 2>&1 | tail -20; exit 1; }
 
 failed=""
+total=0
+count=0
 for t in $targets; do
     seeds=tests/fuzz/corpus/${t#fuzz_}
     work=build-fuzz/corpus/$t
@@ -46,7 +49,10 @@ for t in $targets; do
     log=build-fuzz/$t.log
     mkdir -p "$work" "$found"
     [ -d "$seeds" ] && cp -n "$seeds"/* "$work"/ 2>/dev/null
-    build-fuzz/fuzz/$t -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    dict=tests/fuzz/${t#fuzz_}.dict
+    set --
+    if [ -f "$dict" ]; then set -- -dict="$dict"; fi
+    build-fuzz/fuzz/$t "$@" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$found/" "$work" >"$log" 2>&1
     rc=$?
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
@@ -58,7 +64,10 @@ for t in $targets; do
     else
         echo "$t: ${execs:-?} executions in ${secs} s, ${cov:-cov: ?} edges, corpus $(ls "$work" | wc -l) inputs, nothing found"
     fi
+    total=$((total + ${execs:-0}))
+    count=$((count + 1))
 done
+echo "tests/fuzz/run.sh: $count targets, $total executions in all"
 if [ -n "$failed" ]; then
     echo "tests/fuzz/run.sh: findings in:$failed"
     exit 1

@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hostopts.h"
 #include "imgio.h"
 
 static uint32_t isqrt32(uint32_t v)
@@ -44,11 +45,23 @@ int main(int argc, char **argv)
     uint8_t *px;
     char err[512];
     const char *kind;
-    if (argc != 5 || (w = (uint32_t)atoi(argv[2])) == 0u || (h = (uint32_t)atoi(argv[3])) == 0u ||
-        w > 65535u || h > 65535u) {
-        fprintf(stderr, "usage: symline-advframes rings|noise|dashes|checker WIDTH HEIGHT OUT.pgm\n");
-        return 2;
+    long v;
+    int rc = hostopts_plain(argc, argv, "symline-advframes",
+                            "usage: symline-advframes rings|noise|dashes|checker WIDTH HEIGHT OUT.pgm\n"
+                            "Writes an adversarial frame (WIDTH, HEIGHT 1..65535) as PGM.\n",
+                            4);
+    if (rc >= 0) {
+        return rc;
     }
+    argv += optind - 1; /* argv[1..4]: the arguments */
+    if (hostopts_long(argv[2], 1, 65535, &v) != 0) {
+        return hostopts_usage_error("symline-advframes", "symline-advframes", "WIDTH must be 1..65535");
+    }
+    w = (uint32_t)v;
+    if (hostopts_long(argv[3], 1, 65535, &v) != 0) {
+        return hostopts_usage_error("symline-advframes", "symline-advframes", "HEIGHT must be 1..65535");
+    }
+    h = (uint32_t)v;
     kind = argv[1];
     px = (uint8_t *)malloc((size_t)w * h);
     if (px == NULL) {

@@ -40,6 +40,7 @@
 #endif
 
 #include "detopts.h"
+#include "hostopts.h"
 #include "imgio.h"
 #include "symline/detect.h"
 #include "symline/profile.h"
@@ -334,8 +335,24 @@ static void usage(FILE *f)
                "pixel (CPU counters, where readable) and the split by stage.\n");
 }
 
+#define PROG "symline-bench"
+
+enum { OPT_LIST_STAGES = 0x100, OPT_CALLGRIND_STAGE, OPT_REPEAT };
+
+static const struct option own_options[] = {
+    {"help", no_argument, NULL, HOSTOPTS_HELP},
+    {"version", no_argument, NULL, HOSTOPTS_VERSION},
+    {"list-stages", no_argument, NULL, OPT_LIST_STAGES},
+    {"callgrind-stage", required_argument, NULL, OPT_CALLGRIND_STAGE},
+    {"repeat", required_argument, NULL, OPT_REPEAT},
+};
+#define OWN_OPTIONS (sizeof own_options / sizeof own_options[0])
+
 int main(int argc, char **argv)
 {
+    struct option longopts[OWN_OPTIONS + 64];
+    size_t n;
+    int c;
     detopts d;
     char err[128];
     uint32_t repeat = 20u, nsizes = 0u, k;
@@ -348,70 +365,60 @@ int main(int argc, char **argv)
     if (frames == NULL) {
         return 1;
     }
-    for (i = 1; i < argc; i++) {
+    memcpy(longopts, own_options, sizeof own_options);
+    n = OWN_OPTIONS + detopts_longopts(longopts + OWN_OPTIONS, 63);
+    memset(&longopts[n], 0, sizeof longopts[n]);
+    while ((c = hostopts_next(argc, argv, ":h", longopts, PROG, PROG)) != -1) {
         int r;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            free(frames);
-            return 0;
-        }
-        if (strcmp(argv[i], "--list-stages") == 0) {
-            uint32_t k;
+        uint32_t k;
+        switch (c) {
+        case HOSTOPTS_HELP: usage(stdout); free(frames); return 0;
+        case HOSTOPTS_VERSION: hostopts_version(PROG); free(frames); return 0;
+        case OPT_LIST_STAGES:
             for (k = 1; k < SYMLINE_STAGE_COUNT; k++) {
                 printf("%s\n", symline_stage_name((symline_stage)k));
             }
             free(frames);
             return 0;
-        }
-        if (strcmp(argv[i], "--callgrind-stage") == 0 && i + 1 < argc) {
-            uint32_t k;
+        case OPT_CALLGRIND_STAGE:
             for (k = 1; k < SYMLINE_STAGE_COUNT; k++) {
-                if (strcmp(argv[i + 1], symline_stage_name((symline_stage)k)) == 0) {
+                if (strcmp(optarg, symline_stage_name((symline_stage)k)) == 0) {
                     g_cg_stage = (int)k;
                 }
             }
 #if !defined(SYMLINE_HAVE_CALLGRIND)
-            fprintf(stderr, "symline-bench: built without valgrind/callgrind.h\n");
+            fprintf(stderr, PROG ": built without valgrind/callgrind.h\n");
             free(frames);
             return 2;
 #endif
             if (g_cg_stage < 0) {
-                fprintf(stderr, "symline-bench: no stage '%s'\n", argv[i + 1]);
                 free(frames);
-                return 2;
+                return hostopts_usage_error(PROG, PROG, "no stage '%s' (--list-stages)", optarg);
             }
-            i++;
-            continue;
-        }
-        if (strcmp(argv[i], "--repeat") == 0) {
-            if (i + 1 >= argc || detopts_u32(argv[i + 1], 1u, 100000u, &repeat) != 0) {
-                fprintf(stderr, "symline-bench: --repeat needs a number 1..100000\n");
+            break;
+        case OPT_REPEAT:
+            if (detopts_u32(optarg, 1u, 100000u, &repeat) != 0) {
                 free(frames);
-                return 2;
+                return hostopts_usage_error(PROG, PROG, "--repeat needs a number 1..100000");
             }
-            i++;
-            continue;
+            break;
+        default:
+            r = c == HOSTOPTS_ERROR ? 0 : detopts_apply(&d, c, optarg, err, sizeof err);
+            if (r <= 0) {
+                if (r < 0) {
+                    hostopts_usage_error(PROG, PROG, "%s", err);
+                }
+                free(frames);
+                return HOSTOPTS_USAGE;
+            }
         }
-        r = detopts_parse(&d, argc, argv, &i, err, sizeof err);
-        if (r < 0) {
-            fprintf(stderr, "symline-bench: %s\n", err);
-            free(frames);
-            return 2;
-        }
-        if (r > 0) {
-            continue;
-        }
-        if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "symline-bench: unknown option '%s'\n", argv[i]);
-            free(frames);
-            return 2;
-        }
+    }
+    for (i = optind; i < argc; i++) {
         frames[nframes++] = argv[i];
     }
     if (nframes == 0) {
-        usage(stderr);
         free(frames);
-        return 2;
+        return hostopts_usage_error(PROG, PROG, "no FRAME given");
     }
     detopts_finish(&d);
     times = (uint64_t *)malloc((size_t)repeat * (1u + 2u * SYMLINE_STAGE_COUNT) * sizeof *times);

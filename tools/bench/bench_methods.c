@@ -19,6 +19,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "hostopts.h"
 #include "imgio.h"
 #include "symline/detect.h"
 #include "symline/muff.h"
@@ -29,6 +30,8 @@ static double now_ns(void)
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
 }
+
+#define PROG "symline-bench-methods"
 
 int main(int argc, char **argv)
 {
@@ -45,15 +48,25 @@ int main(int argc, char **argv)
     uint32_t nlp = 0u;
     bool cut = false;
     double t0, t1;
-    if (argc != 4 || (strcmp(argv[1], "tracer") != 0 && strcmp(argv[1], "muff") != 0)) {
-        fprintf(stderr, "usage: symline-bench-methods tracer|muff REPEAT IN\n");
-        return 2;
+    long v;
+    r = hostopts_plain(argc, argv, PROG,
+                       "usage: symline-bench-methods tracer|muff REPEAT IN\n"
+                       "Times REPEAT detections of IN by the tracer or the Muff-space finder at\n"
+                       "default settings; prints method, width, height, repeat, ns_per_frame,\n"
+                       "workspace, accumulator, line_points, kept_points, segments.\n",
+                       3);
+    if (r >= 0) {
+        return r;
+    }
+    argv += optind - 1; /* argv[1..3]: the arguments */
+    if (strcmp(argv[1], "tracer") != 0 && strcmp(argv[1], "muff") != 0) {
+        return hostopts_usage_error(PROG, PROG, "the method is tracer or muff");
     }
     muff = strcmp(argv[1], "muff") == 0;
-    rep = atoi(argv[2]);
-    if (rep < 1) {
-        rep = 1;
+    if (hostopts_long(argv[2], 1, 1000000, &v) != 0) {
+        return hostopts_usage_error(PROG, PROG, "REPEAT must be 1..1000000");
     }
+    rep = (int)v;
     if (imgio_read_gray(argv[3], &in, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return 2;

@@ -11,9 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hostopts.h"
 #include "imgio.h"
 #include "symline/extrema.h"
 #include "symline/symmetry.h"
+
+#define PROG "symline-bench-operator"
 
 int main(int argc, char **argv)
 {
@@ -27,14 +30,30 @@ int main(int argc, char **argv)
     void *ws;
     uint8_t *out;
     unsigned long sum = 0;
-    if (argc != 6) {
-        fprintf(stderr, "usage: symline-bench-operator symmetry|extrema horizontal|vertical M REPEAT IN\n");
-        return 2;
+    long v;
+    r = hostopts_plain(argc, argv, PROG,
+                       "usage: symline-bench-operator symmetry|extrema horizontal|vertical M REPEAT IN\n"
+                       "Runs the operator (or the extrema) with radius M REPEAT times over IN and\n"
+                       "prints a checksum (for instruction counts under callgrind).\n",
+                       5);
+    if (r >= 0) {
+        return r;
+    }
+    argv += optind - 1; /* argv[1..5]: the arguments */
+    if ((strcmp(argv[1], "symmetry") != 0 && strcmp(argv[1], "extrema") != 0) ||
+        (strcmp(argv[2], "horizontal") != 0 && strcmp(argv[2], "vertical") != 0)) {
+        return hostopts_usage_error(PROG, PROG, "needs symmetry|extrema horizontal|vertical");
     }
     extrema = strcmp(argv[1], "extrema") == 0;
     axis = strcmp(argv[2], "vertical") == 0 ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
-    m = (unsigned)atoi(argv[3]);
-    rep = atoi(argv[4]);
+    if (hostopts_long(argv[3], 1, 255, &v) != 0) {
+        return hostopts_usage_error(PROG, PROG, "M must be 1..255");
+    }
+    m = (unsigned)v;
+    if (hostopts_long(argv[4], 1, 1000000, &v) != 0) {
+        return hostopts_usage_error(PROG, PROG, "REPEAT must be 1..1000000");
+    }
+    rep = (int)v;
     if (imgio_read_gray(argv[5], &in, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return 2;

@@ -46,6 +46,7 @@
 #include <opencv2/ximgproc.hpp>
 
 extern "C" {
+#include "hostopts.h"
 #include "segjson.h"
 #include "symline/detect.h"
 }
@@ -214,7 +215,8 @@ int usage(FILE *f)
         f, "usage: symline-peers [--repeat N] OUTDIR FRAME...\n"
            "Times symline and OpenCV's line detectors (one thread, the detection call\n"
            "only; N calls each, default 10, interleaved) and writes\n"
-           "OUTDIR/DETECTOR/NAME.json. Prints: DETECTOR WIDTHxHEIGHT NAME FASTEST_MS MEDIAN_MS\n");
+           "OUTDIR/DETECTOR/NAME.json. Prints: DETECTOR WIDTHxHEIGHT NAME FASTEST_MS MEDIAN_MS\n"
+           "Options take --opt VALUE or --opt=VALUE; --version prints the version.\n");
     return f == stdout ? 0 : 2;
 }
 
@@ -222,20 +224,29 @@ int usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    int repeat = 10, i = 1;
-    if (argc >= 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
-        return usage(stdout);
-    }
-    if (argc >= 3 && std::strcmp(argv[1], "--repeat") == 0) {
-        repeat = std::atoi(argv[2]);
-        i = 3;
-        if (repeat < 1 || repeat > 100000) {
-            std::fprintf(stderr, "symline-peers: --repeat needs a number 1..100000\n");
-            return 2;
+    static const struct option longopts[] = {{"help", no_argument, nullptr, HOSTOPTS_HELP},
+                                             {"version", no_argument, nullptr, HOSTOPTS_VERSION},
+                                             {"repeat", required_argument, nullptr, 'r'},
+                                             {nullptr, 0, nullptr, 0}};
+    const char *const prog = "symline-peers";
+    int repeat = 10, c;
+    long v;
+    while ((c = hostopts_next(argc, argv, ":h", longopts, prog, prog)) != -1) {
+        switch (c) {
+        case HOSTOPTS_HELP: return usage(stdout);
+        case HOSTOPTS_VERSION: hostopts_version(prog); return 0;
+        case 'r':
+            if (hostopts_long(optarg, 1, 100000, &v) != 0) {
+                return hostopts_usage_error(prog, prog, "--repeat needs a number 1..100000");
+            }
+            repeat = static_cast<int>(v);
+            break;
+        default: return HOSTOPTS_USAGE;
         }
     }
+    int i = optind;
     if (argc - i < 2) {
-        return usage(stderr);
+        return hostopts_usage_error(prog, prog, "needs OUTDIR and at least one FRAME");
     }
     cv::setNumThreads(1);
     const std::string outdir = argv[i++];

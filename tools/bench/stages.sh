@@ -14,22 +14,25 @@
 # Prints one table per frame: stage, then per column instructions per pixel.
 set -eu
 
-usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
-
-REPO=$(cd "$(dirname "$0")/../.." && pwd)
+# shellcheck source=../args.sh
+. "$(dirname "$0")/../args.sh"
 BUILD=$REPO/build
 NOPTS=0
+ARGS_COMMON="build"
 while [ $# -gt 0 ]; do
     case $1 in
-        -h|--help) usage; exit 0 ;;
-        --build) BUILD=$2; shift 2 ;;
-        --opts) NOPTS=$((NOPTS + 1)); eval "OPTS_$NOPTS=\$2"; shift 2 ;;
+        --opts | --opts=*)
+            args_value "$@"
+            NOPTS=$((NOPTS + 1))
+            eval "OPTS_$NOPTS=\$ARGS_VALUE"
+            shift "$ARGS_SHIFT" ;;
         --) shift; break ;;
-        -*) echo "stages.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+        -*) args_common "$@"; shift "$ARGS_SHIFT" ;;
         *) break ;;
     esac
 done
-[ $# -ge 1 ] || { usage >&2; exit 2; }
+[ $# -ge 1 ] || args_error "no FRAME given"
+args_dirs
 if [ "$NOPTS" -eq 0 ]; then
     NOPTS=1
     OPTS_1=

@@ -5,7 +5,8 @@
 #include "args.h"
 
 #include "detopts.h"
-#include "symline/version.h"
+#include "hostopts.h"
+#include "stageprof.h"
 #include "v4l2_list.h"
 
 #include <stdio.h>
@@ -16,10 +17,9 @@
 
 static int usage_error(const char *fmt, const char *arg)
 {
-    fputs("symline-capture: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputs(" (try --help)\n", stderr);
-    return APP_EXIT_USAGE;
+    char msg[256];
+    snprintf(msg, sizeof msg, fmt, arg);
+    return hostopts_usage_error("symline-capture", "symline-capture", "%s", msg);
 }
 
 static void usage(FILE *f)
@@ -71,6 +71,9 @@ static void usage(FILE *f)
           "  --record K DIR         write the luma of every K-th frame as PGM (replayable)\n"
           "  --snapshot-every K DIR write every K-th frame with its detections drawn over it\n"
           "                         (lines solid, curves dotted) as DIR/snapNNNNNN.png\n"
+          "  --profile              split each frame's detect time by the detector's stages\n"
+          "                         (\"detect_stages_ms\" in the records, means in the final\n"
+          "                         summary)\n"
           "\n"
           "Options take --opt VALUE or --opt=VALUE. --version prints the version.\n"
           "Exit status: 0 stopped normally (frame count, end of replay, SIGINT/SIGTERM,\n"
@@ -117,7 +120,8 @@ enum {
     OPT_LOOP,
     OPT_SUMMARY,
     OPT_RECORD,
-    OPT_SNAPSHOT
+    OPT_SNAPSHOT,
+    OPT_PROFILE
 };
 
 static const struct option own_options[] = {
@@ -143,6 +147,7 @@ static const struct option own_options[] = {
     {"summary-every", required_argument, NULL, OPT_SUMMARY},
     {"record", required_argument, NULL, OPT_RECORD},
     {"snapshot-every", required_argument, NULL, OPT_SNAPSHOT},
+    {"profile", no_argument, NULL, OPT_PROFILE},
 };
 #define OWN_OPTIONS (sizeof own_options / sizeof own_options[0])
 
@@ -206,6 +211,12 @@ static int apply_own(app_options *o, int c, const char *arg, int argc, char **ar
         o->timeout_ms = (int)v;
         return 0;
     case OPT_LOOP: o->loop = 1; return 0;
+    case OPT_PROFILE:
+        if (!stageprof_available()) {
+            return usage_error("--profile: this build's detector has no stage marks%s", "");
+        }
+        o->profile = 1;
+        return 0;
     case OPT_SUMMARY:
         return detopts_u32(arg, 0, 86400, &o->summary_s) == 0
                    ? 0
@@ -245,20 +256,17 @@ int app_parse_args(int argc, char **argv, app_options *o)
     memcpy(longopts, own_options, sizeof own_options);
     n = OWN_OPTIONS + detopts_longopts(longopts + OWN_OPTIONS, 63);
     memset(&longopts[n], 0, sizeof longopts[n]);
-    opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, ":h", longopts, NULL)) != -1) {
-        if (c == 'h') {
+    while ((c = hostopts_next(argc, argv, ":h", longopts, "symline-capture", "symline-capture")) !=
+           -1) {
+        if (c == HOSTOPTS_HELP) {
             usage(stdout);
             return 1;
-        } else if (c == 'V') {
-            printf("symline-capture %s\n", SYMLINE_VERSION_STRING);
+        } else if (c == HOSTOPTS_VERSION) {
+            hostopts_version("symline-capture");
             return 1;
-        } else if (c == '?') {
-            char shortopt[3] = {'-', (char)optopt, '\0'};
-            return usage_error("unknown option '%s'", optopt ? shortopt : argv[optind - 1]);
-        } else if (c == ':') {
-            return usage_error("%s needs a value", argv[optind - 1]);
+        } else if (c == HOSTOPTS_ERROR) {
+            return APP_EXIT_USAGE;
         } else if ((rc = detopts_apply(&det, c, optarg, msg, sizeof msg)) != 0) {
             if (rc < 0) {
                 return usage_error("%s", msg);

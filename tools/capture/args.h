@@ -33,6 +33,7 @@ typedef struct app_options {
     const char *snapshot_dir;
     uint32_t record_every;
     const char *record_dir;
+    int profile;        /* --profile: time per detector stage */
     symline_config cfg; /* detector settings, options as in `symline lines` */
 } app_options;
 

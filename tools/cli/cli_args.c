@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * What every `symline` command parses the same way: getopt_long with its
- * messages, the OUT / -o choice, and input lists that may name folders.
+ * What every `symline` command parses the same way: getopt_long with the
+ * messages of every host program (hostopts.h), the OUT / -o choice, and
+ * input lists that may name folders.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -13,25 +14,16 @@
 #include <sys/stat.h>
 
 #include "cli.h"
+#include "hostopts.h"
 
 int cli_getopt(int argc, char **argv, const char *shortopts, const struct option *longopts)
 {
+    char who[64], help[64];
     int c;
-    opterr = 0; /* the messages below name the command */
-    c = getopt_long(argc, argv, shortopts, longopts, NULL);
-    if (c == '?') {
-        if (optopt != 0) {
-            cli_error("%s: unknown option '-%c' (try 'symline %s --help')", argv[0], optopt, argv[0]);
-        } else {
-            cli_error("%s: unknown option '%s' (try 'symline %s --help')", argv[0], argv[optind - 1], argv[0]);
-        }
-        return CLI_GETOPT_ERROR;
-    }
-    if (c == ':') {
-        cli_error("%s: %s needs a value", argv[0], argv[optind - 1]);
-        return CLI_GETOPT_ERROR;
-    }
-    return c;
+    snprintf(who, sizeof who, "symline: %s", argv[0]);
+    snprintf(help, sizeof help, "symline %s", argv[0]);
+    c = hostopts_next(argc, argv, shortopts, longopts, who, help);
+    return c == HOSTOPTS_ERROR ? CLI_GETOPT_ERROR : c;
 }
 
 int cli_output_name(const char *cmd, const char *positional, const char *option, const char **out)

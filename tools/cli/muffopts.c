@@ -31,7 +31,8 @@ void muffopts_init(muffopts *m)
     symline_muff_config_default(&m->mc);
 }
 
-int muffopts_parse(muffopts *m, int argc, char **argv, int *i, char *err, size_t errlen)
+/* 1 when argv[*i] was one of these options (value consumed), 0 when not, -1 on a bad value. */
+static int muffopts_parse(muffopts *m, int argc, char **argv, int *i, char *err, size_t errlen)
 {
     const char *o = argv[*i];
     size_t k;

@@ -19,10 +19,6 @@ typedef struct muffopts {
 
 void muffopts_init(muffopts *m);
 
-/* Like detopts_parse(): 1 when argv[*i] was one of these options (value
- * consumed), 0 when not, -1 on a bad value (message in err). */
-int muffopts_parse(muffopts *m, int argc, char **argv, int *i, char *err, size_t errlen);
-
 /*
  * The same options for getopt_long (as detopts_longopts(): each takes a
  * value, val = MUFFOPTS_VAL + k): appends at most cap entries, returns how many.

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hostopts.h"
 #include "imgio.h"
 
 static void usage(FILE *f)
@@ -16,58 +17,54 @@ static void usage(FILE *f)
           "Writes clip(round(v*K + A), 0, 255) for every pixel v (K default 1, A default 0;\n"
           "round half up). OUT is PNG when it ends in .png, else PGM. --report prints\n"
           "\"pixels=N clipped_low=N clipped_high=N\": pixels whose value the clipping\n"
-          "changed (below 0, above 255). --clipped writes those pixels as 255, others 0.\n",
+          "changed (below 0, above 255). --clipped writes those pixels as 255, others 0.\n"
+          "Options take --opt VALUE or --opt=VALUE; --version prints the version.\n"
+          "Exit status: 0 ok, 1 unreadable input or unwritable output, 2 usage.\n",
           f);
 }
+
+#define PROG "symline-bright"
+
+enum { OPT_MUL = 0x100, OPT_ADD, OPT_REPORT, OPT_CLIPPED };
+
+static const struct option longopts[] = {{"help", no_argument, NULL, HOSTOPTS_HELP},
+                                         {"version", no_argument, NULL, HOSTOPTS_VERSION},
+                                         {"mul", required_argument, NULL, OPT_MUL},
+                                         {"add", required_argument, NULL, OPT_ADD},
+                                         {"report", no_argument, NULL, OPT_REPORT},
+                                         {"clipped", required_argument, NULL, OPT_CLIPPED},
+                                         {NULL, 0, NULL, 0}};
 
 int main(int argc, char **argv)
 {
     double mul = 1.0, add = 0.0;
-    int i = 1, report = 0;
+    int i, c, report = 0;
     const char *clipped = NULL;
     uint8_t *cmask = NULL;
     size_t low = 0, high = 0;
     imgio_gray img;
     char err[512];
     size_t k, n;
-    while (i < argc && argv[i][0] == '-' && argv[i][1] == '-') {
-        char *end;
-        if (strcmp(argv[i], "--help") == 0) {
-            usage(stdout);
-            return 0;
+    while ((c = hostopts_next(argc, argv, ":h", longopts, PROG, PROG)) != -1) {
+        switch (c) {
+        case HOSTOPTS_HELP: usage(stdout); return 0;
+        case HOSTOPTS_VERSION: hostopts_version(PROG); return 0;
+        case OPT_REPORT: report = 1; break;
+        case OPT_CLIPPED: clipped = optarg; break;
+        case OPT_MUL:
+        case OPT_ADD:
+            if (hostopts_double(optarg, -1e6, 1e6, c == OPT_MUL ? &mul : &add) != 0) {
+                return hostopts_usage_error(PROG, PROG, "bad number '%s' for %s", optarg,
+                                            c == OPT_MUL ? "--mul" : "--add");
+            }
+            break;
+        default: return HOSTOPTS_USAGE; /* HOSTOPTS_ERROR: reported */
         }
-        if (strcmp(argv[i], "--report") == 0) {
-            report = 1;
-            i++;
-            continue;
-        }
-        if (i + 1 >= argc) {
-            usage(stderr);
-            return 2;
-        }
-        if (strcmp(argv[i], "--clipped") == 0) {
-            clipped = argv[i + 1];
-            i += 2;
-            continue;
-        }
-        if (strcmp(argv[i], "--mul") == 0) {
-            mul = strtod(argv[i + 1], &end);
-        } else if (strcmp(argv[i], "--add") == 0) {
-            add = strtod(argv[i + 1], &end);
-        } else {
-            usage(stderr);
-            return 2;
-        }
-        if (*end != '\0') {
-            fprintf(stderr, "symline-bright: bad number '%s'\n", argv[i + 1]);
-            return 2;
-        }
-        i += 2;
     }
-    if (argc - i != 2) {
-        usage(stderr);
-        return 2;
+    if (argc - optind != 2) {
+        return hostopts_usage_error(PROG, PROG, "needs IN and OUT");
     }
+    i = optind;
     if (imgio_read_gray(argv[i], &img, err, sizeof(err)) != 0) {
         fprintf(stderr, "symline-bright: %s\n", err);
         return 1;

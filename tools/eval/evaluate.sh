@@ -27,13 +27,10 @@
 #                    REPO/out/eval-real)
 set -eu
 
-usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
-
-[ $# -ge 1 ] || { usage >&2; exit 2; }
-case $1 in -h|--help) usage; exit 0 ;; esac
-DATA=$1
+# shellcheck source=../args.sh
+. "$(dirname "$0")/../args.sh"
+args_data "$@"
 shift
-REPO=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$REPO/build
 OUT=$REPO/out/eval
 FILTERS=
@@ -46,28 +43,23 @@ OVERLAYS=0
 JOBS=2
 REAL_ONLY=0
 OUT_SET=0
+ARGS_COMMON="build out count seed opts jobs"
 while [ $# -gt 0 ]; do
     case $1 in
-        --build) BUILD=$2; shift 2 ;;
-        --out) OUT=$2; OUT_SET=1; shift 2 ;;
-        --filter) FILTERS="$FILTERS $2"; shift 2 ;;
-        --count) COUNT=$2; shift 2 ;;
-        --seed) SEED=$2; shift 2 ;;
-        --sizes) SIZES=$2; shift 2 ;;
-        --opts) OPTS=$2; shift 2 ;;
+        --filter | --filter=*) args_value "$@"; FILTERS="$FILTERS $ARGS_VALUE"; shift "$ARGS_SHIFT" ;;
+        --sizes | --sizes=*) args_value "$@"; SIZES=$ARGS_VALUE; shift "$ARGS_SHIFT" ;;
         --per-image) PER_IMAGE=1; shift ;;
         --overlays) OVERLAYS=1; shift ;;
-        --jobs) JOBS=$2; shift 2 ;;
         --real-only) REAL_ONLY=1; shift ;;
-        *) echo "evaluate.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+        *)
+            case $1 in --out | --out=*) OUT_SET=1 ;; esac
+            args_common "$@"
+            shift "$ARGS_SHIFT" ;;
     esac
 done
 [ -n "$FILTERS" ] || FILTERS="paper default"
 [ "$REAL_ONLY" -eq 0 ] || [ "$OUT_SET" -eq 1 ] || OUT=$REPO/out/eval-real
-[ -d "$DATA" ] || { echo "evaluate.sh: no data folder '$DATA'" >&2; exit 2; }
-DATA=$(cd "$DATA" && pwd)
-case $BUILD in /*) ;; *) BUILD=$(pwd)/$BUILD ;; esac
-case $OUT in /*) ;; *) OUT=$(pwd)/$OUT ;; esac
+args_dirs
 
 # ---- tools: Debian packages, then an incremental build of the four binaries ----
 # shellcheck source=../pkgs.sh

@@ -21,13 +21,10 @@
 #   --jobs N      parallel jobs (default 2)
 set -eu
 
-usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
-
-[ $# -ge 1 ] || { usage >&2; exit 2; }
-case $1 in -h|--help) usage; exit 0 ;; esac
-DATA=$1
+# shellcheck source=../args.sh
+. "$(dirname "$0")/../args.sh"
+args_data "$@"
 shift
-REPO=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$REPO/build
 OUT=$REPO/out/ixeval
 COUNT=20
@@ -35,22 +32,14 @@ SEED=2026
 OPTS=
 PER_IMAGE=0
 JOBS=2
+ARGS_COMMON="build out count seed opts jobs"
 while [ $# -gt 0 ]; do
     case $1 in
-        --build) BUILD=$2; shift 2 ;;
-        --out) OUT=$2; shift 2 ;;
-        --count) COUNT=$2; shift 2 ;;
-        --seed) SEED=$2; shift 2 ;;
-        --opts) OPTS=$2; shift 2 ;;
         --per-image) PER_IMAGE=1; shift ;;
-        --jobs) JOBS=$2; shift 2 ;;
-        *) echo "intersections.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+        *) args_common "$@"; shift "$ARGS_SHIFT" ;;
     esac
 done
-[ -d "$DATA" ] || { echo "intersections.sh: no data folder '$DATA'" >&2; exit 2; }
-DATA=$(cd "$DATA" && pwd)
-case $BUILD in /*) ;; *) BUILD=$(pwd)/$BUILD ;; esac
-case $OUT in /*) ;; *) OUT=$(pwd)/$OUT ;; esac
+args_dirs
 
 if [ ! -f "$BUILD/CMakeCache.txt" ]; then
     cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >&2

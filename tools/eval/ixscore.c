@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "evio.h"
+#include "hostopts.h"
 #include "symline/intersections.h"
 
 #define IX_MAX 1024
@@ -46,6 +47,7 @@ static void usage(FILE *f)
           "with the right type), pos_err (mean distance of the matched, px), ray_err (mean\n"
           "angle from each reference ray to the nearest detected ray of the type-correct\n"
           "matches, degrees). --list adds one line per reference and detection.\n"
+          "Options take --opt VALUE or --opt=VALUE; --version prints the version.\n"
           "Exit status: 0 ok, 1 unreadable input, 2 usage.\n",
           f);
 }
@@ -295,6 +297,16 @@ static double angle_diff(double a, double b)
     return d > 180.0 ? 360.0 - d : d;
 }
 
+#define PROG "symline-ixscore"
+
+enum { OPT_TOL = 0x100, OPT_LIST };
+
+static const struct option longopts[] = {{"help", no_argument, NULL, HOSTOPTS_HELP},
+                                         {"version", no_argument, NULL, HOSTOPTS_VERSION},
+                                         {"tol", required_argument, NULL, OPT_TOL},
+                                         {"list", no_argument, NULL, OPT_LIST},
+                                         {NULL, 0, NULL, 0}};
+
 int main(int argc, char **argv)
 {
     static ix_item ref[IX_MAX], det[IX_MAX];
@@ -303,27 +315,25 @@ int main(int argc, char **argv)
     int list = 0, nref = 0, ndet = 0, width = 0, h = 0, i, j;
     int tp = 0, fp = 0, fn = 0, type_ok = 0, nray = 0, nreq = 0, ndet_counted = 0;
     char path[4096], *text;
-    for (i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--tol") == 0 && i + 1 < argc) {
-            tol = atof(argv[++i]);
-        } else if (strcmp(argv[i], "--list") == 0) {
-            list = 1;
-        } else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return 0;
-        } else if (name == NULL) {
-            name = argv[i];
-        } else if (json == NULL) {
-            json = argv[i];
-        } else {
-            usage(stderr);
-            return 2;
+    int c;
+    while ((c = hostopts_next(argc, argv, ":h", longopts, PROG, PROG)) != -1) {
+        switch (c) {
+        case HOSTOPTS_HELP: usage(stdout); return 0;
+        case HOSTOPTS_VERSION: hostopts_version(PROG); return 0;
+        case OPT_LIST: list = 1; break;
+        case OPT_TOL:
+            if (hostopts_double(optarg, 0.0, 1e6, &tol) != 0) {
+                return hostopts_usage_error(PROG, PROG, "--tol needs pixels >= 0");
+            }
+            break;
+        default: return HOSTOPTS_USAGE; /* HOSTOPTS_ERROR: reported */
         }
     }
-    if (json == NULL) {
-        usage(stderr);
-        return 2;
+    if (argc - optind != 2) {
+        return hostopts_usage_error(PROG, PROG, "needs NAME and DET.json");
     }
+    name = argv[optind];
+    json = argv[optind + 1];
     if (reference(name, ref, &nref) != 0) {
         return 1;
     }

@@ -18,33 +18,22 @@
 # --axis both (the default); the Muff finder with `symline lines --method muff`.
 set -eu
 
-usage() { sed -n '3,/^set -eu/p' "$0" | sed -e '/^set -eu/d' -e 's/^# \{0,1\}//'; }
-[ $# -ge 1 ] || { usage >&2; exit 2; }
-case $1 in -h|--help) usage; exit 0 ;; esac
-DATA=$1
+# shellcheck source=../args.sh
+. "$(dirname "$0")/../args.sh"
+args_data "$@"
 shift
-REPO=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$REPO/build
 OUT=$REPO/out/methods
 COUNT=20
 SEED=2026
 REPEAT=20
 JOBS=2
+ARGS_COMMON="build out count seed repeat jobs"
 while [ $# -gt 0 ]; do
-    case $1 in
-        --build) BUILD=$2; shift 2 ;;
-        --out) OUT=$2; shift 2 ;;
-        --count) COUNT=$2; shift 2 ;;
-        --seed) SEED=$2; shift 2 ;;
-        --repeat) REPEAT=$2; shift 2 ;;
-        --jobs) JOBS=$2; shift 2 ;;
-        *) echo "methods.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
-    esac
+    args_common "$@"
+    shift "$ARGS_SHIFT"
 done
-[ -d "$DATA" ] || { echo "methods.sh: no data folder '$DATA'" >&2; exit 2; }
-DATA=$(cd "$DATA" && pwd)
-case $BUILD in /*) ;; *) BUILD=$(pwd)/$BUILD ;; esac
-case $OUT in /*) ;; *) OUT=$(pwd)/$OUT ;; esac
+args_dirs
 command -v valgrind >/dev/null || { echo "methods.sh: valgrind is needed (apt-get install valgrind)" >&2; exit 2; }
 
 if [ ! -f "$BUILD/CMakeCache.txt" ]; then

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "hostopts.h"
 #include "imgio.h"
 #include "render.h"
 
@@ -22,7 +23,9 @@ static void usage(FILE *f)
           "(defaults: seed 1, count 10, first 0, size 320x240); --preview adds SET_NNN.png;\n"
           "--labels adds SET_NNN.labels.pgm, the surface at each pixel centre: 0 carpet,\n"
           "1 paint, 2 floor, 3 wall, 4 ceiling, 5 robot (cylinder).\n"
-          "The same seed, set, index and size always give the same files.\n",
+          "The same seed, set, index and size always give the same files.\n"
+          "Options take --opt VALUE or --opt=VALUE; --version prints the version.\n"
+          "Exit status: 0 ok, 1 a file could not be written, 2 usage.\n",
           f);
 }
 
@@ -70,59 +73,62 @@ static uint64_t image_seed(uint64_t seed, rd_set set, unsigned idx, int w, int h
     return rd_rand_u64(&st);
 }
 
+#define PROG "symline-render"
+
+enum { OPT_SET = 0x100, OPT_SEED, OPT_COUNT, OPT_FIRST, OPT_SIZE, OPT_PREVIEW, OPT_LABELS };
+
+static const struct option longopts[] = {
+    {"help", no_argument, NULL, HOSTOPTS_HELP},   {"version", no_argument, NULL, HOSTOPTS_VERSION},
+    {"set", required_argument, NULL, OPT_SET},     {"seed", required_argument, NULL, OPT_SEED},
+    {"count", required_argument, NULL, OPT_COUNT}, {"first", required_argument, NULL, OPT_FIRST},
+    {"size", required_argument, NULL, OPT_SIZE},   {"preview", no_argument, NULL, OPT_PREVIEW},
+    {"labels", no_argument, NULL, OPT_LABELS},     {NULL, 0, NULL, 0}};
+
 int main(int argc, char **argv)
 {
     rd_set set = RD_NSETS;
     unsigned long seed = 1, count = 10, first = 0, k;
-    int w = 320, h = 240, preview = 0, labels = 0, i;
+    int w = 320, h = 240, preview = 0, labels = 0, c;
     const char *outdir = NULL;
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        char *end = NULL;
-        if (strcmp(a, "--help") == 0) {
-            usage(stdout);
-            return 0;
-        } else if (strcmp(a, "--preview") == 0) {
-            preview = 1;
-        } else if (strcmp(a, "--labels") == 0) {
-            labels = 1;
-        } else if (strcmp(a, "--set") == 0 && v) {
-            if (rd_set_parse(v, &set) != 0) {
-                fprintf(stderr, "symline-render: unknown set '%s'\n", v);
-                return 2;
+    long n;
+    char tail;
+    while ((c = hostopts_next(argc, argv, ":h", longopts, PROG, PROG)) != -1) {
+        switch (c) {
+        case HOSTOPTS_HELP: usage(stdout); return 0;
+        case HOSTOPTS_VERSION: hostopts_version(PROG); return 0;
+        case OPT_PREVIEW: preview = 1; break;
+        case OPT_LABELS: labels = 1; break;
+        case OPT_SET:
+            if (rd_set_parse(optarg, &set) != 0) {
+                return hostopts_usage_error(PROG, PROG, "unknown set '%s'", optarg);
             }
-            i++;
-        } else if ((strcmp(a, "--seed") == 0 || strcmp(a, "--count") == 0 ||
-                    strcmp(a, "--first") == 0) && v) {
-            unsigned long n = strtoul(v, &end, 10);
-            if (*v < '0' || *v > '9' || *end != '\0') {
-                fprintf(stderr, "symline-render: %s needs a number\n", a);
-                return 2;
+            break;
+        case OPT_SEED:
+        case OPT_COUNT:
+        case OPT_FIRST:
+            if (optarg[0] == '-' || hostopts_long(optarg, 0, 0x7fffffffL, &n) != 0) {
+                return hostopts_usage_error(PROG, PROG, "%s needs a number 0..2147483647",
+                                            argv[optind - 1]);
             }
-            if (a[2] == 's') {
-                seed = n;
-            } else if (a[2] == 'c') {
-                count = n;
-            } else {
-                first = n;
+            *(c == OPT_SEED ? &seed : c == OPT_COUNT ? &count : &first) = (unsigned long)n;
+            break;
+        case OPT_SIZE:
+            if (sscanf(optarg, "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 8192 ||
+                h > 8192) {
+                return hostopts_usage_error(PROG, PROG, "--size needs WxH, each 16..8192");
             }
-            i++;
-        } else if (strcmp(a, "--size") == 0 && v) {
-            if (sscanf(v, "%dx%d", &w, &h) != 2 || w < 16 || h < 16 || w > 8192 || h > 8192) {
-                fprintf(stderr, "symline-render: --size WxH, 16..8192\n");
-                return 2;
-            }
-            i++;
-        } else if (a[0] != '-' && outdir == NULL) {
-            outdir = a;
-        } else {
-            usage(stderr);
-            return 2;
+            break;
+        default: return HOSTOPTS_USAGE; /* HOSTOPTS_ERROR: reported */
         }
     }
+    if (optind < argc) {
+        outdir = argv[optind++];
+    }
+    if (optind < argc) {
+        return hostopts_usage_error(PROG, PROG, "unexpected argument '%s'", argv[optind]);
+    }
     if (set == RD_NSETS || outdir == NULL) {
-        usage(stderr);
-        return 2;
+        return hostopts_usage_error(PROG, PROG, "needs --set SET and OUTDIR");
     }
     if (mkdir(outdir, 0777) != 0 && errno != EEXIST) {
         fprintf(stderr, "symline-render: %s: %s\n", outdir, strerror(errno));

@@ -3,12 +3,14 @@
  * symline-score: scores `symline lines` detections (docs/format.md) against
  * ground truth, a binary line mask, or another detection of the same frame.
  */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "evio.h"
+#include "hostopts.h"
 #include "imgio.h"
 #include "score.h"
 
@@ -73,6 +75,7 @@ static void usage(FILE *f)
           "--pieces (gt mode): first one line per detected piece: kind, length, samples near\n"
           "      straight and near circle ground truth, class (straight, circle, unmatched);\n"
           "      then one per straight ground-truth piece >= 40 px: the detected pieces along it.\n"
+          "Options take --opt VALUE or --opt=VALUE; --version prints the version.\n"
           "Exit status: 0 ok, 1 unreadable input, 2 usage.\n",
           f);
 }
@@ -291,60 +294,60 @@ out:
     return rc;
 }
 
+#define PROG "symline-score"
+
+enum { OPT_PIECES = 0x100, OPT_IGNORE, OPT_CENTRE, OPT_TOL };
+
+static const struct option longopts[] = {{"help", no_argument, NULL, HOSTOPTS_HELP},
+                                         {"version", no_argument, NULL, HOSTOPTS_VERSION},
+                                         {"pieces", no_argument, NULL, OPT_PIECES},
+                                         {"ignore", required_argument, NULL, OPT_IGNORE},
+                                         {"centre", required_argument, NULL, OPT_CENTRE},
+                                         {"tol", required_argument, NULL, OPT_TOL},
+                                         {NULL, 0, NULL, 0}};
+
 int main(int argc, char **argv)
 {
     double tol = 0.0;
-    int i = 1;
-    if (argc >= 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
-        usage(stdout);
-        return 0;
-    }
-    while (i < argc && argv[i][0] == '-' && argv[i][1] == '-') {
-        if (strcmp(argv[i], "--pieces") == 0) {
-            g_pieces = 1;
-            i++;
-        } else if (i + 1 < argc && strcmp(argv[i], "--ignore") == 0) {
-            g_ignore = argv[i + 1];
-            i += 2;
-        } else if (i + 1 < argc && strcmp(argv[i], "--centre") == 0) {
-            if (g_centre != NULL) {
-                fclose(g_centre);
+    const char *centre = NULL, *mode;
+    int c, n;
+    while ((c = hostopts_next(argc, argv, ":h", longopts, PROG, PROG)) != -1) {
+        switch (c) {
+        case HOSTOPTS_HELP: usage(stdout); return 0;
+        case HOSTOPTS_VERSION: hostopts_version(PROG); return 0;
+        case OPT_PIECES: g_pieces = 1; break;
+        case OPT_IGNORE: g_ignore = optarg; break;
+        case OPT_CENTRE: centre = optarg; break;
+        case OPT_TOL:
+            if (hostopts_double(optarg, 0.0, 1e6, &tol) != 0 || !(tol > 0.0)) {
+                return hostopts_usage_error(PROG, PROG, "--tol needs a positive number");
             }
-            g_centre = fopen(argv[i + 1], "a");
-            if (g_centre == NULL) {
-                fprintf(stderr, "symline-score: cannot open %s\n", argv[i + 1]);
-                return 1;
-            }
-            i += 2;
-        } else if (i + 1 < argc && strcmp(argv[i], "--tol") == 0) {
-            char *end;
-            tol = strtod(argv[i + 1], &end);
-            if (*end != '\0' || !(tol > 0.0)) {
-                fprintf(stderr, "symline-score: --tol needs a positive number\n");
-                return 2;
-            }
-            i += 2;
-        } else {
-            usage(stderr);
-            return 2;
+            break;
+        default: return HOSTOPTS_USAGE; /* HOSTOPTS_ERROR: reported */
         }
     }
-    if (argc - i == 2 && strcmp(argv[i], "gtjson") == 0) {
-        return mode_gtjson(argv[i + 1]);
+    n = argc - optind;
+    mode = n > 0 ? argv[optind] : "";
+    if (!(n == 2 && strcmp(mode, "gtjson") == 0) &&
+        !(n == 3 && (strcmp(mode, "gt") == 0 || strcmp(mode, "mask") == 0 || strcmp(mode, "pair") == 0))) {
+        return hostopts_usage_error(PROG, PROG, "needs gt NAME DET.json, mask MASK DET.json, "
+                                                "pair REF.json DET.json or gtjson NAME");
     }
-    if (argc - i != 3) {
-        usage(stderr);
-        return 2;
+    if (centre != NULL) {
+        g_centre = fopen(centre, "a");
+        if (g_centre == NULL) {
+            fprintf(stderr, PROG ": cannot open %s: %s\n", centre, strerror(errno));
+            return 1;
+        }
     }
-    if (strcmp(argv[i], "gt") == 0) {
-        return mode_gt(argv[i + 1], argv[i + 2], tol);
+    if (strcmp(mode, "gtjson") == 0) {
+        return mode_gtjson(argv[optind + 1]);
     }
-    if (strcmp(argv[i], "mask") == 0) {
-        return mode_mask(argv[i + 1], argv[i + 2], tol);
+    if (strcmp(mode, "gt") == 0) {
+        return mode_gt(argv[optind + 1], argv[optind + 2], tol);
     }
-    if (strcmp(argv[i], "pair") == 0) {
-        return mode_pair(argv[i + 1], argv[i + 2], tol);
+    if (strcmp(mode, "mask") == 0) {
+        return mode_mask(argv[optind + 1], argv[optind + 2], tol);
     }
-    usage(stderr);
-    return 2;
+    return mode_pair(argv[optind + 1], argv[optind + 2], tol);
 }
