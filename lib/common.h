@@ -31,6 +31,10 @@
 #define SL_ALWAYS_INLINE inline
 #endif
 
+/* True when v lies outside -lim..lim (lim >= 0, v + lim without overflow):
+ * one comparison instead of two. */
+#define SL_OUTSIDE(v, lim) ((uint32_t)((v) + (lim)) > 2u * (uint32_t)(lim))
+
 /* Alignment every workspace carve-out is rounded to. */
 #define SL_ALIGN 8u
 
@@ -40,7 +44,7 @@ static inline size_t symline_i_align_up(size_t n)
 }
 
 /* Carves `bytes` from a workspace cursor, aligned; NULL if it does not fit. */
-static inline void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes)
+static inline void *symline_i_carve_here(uint8_t **cur, uint8_t *end, size_t bytes)
 {
     uintptr_t p = ((uintptr_t)*cur + (SL_ALIGN - 1u)) & ~(uintptr_t)(SL_ALIGN - 1u);
     if (p > (uintptr_t)end || bytes > (size_t)((uintptr_t)end - p)) {
@@ -48,6 +52,21 @@ static inline void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes)
     }
     *cur = (uint8_t *)(p + bytes);
     return (void *)p;
+}
+
+/* The same, out of line (status.c). */
+void *symline_i_carve_shared(uint8_t **cur, uint8_t *end, size_t bytes);
+
+/* What the stages call: where the build optimises for size (-Os, the
+ * firmware builds), the one shared copy instead of one per object; else
+ * inline (and GCC's -fanalyzer then sees where the pointer points). */
+static inline void *symline_i_carve(uint8_t **cur, uint8_t *end, size_t bytes)
+{
+#if defined(__OPTIMIZE_SIZE__)
+    return symline_i_carve_shared(cur, end, bytes);
+#else
+    return symline_i_carve_here(cur, end, bytes);
+#endif
 }
 
 /*

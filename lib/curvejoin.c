@@ -23,7 +23,7 @@ static void line_dir(const symline_segment *s, int32_t *dx, int32_t *dy)
 {
     *dx = (s->x1 - s->x0) / (int32_t)SL_Q8_ONE;
     *dy = (s->y1 - s->y0) / (int32_t)SL_Q8_ONE;
-    while (*dx > 1023 || *dx < -1023 || *dy > 1023 || *dy < -1023) {
+    while (SL_OUTSIDE(*dx, 1023) || SL_OUTSIDE(*dy, 1023)) {
         *dx /= 2;
         *dy /= 2;
     }
@@ -44,14 +44,14 @@ static bool continues(const symline_segment *s, const symline_segment *c, const 
         /* e & 1: c's end (else its start); e & 2: s's end x1 (else x0). */
         const int32_t at = (e & 1) ? last : 0, in = (e & 1) ? last - j : j;
         const int32_t cdx = (int32_t)p[at].x - p[in].x, cdy = (int32_t)p[at].y - p[in].y;
-        const int32_t gx = ((e & 2) ? s->x1 : s->x0) - symline_i_pt_q8x(&p[at], 0u);
-        const int32_t gy = ((e & 2) ? s->y1 : s->y0) - symline_i_pt_q8y(&p[at], 0u);
+        int32_t gx, gy; /* the gap between the two ends, Q8 */
+        symline_i_pt_off(&p[at], 0u, (e & 2) ? s->x1 : s->x0, (e & 2) ? s->y1 : s->y0, &gx, &gy);
         /* s leaves its end x1 along +dir, its end x0 along -dir; continuing c
          * means leaving against c's outward direction. */
         const int32_t dot = (e & 2) ? -(ldx * cdx + ldy * cdy) : ldx * cdx + ldy * cdy;
         /* Ends within tol in x and y; cos^2 >= 3/4 (within 30 degrees), where
          * |c| <= 8 * sqrt(2) and |l| < 1448 keep the products in 32 bits. */
-        if (gx <= tol && gx >= -tol && gy <= tol && gy >= -tol && dot > 0 &&
+        if (!SL_OUTSIDE(gx, tol) && !SL_OUTSIDE(gy, tol) && dot > 0 &&
             4 * dot * dot >= 3 * (ldx * ldx + ldy * ldy) * (cdx * cdx + cdy * cdy)) {
             return true;
         }

@@ -6,6 +6,8 @@
  */
 #include "symline/detect.h"
 
+#include <stddef.h>
+
 #include "common.h"
 #include "curvejoin.h"
 #include "fieldboundary.h"
@@ -44,82 +46,69 @@ void symline_config_default(symline_config *cfg)
     symline_field_config_default(&cfg->field);
 }
 
-/* Largest value of the Q8 length settings: the largest frame dimension. */
-#define SL_MAX_LENGTH_Q8 (SYMLINE_MAX_DIM << SL_Q8_SHIFT)
+/* The range of one field of symline_config, in declaration order (the
+ * order of symline_config_field): where it lies, its largest value and how
+ * to read both (SL_R_*). */
+typedef struct symline_i_range {
+    uint8_t off, flags;
+    uint16_t max;
+} symline_i_range;
+
+#define SL_R_BYTE 1u   /* a one-byte field (an enum where enums are short, as on arm-none-eabi) */
+#define SL_R_Q8 2u     /* the largest value is max << 8 */
+#define SL_R_ONE 4u    /* the smallest value is 1 (else 0) */
+#define SL_R_SIGNED 8u /* the smallest value is -max */
+
+#define SL_RANGE(f, flags, max)                                                                    \
+    {                                                                                              \
+        (uint8_t) offsetof(symline_config, f),                                                     \
+            (uint8_t)((flags) | (sizeof(((symline_config *)0)->f) == 1u ? SL_R_BYTE : 0u)), max    \
+    }
+
+static const symline_i_range RANGES[] = {
+    SL_RANGE(axes, 0u, SYMLINE_AXES_BOTH),
+    SL_RANGE(radius, SL_R_ONE, SYMLINE_DETECT_MAX_RADIUS),
+    SL_RANGE(levels, 0u, SYMLINE_DETECT_MAX_LEVELS),
+    SL_RANGE(filter, 0u, SYMLINE_FILTER_PAPER),
+    SL_RANGE(illumination, 0u, 255u),
+    SL_RANGE(bright_sigma10, SL_R_SIGNED, 100u),
+    SL_RANGE(ridge_sigma10, 0u, 100u),
+    SL_RANGE(side_sigma10, SL_R_SIGNED, 100u),
+    SL_RANGE(a_distance, 0u, SYMLINE_DETECT_MAX_A_DISTANCE),
+    SL_RANGE(contrast_pct, 0u, 100u),
+    SL_RANGE(contrast_min, 0u, 255u),
+    SL_RANGE(contrast_asym_pct, 0u, 1000u),
+    SL_RANGE(min_length, 0u, SYMLINE_MAX_DIM),
+    /* The Q8 lengths: up to the largest frame dimension. */
+    SL_RANGE(curve_dev_q8, SL_R_Q8, SYMLINE_MAX_DIM),
+    SL_RANGE(curve_bend_q8, SL_R_Q8, SYMLINE_MAX_DIM),
+    /* A gap beyond any frame means nothing, and from 2^24 px its Q8 square
+     * would wrap in 64 bits (a larger gap merging less); or AUTO. */
+    SL_RANGE(merge_gap, 0u, SYMLINE_MAX_DIM),
+    SL_RANGE(merge_dev_q8, SL_R_Q8, SYMLINE_MAX_DIM),
+    SL_RANGE(field_boundary, 0u, SYMLINE_FIELD_KEEP),
+    SL_RANGE(field_margin, 0u, SYMLINE_MAX_DIM),
+};
 
 /* The first field out of its range, or SYMLINE_CFG_NONE. */
 static symline_config_field bad_field(const symline_config *c)
 {
-    if (c->axes != SYMLINE_AXES_HORIZONTAL && c->axes != SYMLINE_AXES_VERTICAL &&
-        c->axes != SYMLINE_AXES_BOTH) {
-        return SYMLINE_CFG_AXES;
+    uint32_t k;
+    for (k = 0; k < sizeof RANGES / sizeof RANGES[0]; k++) {
+        const symline_i_range *g = &RANGES[k];
+        const uint8_t *at = (const uint8_t *)c + g->off;
+        const int32_t max = (int32_t)g->max << ((g->flags & SL_R_Q8) != 0u ? SL_Q8_SHIFT : 0u);
+        const int32_t min = (g->flags & SL_R_SIGNED) != 0u ? -max : (int32_t)(g->flags >> 2);
+        /* A 4-byte field read as int32: an unsigned value of 2^31 and more
+         * turns negative and fails the minimum, as it should (maxima < 2^31). */
+        const int32_t v =
+            (g->flags & SL_R_BYTE) != 0u ? (int32_t)*at : *(const int32_t *)(const void *)at;
+        if ((v < min || v > max) &&
+            !(k + 1u == SYMLINE_CFG_MERGE_GAP && c->merge_gap == SYMLINE_MERGE_GAP_AUTO)) {
+            return (symline_config_field)(k + 1u);
+        }
     }
-    if (c->radius < 1u || c->radius > SYMLINE_DETECT_MAX_RADIUS) {
-        return SYMLINE_CFG_RADIUS;
-    }
-    if (c->levels > SYMLINE_DETECT_MAX_LEVELS) {
-        return SYMLINE_CFG_LEVELS;
-    }
-    if (c->filter != SYMLINE_FILTER_CONTRAST && c->filter != SYMLINE_FILTER_PAPER) {
-        return SYMLINE_CFG_FILTER;
-    }
-    if (c->illumination > 255u) {
-        return SYMLINE_CFG_ILLUMINATION;
-    }
-    if (c->bright_sigma10 < -100 || c->bright_sigma10 > 100) {
-        return SYMLINE_CFG_BRIGHT_SIGMA10;
-    }
-    if (c->ridge_sigma10 > 100u) {
-        return SYMLINE_CFG_RIDGE_SIGMA10;
-    }
-    if (c->side_sigma10 < -100 || c->side_sigma10 > 100) {
-        return SYMLINE_CFG_SIDE_SIGMA10;
-    }
-    if (c->a_distance > SYMLINE_DETECT_MAX_A_DISTANCE) {
-        return SYMLINE_CFG_A_DISTANCE;
-    }
-    if (c->contrast_pct > 100u) {
-        return SYMLINE_CFG_CONTRAST_PCT;
-    }
-    if (c->contrast_min > 255u) {
-        return SYMLINE_CFG_CONTRAST_MIN;
-    }
-    if (c->contrast_asym_pct > 1000u) {
-        return SYMLINE_CFG_CONTRAST_ASYM_PCT;
-    }
-    if (c->min_length > SYMLINE_MAX_DIM) {
-        return SYMLINE_CFG_MIN_LENGTH;
-    }
-    if (c->curve_dev_q8 > SL_MAX_LENGTH_Q8) {
-        return SYMLINE_CFG_CURVE_DEV_Q8;
-    }
-    if (c->curve_bend_q8 > SL_MAX_LENGTH_Q8) {
-        return SYMLINE_CFG_CURVE_BEND_Q8;
-    }
-    /* A gap beyond any frame means nothing, and from 2^24 px its Q8 square
-     * would wrap in 64 bits (a larger gap merging less). */
-    if (c->merge_gap > SYMLINE_MAX_DIM && c->merge_gap != SYMLINE_MERGE_GAP_AUTO) {
-        return SYMLINE_CFG_MERGE_GAP;
-    }
-    if (c->merge_dev_q8 > SL_MAX_LENGTH_Q8) {
-        return SYMLINE_CFG_MERGE_DEV_Q8;
-    }
-    if (c->field_boundary != SYMLINE_FIELD_OFF && c->field_boundary != SYMLINE_FIELD_DROP &&
-        c->field_boundary != SYMLINE_FIELD_KEEP) {
-        return SYMLINE_CFG_FIELD_BOUNDARY;
-    }
-    if (c->field_margin > SYMLINE_MAX_DIM) {
-        return SYMLINE_CFG_FIELD_MARGIN;
-    }
-    if (!symline_i_field_config_ok(&c->field)) {
-        return SYMLINE_CFG_FIELD;
-    }
-    return SYMLINE_CFG_NONE;
-}
-
-symline_status symline_i_config_check(const symline_config *c)
-{
-    return bad_field(c) == SYMLINE_CFG_NONE ? SYMLINE_OK : SYMLINE_ERR_CONFIG;
+    return symline_i_field_config_ok(&c->field) ? SYMLINE_CFG_NONE : SYMLINE_CFG_FIELD;
 }
 
 symline_status symline_config_check(const symline_config *cfg, symline_config_field *field)
@@ -186,7 +175,7 @@ SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height
     uint32_t levels, level, axis;
     size_t best = 0u;
     if (cfg == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
-        height > SYMLINE_MAX_DIM || symline_i_config_check(cfg) != SYMLINE_OK) {
+        height > SYMLINE_MAX_DIM || symline_config_check(cfg, NULL) != SYMLINE_OK) {
         return 0u;
     }
     levels = symline_i_level_count(cfg, width, height);
@@ -274,7 +263,7 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
 symline_status symline_i_config_ws_check(const symline_image *img, const symline_config *cfg,
                                          size_t ws_size)
 {
-    const symline_status st = symline_i_config_check(cfg);
+    const symline_status st = symline_config_check(cfg, NULL);
     if (st != SYMLINE_OK) {
         return st;
     }

@@ -51,18 +51,14 @@ static inline int32_t symline_i_pt_q8y(const symline_point *q, uint32_t level)
     return symline_i_q8(q->y, level) + (int32_t)q->fy * (int32_t)(2u << level);
 }
 
+/* (*x, *y) = the Q8 full-resolution position of grid point q at `level`
+ * minus (ox, oy). Out of line: one copy for the stages that need both. */
+void symline_i_pt_off(const symline_point *q, uint32_t level, int32_t ox, int32_t oy, int32_t *x,
+                      int32_t *y);
+
 /* Makes grid point q at `level` a full-resolution point: the nearest pixel
  * and the remainder, 1/128 px in -64..63 (the public symline_point). */
-static inline void symline_i_pt_to_full(symline_point *q, uint32_t level)
-{
-    /* Q7 full-resolution coordinates: half the Q8 ones (always even). */
-    const int32_t x7 = symline_i_pt_q8x(q, level) / 2, y7 = symline_i_pt_q8y(q, level) / 2;
-    const int32_t x = (x7 + 64) >> 7, y = (y7 + 64) >> 7;
-    q->x = (uint16_t)x;
-    q->y = (uint16_t)y;
-    q->fx = (int8_t)(x7 - x * 128);
-    q->fy = (int8_t)(y7 - y * 128);
-}
+void symline_i_pt_to_full(symline_point *q, uint32_t level);
 
 /* floor(sqrt(v)), bit by bit (no multiply, no division). */
 uint64_t symline_i_isqrt64(uint64_t v);

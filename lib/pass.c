@@ -67,7 +67,6 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
 {
     symline_point *q = d->r->points + at;
     symline_segment *s;
-    uint32_t i;
     if ((n << p->level) < d->cfg->min_length || n < SL_MIN_PIECE_POINTS) {
         return;
     }
@@ -96,9 +95,6 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
     s->axis = (uint8_t)p->axis;
     s->first = at;
     s->count = n;
-    for (i = 0; i < n; i++) {
-        symline_i_pt_to_full(&q[i], p->level);
-    }
 }
 
 /* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
@@ -146,6 +142,33 @@ SL_NOINLINE static void note_listed(symline_i_run *d, uint32_t n, uint32_t dropp
     note_need(d->r, sat_add(sat_add(d->npts, n), dropped));
 }
 
+/* Keeps only the points segments [first_seg, nseg) use, right after the
+ * earlier ones (from index w), as full-resolution points; returns the end.
+ * Apart from trace() so that its frame is not under the fit's. */
+SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, uint32_t nseg,
+                                        uint32_t w, uint32_t level)
+{
+    uint32_t k;
+    for (k = first_seg; k < nseg; k++) {
+        symline_segment *s = &r->segments[k];
+        uint32_t i;
+        /* w <= s->first: a forward copy. */
+        for (i = 0; i < s->count; i++) {
+            /* Converted in place (read only once), then copied field by
+             * field: a struct copy may become a libc memcpy call. */
+            symline_point *q = &r->points[s->first + i];
+            symline_i_pt_to_full(q, level);
+            r->points[w + i].x = q->x;
+            r->points[w + i].y = q->y;
+            r->points[w + i].fx = q->fx;
+            r->points[w + i].fy = q->fy;
+        }
+        s->first = w;
+        w += s->count;
+    }
+    return w;
+}
+
 /* Traces the pass's raster list (n points at d->npts) and keeps its
  * segments' points right after the earlier passes' ones. t: the tracer's
  * state, in the pass workspace. Apart from symline_i_pass_run() so that its frame
@@ -156,7 +179,7 @@ SL_NOINLINE static void trace(symline_i_run *d, const symline_i_pass *p, const u
     symline_result *r = d->r;
     const uint32_t base = d->npts;
     const uint32_t first_seg = d->nseg;
-    uint32_t tail = base + n, cnt, k, w;
+    uint32_t tail = base + n, cnt;
     bool cut = false;
     /* Chains go to the storage's free tail after the raster list. */
     symline_i_tracer_init(t, point_at(r, base), n, row_start, p->h);
@@ -181,21 +204,7 @@ SL_NOINLINE static void trace(symline_i_run *d, const symline_i_pass *p, const u
     } else {
         note_need(r, n == 0u ? base : sat_add(tail, 1u));
     }
-    /* Keep only the points the new segments use, right after the earlier ones. */
-    w = base;
-    for (k = first_seg; k < d->nseg; k++) {
-        symline_segment *s = &r->segments[k];
-        uint32_t i;
-        for (i = 0; i < s->count; i++) {
-            r->points[w + i].x = r->points[s->first + i].x;
-            r->points[w + i].y = r->points[s->first + i].y;
-            r->points[w + i].fx = r->points[s->first + i].fx;
-            r->points[w + i].fy = r->points[s->first + i].fy;
-        }
-        s->first = w;
-        w += s->count;
-    }
-    d->npts = w;
+    d->npts = keep_points(r, first_seg, d->nseg, base, p->level);
     d->prev_seg = d->nseg;
 }
 

@@ -10,9 +10,6 @@
 #include "common.h"
 #include "symline/detect.h"
 
-/* SYMLINE_OK, or SYMLINE_ERR_CONFIG when a field is out of its range. */
-symline_status symline_i_config_check(const symline_config *c);
-
 /* The configuration's ranges, then ws_size against the workspace query:
  * SYMLINE_OK, SYMLINE_ERR_CONFIG or SYMLINE_ERR_BUFFER (img already checked). */
 symline_status symline_i_config_ws_check(const symline_image *img, const symline_config *cfg,

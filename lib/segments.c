@@ -14,66 +14,57 @@
 #define SL_COS2_DEN 1000
 
 /* Turn at point i: cos of the angle between the chords i-K..i and i..i+K,
- * as a signed ratio num/den of squares (num = dot*|dot|, den = |v1|^2 |v2|^2). */
-static void turn_at(const symline_point *p, uint32_t i, int64_t *num, int64_t *den)
+ * as a signed ratio num/den of squares (num = dot*|dot|, den = |v1|^2 |v2|^2).
+ * p is a traced chain: neighbours differ by at most 1 in x and y, so each
+ * chord component is within +-K and every product here fits 32 bits. */
+static void turn_at(const symline_point *p, uint32_t i, int32_t *num, int32_t *den)
 {
     const int32_t ax = (int32_t)p[i].x - (int32_t)p[i - SL_CORNER_SPAN].x;
     const int32_t ay = (int32_t)p[i].y - (int32_t)p[i - SL_CORNER_SPAN].y;
     const int32_t bx = (int32_t)p[i + SL_CORNER_SPAN].x - (int32_t)p[i].x;
     const int32_t by = (int32_t)p[i + SL_CORNER_SPAN].y - (int32_t)p[i].y;
-    const int64_t dot = (int64_t)ax * bx + (int64_t)ay * by;
+    const int32_t dot = ax * bx + ay * by;
     *num = dot * (dot < 0 ? -dot : dot);
-    *den = ((int64_t)ax * ax + (int64_t)ay * ay) * ((int64_t)bx * bx + (int64_t)by * by);
-}
-
-static bool is_corner(int64_t num, int64_t den)
-{
-    return num * SL_COS2_DEN < (int64_t)SL_COS2_NUM * den;
+    *den = (ax * ax + ay * ay) * (bx * bx + by * by);
 }
 
 uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
 {
-    uint32_t i;
-    if (n < 2u * SL_CORNER_SPAN + 1u) {
-        return n;
-    }
+    /* The sharpest point of the first run of turning points; n if none (and
+     * for chains too short for the test: the loop does not run). */
+    uint32_t i, best = n;
+    int32_t bnum = 0, bden = 1;
     for (i = SL_CORNER_SPAN; i + SL_CORNER_SPAN < n; i++) {
-        int64_t num, den;
+        int32_t num, den;
         turn_at(p, i, &num, &den);
-        if (is_corner(num, den)) {
-            /* Cut at the sharpest point of this run of turning points. */
-            uint32_t best = i, j;
-            int64_t bnum = num, bden = den;
-            for (j = i + 1u; j + SL_CORNER_SPAN < n; j++) {
-                int64_t jn, jd;
-                turn_at(p, j, &jn, &jd);
-                if (!is_corner(jn, jd)) {
-                    break;
-                }
-                /* jn/jd < bnum/bden, denominators positive (chords of K steps are never empty). */
-                if (jn * bden < bnum * jd) {
-                    best = j;
-                    bnum = jn;
-                    bden = jd;
-                }
+        if (num * SL_COS2_DEN >= SL_COS2_NUM * den) {
+            if (best != n) {
+                break; /* the run ended */
             }
-            return best;
+            continue;
+        }
+        /* num/den < bnum/bden, denominators positive (chords of K steps are never empty). */
+        if (best == n || num * bden < bnum * den) {
+            best = i;
+            bnum = num;
+            bden = den;
         }
     }
-    return n;
+    return best;
 }
 
 uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
                                 int32_t py)
 {
-    const int64_t wx = (int64_t)px - ax, wy = (int64_t)py - ay;
+    /* Differences of Q8 coordinates of one frame fit 25 bits; products 64. */
+    const int32_t wx = px - ax, wy = py - ay;
     uint64_t len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
     int64_t c;
     uint64_t cross;
     if (len == 0u) {
-        return (uint32_t)symline_i_isqrt64((uint64_t)(wx * wx + wy * wy));
+        return (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)wx * wx + (int64_t)wy * wy));
     }
-    c = wx * dy - wy * dx;
+    c = (int64_t)wx * dy - (int64_t)wy * dx;
     cross = (uint64_t)(c < 0 ? -c : c);
     return symline_i_div_q8(cross, len);
 }
@@ -82,10 +73,11 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
  * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-static inline int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0, int32_t y0,
-                                  int32_t dx, int32_t dy)
+SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0,
+                                       int32_t y0, int32_t dx, int32_t dy)
 {
-    const int32_t wx = symline_i_pt_q8x(q, level) - x0, wy = symline_i_pt_q8y(q, level) - y0;
+    int32_t wx, wy;
+    symline_i_pt_off(q, level, x0, y0, &wx, &wy);
     return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
                           : (int64_t)wx * dy - (int64_t)wy * dx;
 }
@@ -140,8 +132,8 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
 bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
                         uint32_t thr)
 {
-    const int64_t dx = (int64_t)x1 - x0, dy = (int64_t)y1 - y0;
-    const uint64_t chord = symline_i_isqrt64((uint64_t)(dx * dx + dy * dy));
+    const int32_t dx = x1 - x0, dy = y1 - y0; /* 25 bits: Q8 coordinates of one frame */
+    const uint64_t chord = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
     return max_dev > thr && (uint64_t)max_dev * 32u > chord;
 }
 
@@ -164,52 +156,71 @@ static void shrink(int64_t *a, int64_t *b, unsigned bits)
  * the scatter has no direction (all points equal).
  */
 #define SL_FIT_SAMPLES 2048u
+
+/* Point q in Q4 full resolution relative to (ox, oy) (Q8) minus (mx, my) (Q4). */
+SL_NOINLINE static void rel_q4(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
+                               int32_t mx, int32_t my, int32_t *x, int32_t *y)
+{
+    *x = (symline_i_pt_q8x(q, level) - ox) / 16 - mx;
+    *y = (symline_i_pt_q8y(q, level) - oy) / 16 - my;
+}
+
 SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
                                 symline_segment *s)
 {
     /* Coordinates in Q4 full resolution, relative to the first point. */
-    const int32_t ox = symline_i_pt_q8x(&p[0], level), oy = symline_i_pt_q8y(&p[0], level);
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
-    int32_t sx = 0, sy = 0, mx, my, ux, uy;
-    int64_t a = 0, b = 0, c = 0, r, lam, vx, vy, len;
+    int32_t ox, oy, sx = 0, sy = 0, mx, my, ux, uy, len;
+    int64_t a = 0, b = 0, c = 0, r, lam, vx, vy;
     uint32_t i, cnt = 0u;
+    symline_i_pt_off(&p[0], level, 0, 0, &ox, &oy);
     for (i = 0; i < n; i += step) {
-        sx += (symline_i_pt_q8x(&p[i], level) - ox) / 16;
-        sy += (symline_i_pt_q8y(&p[i], level) - oy) / 16;
+        int32_t qx, qy;
+        rel_q4(&p[i], level, ox, oy, 0, 0, &qx, &qy);
+        sx += qx;
+        sy += qy;
         cnt++;
     }
     mx = sx / (int32_t)cnt;
     my = sy / (int32_t)cnt;
     for (i = 0; i < n; i += step) {
-        const int64_t dx = (symline_i_pt_q8x(&p[i], level) - ox) / 16 - mx;
-        const int64_t dy = (symline_i_pt_q8y(&p[i], level) - oy) / 16 - my;
-        a += dx * dx;
-        b += dx * dy;
-        c += dy * dy;
+        int32_t dx, dy;
+        rel_q4(&p[i], level, ox, oy, mx, my, &dx, &dy);
+        a += (int64_t)dx * dx;
+        b += (int64_t)dx * dy;
+        c += (int64_t)dy * dy;
     }
-    while (a >= ((int64_t)1 << 30) || c >= ((int64_t)1 << 30) || b >= ((int64_t)1 << 30) ||
-           b <= -((int64_t)1 << 30)) {
+    /* Until a, c (never negative) and |b| are below 2^30. */
+    while ((a | c) >= ((int64_t)1 << 30) ||
+           (uint64_t)(b + ((int64_t)1 << 30) - 1) > ((uint64_t)1 << 31) - 2u) {
         a >>= 1;
         b /= 2;
         c >>= 1;
     }
-    r = (int64_t)symline_i_isqrt64((uint64_t)((a - c) * (a - c) / 4 + b * b));
+    {
+        /* Below 2^30 each: 32-bit operands, 64-bit products. */
+        const int32_t ac = (int32_t)a - (int32_t)c, b32 = (int32_t)b;
+        r = (int64_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
+    }
     lam = (a + c) / 2 + r;
     vx = a >= c ? lam - c : b;
     vy = a >= c ? b : lam - a;
     shrink(&vx, &vy, 15);
-    len = (int64_t)symline_i_isqrt64((uint64_t)(vx * vx + vy * vy));
+    /* Both within +-2^15 now: 32 bits suffice. */
+    ux = (int32_t)vx;
+    uy = (int32_t)vy;
+    len = (int32_t)symline_i_isqrt64((uint32_t)(ux * ux + uy * uy));
     if (len == 0) {
         return false;
     }
     /* Unit direction in Q15 (32-bit divisions). */
-    ux = (int32_t)(vx * 32768) / (int32_t)len;
-    uy = (int32_t)(vy * 32768) / (int32_t)len;
+    ux = ux * 32768 / len;
+    uy = uy * 32768 / len;
     for (i = 0; i < 2u; i++) {
-        const symline_point *q = &p[i == 0u ? 0u : n - 1u];
-        const int64_t qx = (symline_i_pt_q8x(q, level) - ox) / 16 - mx;
-        const int64_t qy = (symline_i_pt_q8y(q, level) - oy) / 16 - my;
-        const int64_t t = qx * ux + qy * uy; /* Q4 * Q15 */
+        int32_t qx, qy;
+        int64_t t;
+        rel_q4(&p[i == 0u ? 0u : n - 1u], level, ox, oy, mx, my, &qx, &qy);
+        t = (int64_t)qx * ux + (int64_t)qy * uy; /* Q4 * Q15 */
         /* Back to Q8 absolute: mean + t*u, Q4*Q15*Q15 -> Q8 is a shift by 26. */
         const int32_t ex = ox + mx * 16 + (int32_t)((t * ux) >> 26);
         const int32_t ey = oy + my * 16 + (int32_t)((t * uy) >> 26);
@@ -232,6 +243,14 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
  * thirds of its sagitta: a flat piece of the centre circle is told from a line
  * even where its largest deviation stays under the curve threshold.
  */
+/* sum / (cnt len) in Q7 grid pixels, signed (Q7 keeps a difference of two in range). */
+SL_NOINLINE static int32_t mean_q7(int64_t sum, uint32_t cnt, uint64_t len)
+{
+    const uint32_t a =
+        symline_i_div_q8((uint64_t)(sum < 0 ? -sum : sum) << SL_Q8_SHIFT, (uint64_t)cnt * len);
+    return sum < 0 ? -(int32_t)(a >> 1) : (int32_t)(a >> 1);
+}
+
 uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
 {
     /* Grid coordinates: differences fit 32 bits, products 64. */
@@ -240,13 +259,13 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     const int64_t dd = (int64_t)dx * dx + (int64_t)dy * dy;
     const uint64_t len = symline_i_isqrt64((uint64_t)dd);
     int64_t sm = 0, so = 0;
-    uint32_t nm = 0u, no = 0u, i, am, ao;
-    int32_t mm, mo, d;
+    uint32_t nm = 0u, no = 0u, i;
+    int32_t d;
     for (i = 0; i < n; i++) {
         const int32_t wx = (int32_t)p[i].x - x0, wy = (int32_t)p[i].y - y0;
         const int64_t t = 4 * ((int64_t)wx * dx + (int64_t)wy * dy);
         const int64_t c = (int64_t)wx * dy - (int64_t)wy * dx;
-        if (t >= dd && t <= 3 * dd) {
+        if ((uint64_t)(t - dd) <= (uint64_t)(2 * dd)) { /* dd <= t <= 3 dd */
             sm += c;
             nm++;
         } else {
@@ -257,12 +276,7 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     if (nm == 0u || no == 0u || len == 0u) {
         return 0u;
     }
-    /* Means in Q8 grid pixels: sum * 256 / (count * len). */
-    am = symline_i_div_q8((uint64_t)(sm < 0 ? -sm : sm) << SL_Q8_SHIFT, (uint64_t)nm * len);
-    ao = symline_i_div_q8((uint64_t)(so < 0 ? -so : so) << SL_Q8_SHIFT, (uint64_t)no * len);
-    mm = sm < 0 ? -(int32_t)(am >> 1) : (int32_t)(am >> 1);
-    mo = so < 0 ? -(int32_t)(ao >> 1) : (int32_t)(ao >> 1);
-    d = mm - mo; /* in Q7 to keep the difference in range */
+    d = mean_q7(sm, nm, len) - mean_q7(so, no, len);
     d = d < 0 ? -d : d;
     return (uint32_t)d << 1;
 }
@@ -270,10 +284,8 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
 /* The chord of p[0..n-1]'s first and last point as s's ends. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
-    s->x0 = symline_i_pt_q8x(&p[0], level);
-    s->y0 = symline_i_pt_q8y(&p[0], level);
-    s->x1 = symline_i_pt_q8x(&p[n - 1u], level);
-    s->y1 = symline_i_pt_q8y(&p[n - 1u], level);
+    symline_i_pt_off(&p[0], level, 0, 0, &s->x0, &s->y0);
+    symline_i_pt_off(&p[n - 1u], level, 0, 0, &s->x1, &s->y1);
 }
 
 void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
@@ -298,8 +310,8 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
                               int32_t py, int32_t tol)
 {
     /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
-    int32_t dx, dy, wx, wy, t2;
-    int64_t t, dd, c;
+    int32_t dx, dy, wx, wy, t2, c;
+    int64_t t, dd;
     if ((px < ax - tol && px < bx - tol) || (px > ax + tol && px > bx + tol) ||
         (py < ay - tol && py < by - tol) || (py > ay + tol && py > by + tol)) {
         return false;
@@ -310,28 +322,27 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
     wy = py - ay;
     t = (int64_t)wx * dx + (int64_t)wy * dy;
     dd = (int64_t)dx * dx + (int64_t)dy * dy;
-    if (t <= 0 || dd == 0) {
-        return (int64_t)wx * wx + (int64_t)wy * wy <= (int64_t)tol * tol;
-    }
-    if (t >= dd) {
-        const int32_t ex = px - bx, ey = py - by;
+    if (t <= 0 || t >= dd) {
+        /* Beyond an end (or no chord, t = 0): the distance to that end. */
+        const int32_t ex = t <= 0 ? wx : px - bx, ey = t <= 0 ? wy : py - by;
         return (int64_t)ex * ex + (int64_t)ey * ey <= (int64_t)tol * tol;
     }
     /* Inside the chord: |w x d| <= tol |d|, squared. Coarsen all lengths alike
      * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
      * no square root and no division, so this stays cheap and shallow. */
     t2 = tol;
-    while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 || wx > 32767 || wx < -32767 ||
-           wy > 32767 || wy < -32767 || t2 > 32767) {
+    while (SL_OUTSIDE(dx, 32767) || SL_OUTSIDE(dy, 32767) || SL_OUTSIDE(wx, 32767) ||
+           SL_OUTSIDE(wy, 32767) || t2 > 32767) {
         dx /= 2;
         dy /= 2;
         wx /= 2;
         wy /= 2;
         t2 /= 2;
     }
-    c = (int64_t)wx * dy - (int64_t)wy * dx;
-    return (uint64_t)(c * c) <=
-           (uint64_t)((int64_t)t2 * t2) * (uint64_t)((int64_t)dx * dx + (int64_t)dy * dy);
+    /* All within +-32767 now: the cross and the squares fit 32 bits. */
+    c = wx * dy - wy * dx;
+    return (int64_t)c * c <=
+           (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
 }
 
 bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,

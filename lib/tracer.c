@@ -47,7 +47,7 @@ void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
 static int32_t find(const symline_i_tracer *t, int32_t x, int32_t y)
 {
     uint32_t lo, hi;
-    if (x < 0 || y < 0 || (uint32_t)y >= t->h || x > 65535) {
+    if ((uint32_t)x > 65535u || (uint32_t)y >= t->h) { /* negatives wrap: out too */
         return -1;
     }
     lo = t->row_start[y];
@@ -88,36 +88,32 @@ static void visit(symline_i_tracer *t, int32_t idx)
     t->pts[idx].y = SL_VISITED;
 }
 
-/* First unvisited neighbour of (x, y) in direction order 0..7, or -1; its direction in *dir. */
-static int32_t any_unvisited(const symline_i_tracer *t, int32_t x, int32_t y, uint32_t *dir)
-{
-    uint32_t d;
-    for (d = 0; d < 8u; d++) {
-        const int32_t idx = find(t, x + DX[d], y + DY[d]);
-        if (unvisited(t, idx)) {
-            *dir = d;
-            return idx;
-        }
-    }
-    return -1;
-}
+/* The direction of a start point's first step: any, in direction order 0..7. */
+#define SL_ANY_DIR 8u
 
-/* Follows the line from (x, y), last step direction dir; appends to dst from *pos. */
-static void follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_point *dst,
+/* Follows the line from (x, y), last step direction dir (or SL_ANY_DIR);
+ * appends to dst from *pos. False when a start point (SL_ANY_DIR) has no
+ * unvisited neighbour. */
+static bool follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_point *dst,
                    uint32_t cap, uint32_t *pos, bool *cut)
 {
+    bool moved = false;
     for (;;) {
+        const uint32_t tries = dir == SL_ANY_DIR ? 8u : 5u;
         uint32_t o;
-        bool found = false;
-        if (*pos >= cap) {
+        if (dir != SL_ANY_DIR && *pos >= cap) {
             *cut = true;
-            return;
+            return true;
         }
-        for (o = 0; o < 5u; o++) {
-            const uint32_t d = (uint32_t)((int32_t)dir + TURN[o]) & 7u;
+        for (o = 0; o < tries; o++) {
+            const uint32_t d = dir == SL_ANY_DIR ? o : (uint32_t)((int32_t)dir + TURN[o]) & 7u;
             const int32_t nx = x + DX[d], ny = y + DY[d];
             const int32_t idx = find(t, nx, ny);
             if (unvisited(t, idx)) {
+                if (*pos >= cap) {
+                    *cut = true;
+                    return true;
+                }
                 visit(t, idx);
                 dst[*pos].x = (uint16_t)nx;
                 dst[*pos].y = (uint16_t)ny;
@@ -125,47 +121,28 @@ static void follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, syml
                 x = nx;
                 y = ny;
                 dir = d;
-                found = true;
                 break;
             }
         }
-        if (!found) {
-            return;
+        if (o == tries) {
+            return moved;
         }
+        moved = true;
     }
 }
 
 void symline_i_reverse_points(symline_point *p, uint32_t n)
 {
-    uint32_t i;
-    /* Field by field: a struct swap may become a libc memcpy call. */
+    uint32_t i, k;
+    /* Byte by byte: a struct swap may become a libc memcpy call. */
     for (i = 0; i < n / 2u; i++) {
-        const uint16_t x = p[i].x, y = p[i].y;
-        const int8_t fx = p[i].fx, fy = p[i].fy;
-        p[i].x = p[n - 1u - i].x;
-        p[i].y = p[n - 1u - i].y;
-        p[i].fx = p[n - 1u - i].fx;
-        p[i].fy = p[n - 1u - i].fy;
-        p[n - 1u - i].x = x;
-        p[n - 1u - i].y = y;
-        p[n - 1u - i].fx = fx;
-        p[n - 1u - i].fy = fy;
+        uint8_t *a = (uint8_t *)&p[i], *b = (uint8_t *)&p[n - 1u - i];
+        for (k = 0; k < sizeof(symline_point); k++) {
+            const uint8_t v = a[k];
+            a[k] = b[k];
+            b[k] = v;
+        }
     }
-}
-
-/* Takes the first step to neighbour idx (direction dir) and follows from there. */
-static void step_and_follow(symline_i_tracer *t, int32_t x, int32_t y, int32_t idx, uint32_t dir,
-                            symline_point *dst, uint32_t cap, uint32_t *pos, bool *cut)
-{
-    if (*pos >= cap) {
-        *cut = true;
-        return;
-    }
-    visit(t, idx);
-    dst[*pos].x = (uint16_t)(x + DX[dir]);
-    dst[*pos].y = (uint16_t)(y + DY[dir]);
-    (*pos)++;
-    follow(t, x + DX[dir], y + DY[dir], dir, dst, cap, pos, cut);
 }
 
 bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap, uint32_t *count,
@@ -178,40 +155,26 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
     }
     while (t->phase < 2u) {
         while (t->scan < t->n) {
-            const uint32_t i = t->scan;
-            uint32_t x, y, dir = 0u, pos;
-            int32_t first;
-            if (t->pts[i].y == SL_VISITED) {
-                t->scan++;
-                continue;
-            }
-            x = t->pts[i].x;
-            y = t->pts[i].y;
-            if (t->phase == 0u && symline_i_neighbours(t, x, y) != 1u) {
-                t->scan++;
-                continue;
-            }
-            first = any_unvisited(t, (int32_t)x, (int32_t)y, &dir);
-            if (first < 0) {
-                /* Nothing left to follow from here: a lone rest of a traced line. */
-                visit(t, (int32_t)i);
-                t->scan++;
+            /* The scan moves past i either way (a chain from i has visited it). */
+            const uint32_t i = t->scan++;
+            const uint32_t x = t->pts[i].x, y = t->pts[i].y;
+            uint32_t pos = 1u;
+            if (y == SL_VISITED || (t->phase == 0u && symline_i_neighbours(t, x, y) != 1u)) {
                 continue;
             }
             visit(t, (int32_t)i);
+            if (!follow(t, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
+                continue; /* nothing left to follow from here: a lone rest of a traced line */
+            }
             dst[0].x = (uint16_t)x;
             dst[0].y = (uint16_t)y;
-            pos = 1u;
-            step_and_follow(t, (int32_t)x, (int32_t)y, first, dir, dst, cap, &pos, cut);
-            if (t->phase == 1u) {
-                /* Started inside a line: trace the other half and put it in front. */
+            if (t->phase == 1u && pos < cap) {
+                /* Started inside a line: trace the other half and put it in
+                 * front (nothing there: both reversals undo each other). */
                 const uint32_t fwd = pos;
-                first = any_unvisited(t, (int32_t)x, (int32_t)y, &dir);
-                if (first >= 0 && pos < cap) {
-                    step_and_follow(t, (int32_t)x, (int32_t)y, first, dir, dst, cap, &pos, cut);
-                    symline_i_reverse_points(dst, pos);
-                    symline_i_reverse_points(dst + (pos - fwd), fwd);
-                }
+                (void)follow(t, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut);
+                symline_i_reverse_points(dst, pos);
+                symline_i_reverse_points(dst + (pos - fwd), fwd);
             }
             *count = pos;
             return true;
