@@ -43,36 +43,40 @@ void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
     t->phase = 0u;
 }
 
-/* Index of point (x, y) in the list, or -1. x, y may be out of range (then -1). */
-static int32_t find(const symline_i_tracer *t, int32_t x, int32_t y)
+/* Index of the first point of row y (< h) at x or right of it. */
+static uint32_t first_at(const symline_i_tracer *t, int32_t x, uint32_t y)
 {
-    uint32_t lo, hi;
-    if ((uint32_t)x > 65535u || (uint32_t)y >= t->h) { /* negatives wrap: out too */
-        return -1;
-    }
-    lo = t->row_start[y];
-    hi = t->row_start[y + 1];
+    uint32_t lo = t->row_start[y], hi = t->row_start[y + 1];
     while (lo < hi) {
         const uint32_t mid = lo + (hi - lo) / 2u;
-        const int32_t mx = (int32_t)t->pts[mid].x;
-        if (mx == x) {
-            return (int32_t)mid;
-        }
-        if (mx < x) {
+        if ((int32_t)t->pts[mid].x < x) {
             lo = mid + 1u;
         } else {
             hi = mid;
         }
     }
-    return -1;
+    return lo;
+}
+
+/* Index of point (x, y) in the list, or -1. x, y may be out of range (then -1). */
+static int32_t find(const symline_i_tracer *t, int32_t x, int32_t y)
+{
+    uint32_t i;
+    if ((uint32_t)x > 65535u || (uint32_t)y >= t->h) { /* negatives wrap: out too */
+        return -1;
+    }
+    i = first_at(t, x, (uint32_t)y);
+    return i < t->row_start[y + 1] && t->pts[i].x == x ? (int32_t)i : -1;
 }
 
 uint32_t symline_i_neighbours(const symline_i_tracer *t, uint32_t x, uint32_t y)
 {
-    uint32_t d, c = 0u;
-    for (d = 0; d < 8u; d++) {
-        if (find(t, (int32_t)x + DX[d], (int32_t)y + DY[d]) >= 0) {
-            c++;
+    /* One search per row (rows hold each x once), not one per direction. */
+    uint32_t r, i, c = 0u;
+    for (r = y - 1u; r != y + 2u; r++) {
+        for (i = r < t->h ? first_at(t, (int32_t)x - 1, r) : 0u;
+             r < t->h && i < t->row_start[r + 1] && t->pts[i].x <= x + 1u; i++) {
+            c += r != y || t->pts[i].x != x;
         }
     }
     return c;
