@@ -58,15 +58,26 @@ static uint32_t first_at(const symline_i_tracer *t, int32_t x, uint32_t y)
     return lo;
 }
 
-/* Index of point (x, y) in the list, or -1. x, y may be out of range (then -1). */
-static int32_t find(const symline_i_tracer *t, int32_t x, int32_t y)
+/* Index of point (nx, ny), a neighbour of (x, y), or -1 (also when out of
+ * range). lb[ny - y + 1]: where row ny's points from x - 1 on start, searched
+ * once per step and row (SL_NO_ROW until then), not once per direction. */
+#define SL_NO_ROW 0xFFFFFFFFu
+static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t y, int32_t nx,
+                    int32_t ny)
 {
-    uint32_t i;
-    if ((uint32_t)x > 65535u || (uint32_t)y >= t->h) { /* negatives wrap: out too */
+    uint32_t *k = &lb[ny - y + 1], i;
+    if ((uint32_t)nx > 65535u || (uint32_t)ny >= t->h) { /* negatives wrap: out too */
         return -1;
     }
-    i = first_at(t, x, (uint32_t)y);
-    return i < t->row_start[y + 1] && t->pts[i].x == x ? (int32_t)i : -1;
+    if (*k == SL_NO_ROW) {
+        *k = first_at(t, x - 1, (uint32_t)ny);
+    }
+    for (i = *k; i < t->row_start[ny + 1] && t->pts[i].x <= nx; i++) {
+        if (t->pts[i].x == nx) {
+            return (int32_t)i;
+        }
+    }
+    return -1;
 }
 
 uint32_t symline_i_neighbours(const symline_i_tracer *t, uint32_t x, uint32_t y)
@@ -104,7 +115,7 @@ static bool follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, syml
     bool moved = false;
     for (;;) {
         const uint32_t tries = dir == SL_ANY_DIR ? 8u : 5u;
-        uint32_t o;
+        uint32_t o, lb[3] = {SL_NO_ROW, SL_NO_ROW, SL_NO_ROW};
         if (dir != SL_ANY_DIR && *pos >= cap) {
             *cut = true;
             return true;
@@ -112,7 +123,7 @@ static bool follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, syml
         for (o = 0; o < tries; o++) {
             const uint32_t d = dir == SL_ANY_DIR ? o : (uint32_t)((int32_t)dir + TURN[o]) & 7u;
             const int32_t nx = x + DX[d], ny = y + DY[d];
-            const int32_t idx = find(t, nx, ny);
+            const int32_t idx = find(t, lb, x, y, nx, ny);
             if (unvisited(t, idx)) {
                 if (*pos >= cap) {
                     *cut = true;
