@@ -59,37 +59,32 @@ static bool continues(const symline_segment *s, const symline_segment *c, const 
     return false;
 }
 
-/* Whether point q's pixel lies within the box b (x0, x1, y0, y1; Q8). */
-static bool in_box(const symline_point *q, const int32_t *b)
+/* Whether point q can lie within tol (Q8, in x and y) of an end of s, by
+ * its pixel (half a pixel more): a cheap test before continues(), since
+ * every curve is asked for every line. */
+static bool near_end(const symline_point *q, const symline_segment *s, int32_t tol)
 {
+    const int32_t m = tol + (int32_t)SL_Q8_ONE / 2;
     const int32_t x = (int32_t)q->x << SL_Q8_SHIFT, y = (int32_t)q->y << SL_Q8_SHIFT;
-    return x >= b[0] && x <= b[1] && y >= b[2] && y <= b[3];
+    return (!SL_OUTSIDE(x - s->x0, m) && !SL_OUTSIDE(y - s->y0, m)) ||
+           (!SL_OUTSIDE(x - s->x1, m) && !SL_OUTSIDE(y - s->y1, m));
 }
 
 void symline_i_curve_join(symline_result *r)
 {
     uint32_t i, k;
-    int32_t b[4];
     /* One round in storage order: passes run fine scale first, horizontal
      * before vertical, so most flat pieces come after the curve they continue. */
     for (i = 0; i < r->segment_count; i++) {
         symline_segment *s = &r->segments[i];
         const int32_t tol = (int32_t)(SL_JOIN_TOL_Q8 + symline_i_block_q8(s->level));
-        /* Where a curve's end can continue s: within tol of an end of s, and
-         * half a pixel more for the end's pixel (a cheap test before the
-         * exact one: every curve is asked for every line). */
-        const int32_t m = tol + (int32_t)SL_Q8_ONE / 2;
-        b[0] = (s->x0 < s->x1 ? s->x0 : s->x1) - m;
-        b[1] = (s->x0 < s->x1 ? s->x1 : s->x0) + m;
-        b[2] = (s->y0 < s->y1 ? s->y0 : s->y1) - m;
-        b[3] = (s->y0 < s->y1 ? s->y1 : s->y0) + m;
         /* A merged line has its points piece after piece, not in one run a
          * curve could be drawn through. */
         for (k = 0; s->kind == SYMLINE_KIND_LINE && !s->merged && k < r->segment_count; k++) {
             const symline_segment *c = &r->segments[k];
             if (c->kind == SYMLINE_KIND_CURVE &&
-                (in_box(&r->points[c->first], b) ||
-                 in_box(&r->points[c->first + c->count - 1u], b)) &&
+                (near_end(&r->points[c->first], s, tol) ||
+                 near_end(&r->points[c->first + c->count - 1u], s, tol)) &&
                 continues(s, c, r->points, tol)) {
                 s->kind = SYMLINE_KIND_CURVE;
             }
