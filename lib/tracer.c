@@ -59,14 +59,15 @@ static uint32_t first_at(const symline_i_tracer *t, int32_t x, uint32_t y)
 }
 
 /* Index of point (nx, ny), a neighbour of (x, y), or -1 (also when out of
- * range). lb[ny - y + 1]: where row ny's points from x - 1 on start, searched
- * once per step and row (SL_NO_ROW until then), not once per direction. */
+ * range: no point has an x of -1 or 65536). lb[ny - y + 1]: where row ny's
+ * points from x - 1 on start, searched once per step and row (SL_NO_ROW
+ * until then), not once per direction. */
 #define SL_NO_ROW 0xFFFFFFFFu
 static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t y, int32_t nx,
                     int32_t ny)
 {
     uint32_t *k = &lb[ny - y + 1], i;
-    if ((uint32_t)nx > 65535u || (uint32_t)ny >= t->h) { /* negatives wrap: out too */
+    if ((uint32_t)ny >= t->h) { /* negatives wrap: out too */
         return -1;
     }
     if (*k == SL_NO_ROW) {
