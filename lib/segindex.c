@@ -216,8 +216,8 @@ bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result 
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
             const uint32_t e = ix->ids[k];
             if ((e & SL_PIECE) != 0u
-                    ? symline_i_near_piece(&r->points[e - SL_PIECE], &r->points[ix->ids[++k]], x,
-                                           y, tol_q8)
+                    ? symline_i_near_piece(&r->points[e - SL_PIECE], &r->points[ix->ids[++k]], x, y,
+                                           tol_q8)
                     : symline_i_near_segment(&r->segments[e], r->points, x, y, tol_q8)) {
                 return true;
             }
