@@ -116,7 +116,8 @@ static bool follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, syml
     bool moved = false;
     for (;;) {
         const uint32_t tries = dir == SL_ANY_DIR ? 8u : 5u;
-        uint32_t o, lb[3] = {SL_NO_ROW, SL_NO_ROW, SL_NO_ROW};
+        uint32_t o, lb[3];
+        lb[0] = lb[1] = lb[2] = SL_NO_ROW; /* not an initialiser: no memcpy call */
         if (dir != SL_ANY_DIR && *pos >= cap) {
             *cut = true;
             return true;
