@@ -110,7 +110,7 @@ static size_t cols_bytes(uint32_t nc)
 }
 
 /* Grid rows of the carpet model's band. */
-static uint32_t band_rows(uint32_t nr, const symline_field_config *fc)
+SL_NOINLINE static uint32_t band_rows(uint32_t nr, const symline_field_config *fc)
 {
     const uint32_t nb = (nr * fc->band_pct + 99u) / 100u; /* nr <= 32768: 32 bits */
     return nb < 1u ? 1u : nb;
@@ -191,7 +191,7 @@ static void row_cells(const symline_image *img, const symline_i_fstate *f, uint3
 }
 
 /* Smallest bin value v with at least half the count at or below it. */
-static uint32_t hist_median(const uint32_t *hist, uint32_t total)
+SL_NOINLINE static uint32_t hist_median(const uint32_t *hist, uint32_t total)
 {
     uint32_t i, acc = 0u;
     for (i = 0; i < SL_FIELD_BINS; i++) {
@@ -338,7 +338,7 @@ SL_NOINLINE static void support_filter(const symline_i_fstate *f, uint32_t k, sy
     }
 }
 
-static int32_t col_x(const symline_i_fstate *f, uint32_t c, uint32_t w)
+SL_NOINLINE static int32_t col_x(const symline_i_fstate *f, uint32_t c, uint32_t w)
 {
     uint32_t x = c * f->sx + f->sx / 2u;
     if (c == 0u) {

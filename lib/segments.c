@@ -53,16 +53,22 @@ uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
     return best;
 }
 
+/* The length of (dx, dy), rounded down; 32-bit operands, 64-bit squares. */
+SL_NOINLINE static uint64_t hypot_q(int32_t dx, int32_t dy)
+{
+    return symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+}
+
 uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
                                 int32_t py)
 {
     /* Differences of Q8 coordinates of one frame fit 25 bits; products 64. */
     const int32_t wx = px - ax, wy = py - ay;
-    uint64_t len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    uint64_t len = hypot_q(dx, dy);
     int64_t c;
     uint64_t cross;
     if (len == 0u) {
-        return (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)wx * wx + (int64_t)wy * wy));
+        return (uint32_t)hypot_q(wx, wy);
     }
     c = (int64_t)wx * dy - (int64_t)wy * dx;
     cross = (uint64_t)(c < 0 ? -c : c);
@@ -120,7 +126,7 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
     if ((dx | dy) == 0) {
         return (uint32_t)symline_i_isqrt64(best);
     }
-    len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    len = hypot_q(dx, dy);
     /* floor(floor(best / win) / len) = floor(best / (win len)): no 64-bit
      * division (its library helper's frame would deepen the stack). */
     return symline_i_div_q8(best, len * win);
@@ -133,7 +139,7 @@ bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t
                         uint32_t thr)
 {
     const int32_t dx = x1 - x0, dy = y1 - y0; /* 25 bits: Q8 coordinates of one frame */
-    const uint64_t chord = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    const uint64_t chord = hypot_q(dx, dy);
     return max_dev > thr && (uint64_t)max_dev * 32u > chord;
 }
 
