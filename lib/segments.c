@@ -143,16 +143,6 @@ bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t
     return max_dev > thr && (uint64_t)max_dev * 32u > chord;
 }
 
-/* Shifts the pair right until both magnitudes are below 2^bits (keeps the ratio). */
-static void shrink(int64_t *a, int64_t *b, unsigned bits)
-{
-    const int64_t lim = (int64_t)1 << bits;
-    while (*a >= lim || *a <= -lim || *b >= lim || *b <= -lim) {
-        *a /= 2;
-        *b /= 2;
-    }
-}
-
 /*
  * Least-squares line through the points (principal axis of their scatter),
  * in integers: the ends become the first and last point projected onto it,
@@ -177,7 +167,8 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     /* Coordinates in Q4 full resolution, relative to the first point. */
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
     int32_t ox, oy, sx = 0, sy = 0, mx, my, ux, uy, len;
-    int64_t a = 0, b = 0, c = 0, r, lam, vx, vy;
+    int64_t a = 0, b = 0, c = 0;
+    uint32_t lam;
     uint32_t i, cnt = 0u;
     symline_i_pt_off(&p[0], level, 0, 0, &ox, &oy);
     for (i = 0; i < n; i += step) {
@@ -204,17 +195,20 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
         c >>= 1;
     }
     {
-        /* Below 2^30 each: 32-bit operands, 64-bit products. */
-        const int32_t ac = (int32_t)a - (int32_t)c, b32 = (int32_t)b;
-        r = (int64_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
+        /* Below 2^30 each: 32-bit operands, 64-bit products. b^2 <= ac (less
+         * the halvings' rounding) keeps the larger eigenvalue lam = (a + c) / 2
+         * + r within a + c + 1 < 2^31. */
+        const int32_t a32 = (int32_t)a, c32 = (int32_t)c, ac = a32 - c32, b32 = (int32_t)b;
+        lam = (uint32_t)((a32 + c32) / 2) +
+              (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
+        ux = a32 >= c32 ? (int32_t)(lam - (uint32_t)c32) : b32;
+        uy = a32 >= c32 ? b32 : (int32_t)(lam - (uint32_t)a32);
     }
-    lam = (a + c) / 2 + r;
-    vx = a >= c ? lam - c : b;
-    vy = a >= c ? b : lam - a;
-    shrink(&vx, &vy, 15);
-    /* Both within +-2^15 now: 32 bits suffice. */
-    ux = (int32_t)vx;
-    uy = (int32_t)vy;
+    /* Halved until both are within +-2^15: their squares' sum fits 32 bits. */
+    while (SL_OUTSIDE(ux, 32767) || SL_OUTSIDE(uy, 32767)) {
+        ux /= 2;
+        uy /= 2;
+    }
     len = (int32_t)symline_i_isqrt64((uint32_t)(ux * ux + uy * uy));
     if (len == 0) {
         return false;
