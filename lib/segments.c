@@ -157,8 +157,9 @@ bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t
 SL_NOINLINE static void rel_q4(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
                                int32_t mx, int32_t my, int32_t *x, int32_t *y)
 {
-    *x = (symline_i_pt_q8x(q, level) - ox) / 16 - mx;
-    *y = (symline_i_pt_q8y(q, level) - oy) / 16 - my;
+    symline_i_pt_off(q, level, ox, oy, x, y);
+    *x = *x / 16 - mx;
+    *y = *y / 16 - my;
 }
 
 SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
