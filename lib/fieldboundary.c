@@ -153,6 +153,11 @@ static uint8_t rel_tex(uint32_t d, uint32_t sum, uint32_t n)
 static inline void cell_stats_n(const uint8_t *p, uint32_t n, uint32_t *mean, uint32_t *tex)
 {
     uint32_t i, sum = 0u, lows = 0u, pairs;
+    if (n == 0u) {
+        *mean = 0u; /* not reached: a cell starts inside its row */
+        *tex = 0u;
+        return;
+    }
     for (i = 0; i + 1u < n; i += 2u) {
         const uint32_t a = p[i], b = p[i + 1u];
         sum += a + b;
@@ -172,11 +177,8 @@ static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint3
     const uint32_t n = left < f->s ? left : f->s;
     if (n == 8u) {
         cell_stats_n(p, 8u, mean, tex); /* the usual cell: a constant count, unrolled */
-    } else if (n != 0u) {
-        cell_stats_n(p, n, mean, tex);
     } else {
-        *mean = 0u; /* not reached: a cell starts inside its row */
-        *tex = 0u;
+        cell_stats_n(p, n, mean, tex);
     }
 }
 

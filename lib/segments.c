@@ -169,7 +169,6 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
     int32_t ox, oy, sx = 0, sy = 0, mx, my, ux, uy, len;
     int64_t a = 0, b = 0, c = 0;
-    uint32_t lam;
     uint32_t i, cnt = 0u;
     symline_i_pt_off(&p[0], level, 0, 0, &ox, &oy);
     for (i = 0; i < n; i += step) {
@@ -200,8 +199,9 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
          * the halvings' rounding) keeps the larger eigenvalue lam = (a + c) / 2
          * + r within a + c + 1 < 2^31. */
         const int32_t a32 = (int32_t)a, c32 = (int32_t)c, ac = a32 - c32, b32 = (int32_t)b;
-        lam = (uint32_t)((a32 + c32) / 2) +
-              (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
+        const uint32_t lam =
+            (uint32_t)((a32 + c32) / 2) +
+            (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
         ux = a32 >= c32 ? (int32_t)(lam - (uint32_t)c32) : b32;
         uy = a32 >= c32 ? b32 : (int32_t)(lam - (uint32_t)a32);
     }
