@@ -326,9 +326,7 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
     out->segment_count = d->nseg;
     SL_STAGE(MERGE);
     if (cfg->merge_gap != 0u) {
-        const uint32_t gap =
-            cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? img->width / 8u : cfg->merge_gap;
-        symline_i_merge(out, gap, cfg->merge_dev_q8, cfg->curve_dev_q8);
+        symline_i_merge(d, cur, (size_t)(end - cur));
     }
     SL_STAGE(CURVEJOIN);
     if (cfg->curve_bend_q8 != 0u) {

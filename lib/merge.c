@@ -9,11 +9,13 @@
 #include "merge.h"
 
 #include "fixed.h"
+#include "segindex.h"
 #include "segments.h"
 #include "tracer.h"
 
-/* What joined_dev() returns for a pair whose joined piece would be a curve. */
-#define SL_JOINED_IS_CURVE UINT32_MAX
+/* What joined_dev() returns for a pair whose joined piece would be a curve
+ * (and pair_dev() for a pair that may not join). */
+#define SL_NO_JOIN UINT32_MAX
 
 static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
@@ -89,34 +91,32 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     return true;
 }
 
-/* The joined piece's max_dev, or SL_JOINED_IS_CURVE when it would be a curve. Kept
- * apart from mergeable() so their frames are never on the stack together. */
-SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_segment *b,
-                                       const symline_point *pts, const int32_t ends[4],
-                                       uint32_t curve_q8)
+/* The joined piece's max_dev, or SL_NO_JOIN when it would be a curve
+ * (ap, bp: the pieces' points). Kept apart from mergeable() so their frames
+ * are never on the stack together. */
+SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_point *ap,
+                                       const symline_segment *b, const symline_point *bp,
+                                       const int32_t ends[4], uint32_t curve_q8)
 {
-    uint32_t d =
-        symline_i_max_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    uint32_t sm =
-        symline_i_smooth_dev(pts + a->first, a->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    const uint32_t d2 =
-        symline_i_max_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    const uint32_t sm2 =
-        symline_i_smooth_dev(pts + b->first, b->count, 0u, ends[0], ends[1], ends[2], ends[3]);
-    d = d2 > d ? d2 : d;
-    sm = sm2 > sm ? sm2 : sm;
-    return symline_i_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_JOINED_IS_CURVE
-                                                                                : d;
+    uint32_t d = 0u, sm = 0u, k;
+    for (k = 0; k < 2u; k++) {
+        const symline_point *p = k ? bp : ap;
+        const uint32_t n = k ? b->count : a->count;
+        const uint32_t dk = symline_i_max_dev(p, n, 0u, ends[0], ends[1], ends[2], ends[3]);
+        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, ends[0], ends[1], ends[2], ends[3]);
+        d = dk > d ? dk : d;
+        sm = sk > sm ? sk : sm;
+    }
+    return symline_i_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_NO_JOIN : d;
 }
 
-/* A line may join; so may a piece taken for a curve whose points, smoothed,
- * stay within half the curve threshold of its chord: a straight piece whose
- * ridge jitters on the turf, not an arc of the circle. */
-static bool joinable(const symline_segment *s, const symline_point *pts, uint32_t curve_q8)
+/* A line may join; so may a piece taken for a curve whose points (p),
+ * smoothed, stay within half the curve threshold of its chord: a straight
+ * piece whose ridge jitters on the turf, not an arc of the circle. */
+static bool joinable(const symline_segment *s, const symline_point *p, uint32_t curve_q8)
 {
     return s->kind == SYMLINE_KIND_LINE ||
-           symline_i_smooth_dev(pts + s->first, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <=
-               curve_q8 / 2u;
+           symline_i_smooth_dev(p, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <= curve_q8 / 2u;
 }
 
 /* A segment's ends, Q8. */
@@ -141,68 +141,269 @@ static void copy_segment(symline_segment *d, const symline_segment *s)
     d->merged = s->merged;
 }
 
-/* Moves segment j's points right behind segment i's (i < j, ranges ordered), removes j. */
-static void absorb(symline_result *r, uint32_t i, uint32_t j)
+static void copy_points(symline_point *d, const symline_point *s, uint32_t n)
 {
+    uint32_t k;
+    for (k = 0; k < n; k++) {
+        d[k].x = s[k].x;
+        d[k].y = s[k].y;
+        d[k].fx = s[k].fx;
+        d[k].fy = s[k].fy;
+    }
+}
+
+/* A slot whose segment was absorbed (kind is a symline_kind otherwise); the
+ * slots are compacted when the merge is done, so that a slot keeps its number
+ * in the grid of ends meanwhile. */
+#define SL_GONE 0xFFu
+#define SL_NO_NODE 0xFFFFFFFFu
+
+/*
+ * The merge's state, and what makes it near-linear without changing a
+ * single join:
+ * - The grid of ends: node 2 s + e (end e of slot s) in the list of the
+ *   32 px cell of that end (head, next; slots [0, indexed) entered), built
+ *   at the start of each round. A piece j joining piece i has an end within
+ *   the gap of one of i's ends and within the merge deviation of i's line,
+ *   so the cells along i's line, stretched by the gap past both ends, list
+ *   every j that can join i. Within a round only the piece in hand grows
+ *   and the later pieces it takes are marked gone, so the grid of the
+ *   round's start is exact for every later piece; the candidates are tried
+ *   in slot order, as all pairs would be.
+ * - The layout: rather than rotating every point between two joined pieces
+ *   into place (which made the joins of a cluttered frame quadratic in its
+ *   points), each piece's points are copied in slot order to the free end
+ *   of the point storage (out), a join appending the absorbed piece's
+ *   points, and copied back at the end of a round: the layout the rotations
+ *   give. Without room for it (or with points not laid out piece after
+ *   piece in slot order), the rotations.
+ */
+typedef struct merger {
+    symline_result *r;
+    uint32_t n; /* slots */
+    uint64_t gap2;
+    uint32_t gap_q8, dev_q8, curve_q8;
+    uint32_t cols, rows; /* of the grid; cols 0: no grid, every later piece is tried */
+    int32_t margin;      /* Q8, across i's line */
+    uint32_t *head, *next, *cand, cand_cap, indexed;
+    symline_point *out; /* NULL: rotations */
+    uint32_t pos;       /* where the piece in hand starts in out */
+    symline_point *ap;  /* the piece in hand's points (in out, or in place) */
+} merger;
+
+/* Piece j joins piece i (i < j): the joined ends and max_dev, j's points
+ * right behind i's, slot j gone. */
+static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uint32_t dev)
+{
+    symline_result *r = m->r;
     symline_segment *a = &r->segments[i];
     const uint32_t b_first = r->segments[j].first, b_count = r->segments[j].count;
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
-    uint32_t k;
-    symline_i_reverse_points(r->points + mid0, midn);
-    symline_i_reverse_points(r->points + b_first, b_count);
-    symline_i_reverse_points(r->points + mid0, midn + b_count);
-    for (k = i + 1u; k < j; k++) {
-        r->segments[k].first += b_count;
-    }
-    a->count += b_count;
-    for (k = j; k + 1u < r->segment_count; k++) {
-        copy_segment(&r->segments[k], &r->segments[k + 1u]);
-    }
-    r->segment_count--;
-}
-
-void symline_i_merge(symline_result *r, uint32_t gap_px, uint32_t dev_q8, uint32_t curve_dev_q8)
-{
-    const uint64_t gap2 = ((uint64_t)gap_px << SL_Q8_SHIFT) * ((uint64_t)gap_px << SL_Q8_SHIFT);
-    uint32_t i, j;
-    bool changed = true;
-    while (changed) {
-        changed = false;
-        for (i = 0; i < r->segment_count; i++) {
-            /* Whether piece i may join at all does not change while it is
-             * tried against the others (a join makes it a line): asked once,
-             * not for every pair (that cost a cluttered 2560x1920 frame 10x
-             * its detection time). */
-            if (!joinable(&r->segments[i], r->points, curve_dev_q8)) {
-                continue;
-            }
-            for (j = i + 1u; j < r->segment_count; j++) {
-                int32_t ends[4];
-                uint32_t dev;
-                symline_segment *a = &r->segments[i];
-                const symline_segment *b = &r->segments[j];
-                const uint32_t level = a->level > b->level ? a->level : b->level;
-                const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
-                /* The cheap geometric test first; both are pure, so the order
-                 * changes nothing but the cost. */
-                if (!mergeable(a, b, gap2, dev_q8 + symline_i_block_half_q8(level), ends) ||
-                    !joinable(b, r->points, curve_dev_q8)) {
-                    continue;
-                }
-                dev = joined_dev(a, b, r->points, ends, thr);
-                if (dev == SL_JOINED_IS_CURVE) {
-                    continue;
-                }
-                set_ends(a, ends[0], ends[1], ends[2], ends[3]);
-                a->max_dev = dev;
-                a->kind = SYMLINE_KIND_LINE;
-                a->level = (uint8_t)level;
-                a->merged = true; /* points piece after piece (curvejoin.c) */
-                absorb(r, i, j);
-                changed = true;
-                j = i; /* the grown segment may now reach pieces it missed */
-            }
+    const uint8_t lb = r->segments[j].level;
+    set_ends(a, ends[0], ends[1], ends[2], ends[3]);
+    a->max_dev = dev;
+    a->kind = SYMLINE_KIND_LINE;
+    a->level = a->level > lb ? a->level : lb;
+    a->merged = true; /* points piece after piece (curvejoin.c) */
+    if (m->out != NULL) {
+        copy_points(m->ap + a->count, r->points + b_first, b_count);
+    } else {
+        uint32_t k;
+        symline_i_reverse_points(r->points + mid0, midn);
+        symline_i_reverse_points(r->points + b_first, b_count);
+        symline_i_reverse_points(r->points + mid0, midn + b_count);
+        for (k = i + 1u; k < j; k++) {
+            r->segments[k].first += b_count;
         }
     }
+    a->count += b_count;
+    r->segments[j].kind = SL_GONE;
+}
+
+/* The joined piece's max_dev when piece j may join piece i (ends: the
+ * joined ends), else SL_NO_JOIN. */
+static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, int32_t ends[4])
+{
+    const symline_segment *a = &m->r->segments[i];
+    const symline_segment *b = &m->r->segments[j];
+    const uint32_t level = a->level > b->level ? a->level : b->level;
+    const symline_point *bp = m->r->points + b->first;
+    /* The cheap geometric test first; both are pure, so the order changes
+     * nothing but the cost. */
+    if (b->kind == SL_GONE ||
+        !mergeable(a, b, m->gap2, m->dev_q8 + symline_i_block_half_q8(level), ends) ||
+        !joinable(b, bp, m->curve_q8)) {
+        return SL_NO_JOIN;
+    }
+    return joined_dev(a, m->ap, b, bp, ends, m->curve_q8 + symline_i_block_half_q8(level));
+}
+
+/*
+ * The slots with an end in the cells within m->margin of a's chord
+ * stretched by the gap past both ends, in m->cand (in cell order, a slot
+ * may come twice). Returns their number, or -1 when more than m->cand_cap
+ * were found: then every later piece is tried.
+ */
+SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
+{
+    const int32_t dx = a->x1 - a->x0, dy = a->y1 - a->y0;
+    const uint32_t ux = (uint32_t)(dx < 0 ? -dx : dx), uy = (uint32_t)(dy < 0 ? -dy : dy);
+    const uint32_t cheb = ux > uy ? ux : uy;
+    /* Whole multiples of a's direction, longer than the gap (the larger of
+     * |dx|, |dy| is no longer than the chord). */
+    const int32_t k = cheb > 0u ? (int32_t)(m->gap_q8 / cheb + 1u) : 0;
+    symline_i_cellwalk q;
+    q.cols = m->cols;
+    q.rows = m->rows;
+    q.mode = SL_WALK_GATHER;
+    q.px0 = 1u; /* no previous piece */
+    q.px1 = 0u;
+    q.head = m->head;
+    q.next = m->next;
+    q.cand = m->cand;
+    q.cand_cap = m->cand_cap;
+    q.n = 0u;
+    symline_i_cellwalk_chord(&q, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k,
+                             m->margin);
+    return q.n > q.cand_cap ? -1 : (int32_t)q.n;
+}
+
+/* Piece i takes the first later piece (in slot order) that joins it: true,
+ * or false when none does. */
+static bool join_first(merger *m, uint32_t i)
+{
+    int32_t ends[4];
+    uint32_t j = i + 1u;
+    if (m->cols != 0u) {
+        const int32_t nc = candidates(m, &m->r->segments[i]);
+        if (nc >= 0) {
+            uint32_t best = SL_NO_NODE, k;
+            /* The first in slot order that joins is the smallest candidate
+             * that does (the tests are pure); failing that, the pieces not
+             * in the grid. */
+            for (k = 0; k < (uint32_t)nc; k++) {
+                const uint32_t c = m->cand[k];
+                if (c > i && c < best && pair_dev(m, i, c, ends) != SL_NO_JOIN) {
+                    best = c;
+                }
+            }
+            j = best != SL_NO_NODE ? best : (m->indexed > j ? m->indexed : j);
+        }
+    }
+    for (; j < m->n; j++) {
+        const uint32_t dev = pair_dev(m, i, j, ends);
+        if (dev != SL_NO_JOIN) {
+            absorb(m, i, j, ends, dev);
+            return true;
+        }
+    }
+    return false;
+}
+
+/* The grid's lists of the slots in it, in their ends' cells. */
+static void grid_build(merger *m)
+{
+    const symline_segment *segs = m->r->segments;
+    uint32_t c, s, e;
+    for (c = 0; c < m->cols * m->rows; c++) {
+        m->head[c] = SL_NO_NODE;
+    }
+    for (s = 0; s < m->indexed; s++) {
+        for (e = 0; e < 2u && segs[s].kind != SL_GONE; e++) {
+            const int32_t x = e ? segs[s].x1 : segs[s].x0, y = e ? segs[s].y1 : segs[s].y0;
+            c = symline_i_cell_of(y, m->rows) * m->cols + symline_i_cell_of(x, m->cols);
+            m->next[2u * s + e] = m->head[c];
+            m->head[c] = 2u * s + e;
+        }
+    }
+}
+
+/* The grid in ws (cells, then two nodes per slot for as many slots as leave
+ * a quarter for the candidates); none when ws is too small or the
+ * thresholds too large for its 32-bit walk (then every pair is tried). */
+static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_t height)
+{
+    uint8_t *cur = (uint8_t *)ws;
+    size_t e;
+    m->cols = ((width - 1u) >> SL_CELL_SHIFT) + 1u;
+    m->rows = ((height - 1u) >> SL_CELL_SHIFT) + 1u;
+    m->head = ws == NULL ? NULL
+                         : (uint32_t *)symline_i_carve(
+                               &cur, cur + bytes, (size_t)m->cols * m->rows * sizeof(uint32_t));
+    if (m->head == NULL) {
+        m->cols = 0u;
+        return;
+    }
+    e = (size_t)((uint8_t *)ws + bytes - cur) / sizeof(uint32_t);
+    m->indexed = (size_t)m->n < e * 3u / 8u ? m->n : (uint32_t)(e * 3u / 8u);
+    m->next = (uint32_t *)(void *)cur;
+    m->cand = m->next + 2u * (size_t)m->indexed;
+    e -= 2u * (size_t)m->indexed;
+    m->cand_cap = e > 0xFFFFFFu ? 0xFFFFFFu : (uint32_t)e; /* too few: every later piece */
+    /* A joining piece's end lies within the deviation of i's line (plus the
+     * coarsest scale's half block, plus rounding). */
+    m->margin = (int32_t)(m->dev_q8 + symline_i_block_half_q8(SYMLINE_DETECT_MAX_LEVELS - 1u) +
+                          SL_PX_Q8(1u));
+}
+
+void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
+{
+    symline_result *r = d->r;
+    const symline_config *cfg = d->cfg;
+    const uint32_t gap_px =
+        cfg->merge_gap == SYMLINE_MERGE_GAP_AUTO ? d->img->width / 8u : cfg->merge_gap;
+    merger m;
+    uint32_t i, w;
+    bool changed = true;
+    m.r = r;
+    m.n = r->segment_count;
+    m.gap_q8 = gap_px << SL_Q8_SHIFT; /* gap_px <= SYMLINE_MAX_DIM: no wrap */
+    m.gap2 = (uint64_t)m.gap_q8 * m.gap_q8;
+    m.dev_q8 = cfg->merge_dev_q8;
+    m.curve_q8 = cfg->curve_dev_q8;
+    /* Room for the layout: as many points again as there are. */
+    m.out = r->point_count != 0u && r->point_cap - r->point_count >= r->point_count
+                ? r->points + r->point_count
+                : NULL;
+    grid_init(&m, ws, ws_size, d->img->width, d->img->height);
+    /* In slot order, each piece takes the first later piece that joins it,
+     * again and again (the grown piece may reach pieces it missed), until a
+     * whole round joins nothing. */
+    while (changed) {
+        changed = false;
+        m.pos = 0u;
+        if (m.cols != 0u) {
+            grid_build(&m);
+        }
+        for (i = 0; i < m.n; i++) {
+            symline_segment *a = &r->segments[i];
+            if (a->kind == SL_GONE) {
+                continue;
+            }
+            m.ap = r->points + a->first;
+            if (m.out != NULL) {
+                m.ap = m.out + m.pos;
+                copy_points(m.ap, r->points + a->first, a->count);
+                a->first = m.pos;
+            }
+            /* Whether piece i may join at all does not change while it is
+             * tried against the others (a join makes it a line). */
+            if (joinable(a, m.ap, m.curve_q8)) {
+                while (join_first(&m, i)) {
+                    changed = true;
+                }
+            }
+            m.pos += a->count;
+        }
+        if (m.out != NULL) { /* unchanged: the same points */
+            copy_points(r->points, m.out, m.pos);
+        }
+    }
+    for (i = 0, w = 0; i < m.n; i++) {
+        if (r->segments[i].kind != SL_GONE) {
+            copy_segment(&r->segments[w++], &r->segments[i]);
+        }
+    }
+    r->segment_count = w;
 }
