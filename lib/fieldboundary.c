@@ -175,11 +175,13 @@ static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint3
                               uint32_t *mean, uint32_t *tex)
 {
     const uint32_t n = left < f->s ? left : f->s;
+#if !defined(__OPTIMIZE_SIZE__)
     if (n == 8u) {
         cell_stats_n(p, 8u, mean, tex); /* the usual cell: a constant count, unrolled */
-    } else {
-        cell_stats_n(p, n, mean, tex);
+        return;
     }
+#endif
+    cell_stats_n(p, n, mean, tex); /* one loop where the build optimises for size */
 }
 
 /* The cells (mean, texture) of grid row r into out, two bytes per column;
