@@ -6,8 +6,10 @@
  * energies, extrema and the filter run row by row.
  *
  * Horizontal axis (symmetry along columns): energies of grid row t need rows
- * t-m .. t+m; the column-run follower reports an extremum of a run [a, b]
- * when row b+1 arrives, at row (a+b) div 2. Extrema of plateaus longer than
+ * t-m .. t+m. Three rows of energies decide the extrema of the middle one
+ * with row-wise comparisons; a run of equal energies [a, b] down a column (a
+ * plateau, rare) is followed on a slow path and reported when row b+1
+ * arrives, at row (a+b) div 2. Extrema of plateaus longer than
  * 2*lag+1 rows are not line points (no thin line has them), so every
  * extremum of row y is known once row y+lag+1 has been pushed, and the
  * decision for row y (which looks a_distance rows of extrema and k rows of gray
@@ -28,11 +30,14 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
 {
     const uint32_t s = 1u << p->level;
     const uint32_t shift = 2u * p->level;
-    const uint32_t span = p->w * s;
+    /* The width in a local: out (bytes) might alias *p, and a bound read
+     * through p after every store keeps the loops from vectorising. */
+    const uint32_t w = p->w;
+    const uint32_t span = w * s;
     uint32_t x, d;
     const uint8_t *src = img->data + (size_t)(y * s) * img->stride;
     if (p->level == 0u) {
-        for (x = 0; x < p->w; x++) {
+        for (x = 0; x < w; x++) {
             out[x] = src[x];
         }
         return;
@@ -47,13 +52,13 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
         }
     }
     if (s == 2u) { /* the common first step, as a plain lane loop */
-        for (x = 0; x < p->w; x++) {
+        for (x = 0; x < w; x++) {
             const uint16_t *pair = acc + (size_t)2u * x;
             out[x] = (uint8_t)(((uint32_t)pair[0] + pair[1] + 2u) >> 2);
         }
         return;
     }
-    for (x = 0; x < p->w; x++) {
+    for (x = 0; x < w; x++) {
         uint32_t sum = 0u;
         for (d = 0; d < s; d++) {
             sum += acc[x * s + d];
@@ -80,18 +85,18 @@ static uint32_t h_gray_rows(const symline_i_pass *p)
 typedef struct hring {
     const symline_image *img;
     const symline_i_pass *p;
-    uint8_t *map;  /* map_rows rows of w */
     uint8_t *gray; /* gray_rows rows of w (levels > 0) */
-    uint32_t map_rows, gray_rows;
+    uint32_t gray_rows;
+    symline_i_coldown cd; /* extrema down the columns into the map ring (cd.ring rows of w) */
 } hring;
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 6 bytes per extremum and 8 per
  * row pointer, and the ring state within its fixed part (see pass.c). */
-typedef char symline_i_ring_state_fits_ws_budget[(sizeof(hring) + sizeof(symline_colrun) <= 80u &&
-                                                  sizeof(symline_extremum) <= 6u &&
-                                                  sizeof(const uint8_t *) <= 8u)
-                                                     ? 1
-                                                     : -1];
+typedef char
+    symline_i_ring_state_fits_ws_budget[(sizeof(hring) <= 80u && sizeof(symline_extremum) <= 6u &&
+                                         sizeof(const uint8_t *) <= 8u)
+                                            ? 1
+                                            : -1];
 
 size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
 {
@@ -108,10 +113,13 @@ size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
         }
         return n;
     }
-    n += symline_i_align_up(sizeof(hring)) + symline_i_align_up(sizeof(symline_colrun)) +
-         (size_t)2u * SL_ALIGN;
-    n += symline_colrun_buffer_size(p->w);
-    n += symline_i_align_up(w * sizeof(symline_extremum));
+    n += symline_i_align_up(sizeof(hring));
+    n += symline_i_align_up(2u * w * sizeof(uint32_t)); /* two more rows of energies */
+    n += symline_i_align_up(w * sizeof(uint16_t)) + symline_i_align_up(w); /* plateau state */
+    /* 2 B per column unused since the column extrema need no event list; kept
+     * until SYMLINE_DETECT_WORKSPACE_SIZE (detect.h) and its sizing test drop
+     * them together. */
+    n += symline_i_align_up(2u * w) + (size_t)2u * SL_ALIGN;
     n += symline_i_align_up(w * (size_t)h_map_rows(p));
     if (p->level > 0u) {
         n += symline_i_align_up(w * (size_t)h_gray_rows(p));
@@ -131,6 +139,44 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
     pts[*n].y = (uint16_t)y;
     (*n)++;
 }
+
+/* The byte-lane pre-filter below pays where the compiler has vector lanes for
+ * it (16 bytes per instruction); on scalar cores (Cortex-M) it would cost about
+ * what it saves, in code size too, so it is left out there. */
+#if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__)
+#define SL_ROW_PREFILTER 1
+#endif
+
+#ifdef SL_ROW_PREFILTER
+/*
+ * Drops from map[0 .. n-1] the S points that the line filter's first tests
+ * reject (symline_i_linefilter_gray() repeats them on what is left): gray c
+ * below the illumination minimum and, for the contrast filter, a ridge not
+ * above its sides lo, hi by ridge_min or sides brighter than side_max. Byte
+ * lanes, whole rows; A points stay. Limits above 255 are clamped, which only
+ * keeps more points for the exact test.
+ */
+SL_NOINLINE static void drop_dim_s(const symline_i_linefilter *f, const uint8_t *c,
+                                   const uint8_t *lo, const uint8_t *hi, uint32_t n, uint8_t *map)
+{
+    const uint8_t mg = (uint8_t)(f->min_gray < 255u ? f->min_gray : 255u);
+    uint8_t sm = 255u, rm = 0u;
+    uint32_t x;
+    if (f->kind != SYMLINE_FILTER_PAPER) {
+        sm = (uint8_t)(f->side_max < 255u ? f->side_max : 255u);
+        rm = (uint8_t)(f->ridge_min < 1u ? 1u : f->ridge_min < 255u ? f->ridge_min : 255u);
+    } else {
+        lo = c; /* the paper's filter: gray only (side c, ridge 0 >= rm = 0) */
+        hi = c;
+    }
+    for (x = 0; x < n; x++) {
+        const uint8_t side = lo[x] > hi[x] ? lo[x] : hi[x];
+        const uint8_t d = (uint8_t)(c[x] > side ? (uint32_t)c[x] - side : 0u);
+        const unsigned keep = (unsigned)(c[x] >= mg) & (unsigned)(side <= sm) & (unsigned)(d >= rm);
+        map[x] = (uint8_t)((map[x] == SYMLINE_MAP_S && keep == 0u) ? SYMLINE_MAP_NONE : map[x]);
+    }
+}
+#endif
 
 /* ---- vertical axis: along rows ---- */
 
@@ -174,6 +220,11 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img,
         SL_STAGE(EXTREMA);
         symline_i_extrema_runs(E, w, p->lag, map);
         SL_STAGE(FILTER);
+#ifdef SL_ROW_PREFILTER
+        if (w > 2u * k) { /* the interior, where both sides lie in the row */
+            drop_dim_s(&p->filter, row + k, row, row + (size_t)2u * k, w - 2u * k, map + k);
+        }
+#endif
         for (x = 0; x < w; x++) {
             if (map[x] != SYMLINE_MAP_S) {
                 continue;
@@ -205,19 +256,22 @@ static const uint8_t *h_row(const hring *r, uint32_t y)
 
 static uint8_t *h_map(const hring *r, uint32_t y)
 {
-    return r->map + (size_t)(y % r->map_rows) * r->p->w;
+    return r->cd.map + (size_t)(y % r->cd.ring) * r->p->w;
 }
 
 static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap, uint32_t *n,
                      uint32_t *row_start, uint32_t *dropped)
 {
     const symline_i_pass *p = r->p;
-    const uint8_t *map = h_map(r, y);
+    uint8_t *map = h_map(r, y);
     const uint8_t *c = h_row(r, y);
     const uint8_t *lo = h_row(r, y >= p->k ? y - p->k : 0u);
     const uint8_t *hi = h_row(r, y + p->k < p->h ? y + p->k : p->h - 1u);
     uint32_t x;
     row_start[y] = *n;
+#ifdef SL_ROW_PREFILTER
+    drop_dim_s(&p->filter, c, lo, hi, p->w, map);
+#endif
     for (x = 0; x < p->w; x++) {
         if (map[x] != SYMLINE_MAP_S) {
             continue;
@@ -226,7 +280,7 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
             continue;
         }
         if (p->filter.a_distance != 0u &&
-            !symline_i_linefilter_a_near(&p->filter, r->map + x, r->map_rows, p->w, p->h, y)) {
+            !symline_i_linefilter_a_near(&p->filter, r->cd.map + x, r->cd.ring, p->w, p->h, y)) {
             continue;
         }
         push_point(pts, cap, n, x, y, dropped);
@@ -240,25 +294,29 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
                                                      uint32_t *dropped)
 {
     hring *rp = (hring *)symline_i_carve(&cur, end, sizeof(hring));
-    symline_colrun *cr = (symline_colrun *)symline_i_carve(&cur, end, sizeof(symline_colrun));
     const uint32_t w = p->w, h = p->h, m = p->m;
     const uint32_t delta = h_delta(p);
-    if (rp == NULL || cr == NULL) {
-        return SYMLINE_ERR_BUFFER;
-    }
-    const size_t cr_bytes = symline_colrun_buffer_size(w);
-    uint32_t *E = (uint32_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint32_t));
-    void *cr_buf = symline_i_carve(&cur, end, cr_bytes);
-    symline_extremum *ev =
-        (symline_extremum *)symline_i_carve(&cur, end, (size_t)w * sizeof(symline_extremum));
+    /* Energies of rows t-2, t-1, t in turn (E3 + w * (row % 3)). */
+    uint32_t *E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * w * sizeof(uint32_t));
+    symline_i_coldown *cd;
     const uint8_t **rows;
     uint16_t *acc = NULL;
-    uint32_t t, y, produced = 0u, i;
+    uint32_t t, y, produced = 0u;
+    if (rp == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    cd = &rp->cd;
     rp->img = img;
     rp->p = p;
-    rp->map_rows = h_map_rows(p);
     rp->gray_rows = h_gray_rows(p);
-    rp->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->map_rows);
+    cd->E3 = E3;
+    cd->stride = w;
+    cd->width = w;
+    cd->ring = h_map_rows(p);
+    cd->lag = p->lag;
+    cd->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * cd->ring);
+    cd->run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint16_t));
+    cd->left = (int8_t *)symline_i_carve(&cur, end, w);
     rp->gray = NULL;
     if (p->level > 0u) {
         rp->gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->gray_rows);
@@ -269,12 +327,13 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
     }
     rows = (const uint8_t **)symline_i_carve(&cur, end,
                                              (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
-    if (E == NULL || cr_buf == NULL || ev == NULL || rp->map == NULL || rows == NULL) {
+    if (E3 == NULL || cd->run_start == NULL || cd->left == NULL || cd->map == NULL ||
+        rows == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    (void)symline_colrun_init(cr, w, cr_buf, cr_bytes);
     for (t = 0; t < h; t++) {
-        uint32_t count = 0u, j;
+        uint32_t j;
+        uint32_t *E = E3 + (size_t)(t % 3u) * w;
         if (p->level > 0u) {
             const uint32_t need = (t + m < h) ? t + m : h - 1u;
             SL_STAGE(GRID);
@@ -292,22 +351,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
         (void)symline_energy_across(rows, m, w, E);
         SL_STAGE(EXTREMA);
         if (t >= 1u) {
-            uint8_t *mr = h_map(rp, t - 1u);
-            for (i = 0; i < w; i++) {
-                mr[i] = SYMLINE_MAP_NONE;
-            }
-        }
-        (void)symline_colrun_push(cr, E, ev, w, &count);
-        if (count > 0u) {
-            /* Ring slot of row t-1 once per row; an event's row is at most lag above it. */
-            const uint32_t last = (t - 1u) % rp->map_rows;
-            for (i = 0; i < count; i++) {
-                const uint32_t back = t - 1u - ev[i].y;
-                if (back <= p->lag) {
-                    const uint32_t slot = last >= back ? last - back : last + rp->map_rows - back;
-                    rp->map[(size_t)slot * w + ev[i].x] = ev[i].kind;
-                }
-            }
+            symline_i_extrema_down(cd, E, t);
         }
         if (t >= delta) {
             SL_STAGE(FILTER);
@@ -317,6 +361,7 @@ SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
     SL_STAGE(FILTER);
     {
         uint8_t *mr = h_map(rp, h - 1u);
+        uint32_t i;
         for (i = 0; i < w; i++) {
             mr[i] = SYMLINE_MAP_NONE;
         }

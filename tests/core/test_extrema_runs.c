@@ -62,11 +62,87 @@ static void public_row_is_the_routine(void **state)
     }
 }
 
+/* The run rule written plainly: every run [a, b] with a > 0 and b < n-1 whose
+ * middle lies no more than lag before b, marked by its neighbours. */
+static void runs_reference(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
+{
+    uint32_t a = 0u, b;
+    memset(map, SYMLINE_MAP_NONE, n);
+    while (a < n) {
+        b = a;
+        while (b + 1u < n && E[b + 1u] == E[a]) {
+            b++;
+        }
+        if (a > 0u && b + 1u < n && b - (a + b) / 2u <= lag) {
+            if (E[a - 1u] > E[a] && E[b + 1u] > E[a]) {
+                map[(a + b) / 2u] = SYMLINE_MAP_S;
+            } else if (E[a - 1u] < E[a] && E[b + 1u] < E[a]) {
+                map[(a + b) / 2u] = SYMLINE_MAP_A;
+            }
+        }
+        a = b + 1u;
+    }
+}
+
+/* Rows longer than the 64-entry blocks, runs across block borders, all lags. */
+static void routine_is_the_rule(void **state)
+{
+    uint32_t E[400], s = 7u, t, i;
+    uint8_t a[400], b[400];
+    (void)state;
+    for (t = 0; t < 3000u; t++) {
+        const uint32_t n = 1u + tu_rand(&s) % 400u;
+        const uint32_t lag = (t % 5u == 0u) ? SL_RUN_ANY_LENGTH : tu_rand(&s) % 40u;
+        const uint32_t values = 2u + tu_rand(&s) % 6u, runmax = 1u + tu_rand(&s) % 90u;
+        for (i = 0; i < n;) {
+            const uint32_t v = tu_rand(&s) % values;
+            uint32_t len = 1u + tu_rand(&s) % runmax;
+            if (tu_rand(&s) % 2u == 0u) {
+                len = 1u; /* many single entries between the plateaus */
+            }
+            for (; len > 0u && i < n; len--) {
+                E[i++] = v;
+            }
+        }
+        runs_reference(E, n, lag, a);
+        symline_i_extrema_runs(E, n, lag, b);
+        assert_memory_equal(a, b, n);
+    }
+}
+
+/* The build's row decision (a SIMD version from port/ where built) gives the
+ * portable reference's output, flat flag included, at every length and
+ * alignment, for energies up to 2^31 - 1. */
+static void kinds_build_is_reference(void **state)
+{
+    uint32_t up[80], mid[80], dn[80], s = 5u, t, i;
+    uint8_t a[80], b[80];
+    (void)state;
+    for (t = 0; t < 4000u; t++) {
+        const uint32_t n = tu_rand(&s) % 70u, off = tu_rand(&s) % 8u;
+        const uint32_t big = (t % 3u == 0u) ? 0x7fffffffu - 8u : 0u;
+        const uint32_t range = (t % 2u == 0u) ? 3u : 0x7fffffffu;
+        for (i = 0; i < 80u; i++) {
+            up[i] = big + tu_rand(&s) % range % (0x7fffffffu - big + 1u);
+            mid[i] = big + tu_rand(&s) % range % (0x7fffffffu - big + 1u);
+            dn[i] = big + tu_rand(&s) % range % (0x7fffffffu - big + 1u);
+        }
+        memset(a, 0x77, sizeof a);
+        memset(b, 0x77, sizeof b);
+        assert_int_equal(symline_i_extrema_kinds(up + off, mid + off, dn + off, n, a + off) != 0u,
+                         symline_i_extrema_kinds_c(up + off, mid + off, dn + off, n, b + off) !=
+                             0u);
+        assert_memory_equal(a, b, sizeof a);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(runs_by_hand),
         cmocka_unit_test(public_row_is_the_routine),
+        cmocka_unit_test(routine_is_the_rule),
+        cmocka_unit_test(kinds_build_is_reference),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

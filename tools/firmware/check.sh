@@ -166,7 +166,7 @@ step "code size on Cortex-M4 -Os (.text + .rodata, target <= $size_budget B)"
 # Optional modules (the paper's other methods, the intersections stage) are
 # reported on their own and not counted against the budget: firmware that does
 # not call them does not link them (one object per module in the static library).
-optional="features histogram framepoints muff muff_vote muff_extent muff_detect intersections"
+optional="colrun features histogram framepoints muff muff_vote muff_extent muff_detect intersections"
 objs=$(find "$prefix-m4-os/lib" -name '*.obj' | sort)
 if [ -n "$objs" ]; then
     for o in $objs; do
