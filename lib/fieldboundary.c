@@ -110,7 +110,7 @@ static size_t cols_bytes(uint32_t nc)
 }
 
 /* Grid rows of the carpet model's band. */
-static uint32_t band_rows(uint32_t nr, const symline_field_config *fc)
+SL_NOINLINE static uint32_t band_rows(uint32_t nr, const symline_field_config *fc)
 {
     const uint32_t nb = (nr * fc->band_pct + 99u) / 100u; /* nr <= 32768: 32 bits */
     return nb < 1u ? 1u : nb;
@@ -145,45 +145,43 @@ static uint8_t rel_tex(uint32_t d, uint32_t sum, uint32_t n)
     return (uint8_t)(t < 255u ? t : 255u);
 }
 
-static uint32_t absdiff(uint32_t a, uint32_t b)
-{
-    return a > b ? a - b : b - a;
-}
-
 /* Mean gray value and relative texture of the cell whose pixels start at p,
- * left (>= 1) pixels before the row's end: its pixels, and the differences of
- * neighbours among them. This is the stage's cost. */
-static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint32_t left,
-                              uint32_t *mean, uint32_t *tex)
+ * left (>= 1) pixels before the row's end. Every other pair of neighbours
+ * measures the grain as well as all of them at half the cost: each pair's
+ * difference as its sum less twice its smaller value, doubled. This is the
+ * stage's cost. */
+static inline void cell_stats_n(const uint8_t *p, uint32_t n, uint32_t *mean, uint32_t *tex)
 {
-    uint32_t i, n, sum = 0u, d = 0u;
-    if (f->s == 8u && left >= 8u) {
-        /* Written out: all 8 pixels, and 4 of the differences (every other
-         * pair measures the grain as well at half the cost), each as the
-         * pair's sum less twice its smaller value. */
-        const uint32_t a0 = p[0], a1 = p[1], a2 = p[2], a3 = p[3], a4 = p[4], a5 = p[5], a6 = p[6],
-                       a7 = p[7];
-        const uint32_t lows =
-            (a0 < a1 ? a0 : a1) + (a2 < a3 ? a2 : a3) + (a4 < a5 ? a4 : a5) + (a6 < a7 ? a6 : a7);
-        sum = a0 + a1 + a2 + a3 + a4 + a5 + a6 + a7;
-        *mean = sum >> 3;
-        *tex = rel_tex(2u * (sum - 2u * lows), sum, 8u);
-        return;
-    }
-    n = left < f->s ? left : f->s;
+    uint32_t i, sum = 0u, lows = 0u, pairs;
     if (n == 0u) {
         *mean = 0u; /* not reached: a cell starts inside its row */
         *tex = 0u;
         return;
     }
-    for (i = 0; i < n; i++) {
-        sum += p[i];
-        if (i + 1u < left) {
-            d += absdiff(p[i], p[i + 1u]);
-        }
+    for (i = 0; i + 1u < n; i += 2u) {
+        const uint32_t a = p[i], b = p[i + 1u];
+        sum += a + b;
+        lows += a < b ? a : b;
+    }
+    pairs = sum;
+    if (i < n) {
+        sum += p[i]; /* an odd cell's last pixel */
     }
     *mean = sum / n;
-    *tex = left > 1u ? rel_tex(d, sum, n) : 0u;
+    *tex = rel_tex(2u * (pairs - 2u * lows), sum, n);
+}
+
+static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint32_t left,
+                              uint32_t *mean, uint32_t *tex)
+{
+    const uint32_t n = left < f->s ? left : f->s;
+#if !defined(__OPTIMIZE_SIZE__)
+    if (n == 8u) {
+        cell_stats_n(p, 8u, mean, tex); /* the usual cell: a constant count, unrolled */
+        return;
+    }
+#endif
+    cell_stats_n(p, n, mean, tex); /* one loop where the build optimises for size */
 }
 
 /* The cells (mean, texture) of grid row r into out, two bytes per column;
@@ -204,7 +202,7 @@ static void row_cells(const symline_image *img, const symline_i_fstate *f, uint3
 }
 
 /* Smallest bin value v with at least half the count at or below it. */
-static uint32_t hist_median(const uint32_t *hist, uint32_t total)
+SL_NOINLINE static uint32_t hist_median(const uint32_t *hist, uint32_t total)
 {
     uint32_t i, acc = 0u;
     for (i = 0; i < SL_FIELD_BINS; i++) {
@@ -351,7 +349,7 @@ SL_NOINLINE static void support_filter(const symline_i_fstate *f, uint32_t k, sy
     }
 }
 
-static int32_t col_x(const symline_i_fstate *f, uint32_t c, uint32_t w)
+SL_NOINLINE static int32_t col_x(const symline_i_fstate *f, uint32_t c, uint32_t w)
 {
     uint32_t x = c * f->sx + f->sx / 2u;
     if (c == 0u) {
@@ -398,9 +396,10 @@ SL_NOINLINE static void hull(const symline_image *img, const symline_i_fstate *f
         /* Andrew's monotone chain, upper part (smaller y is higher): pop while
          * the last vertex lies on or below the chord from its predecessor. */
         while (n >= 2u) {
-            const int64_t x1 = col[n - 2u].cur, y1 = col[n - 2u].best;
-            const int64_t x2 = col[n - 1u].cur, y2 = col[n - 1u].best;
-            if ((x2 - x1) * ((int64_t)y - y1) - (y2 - y1) * ((int64_t)x - x1) > 0) {
+            /* x, y within [0, SYMLINE_MAX_DIM]: 32-bit differences, 64-bit products. */
+            const int32_t x1 = col[n - 2u].cur, y1 = col[n - 2u].best;
+            const int32_t x2 = col[n - 1u].cur, y2 = col[n - 1u].best;
+            if ((int64_t)(x2 - x1) * (y - y1) > (int64_t)(y2 - y1) * (x - x1)) {
                 break;
             }
             n--;

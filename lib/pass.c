@@ -128,7 +128,7 @@ static uint32_t sat_add(uint32_t a, uint32_t b)
 }
 
 /* symline_result.points_needed grows to at least need. */
-static void note_need(symline_result *r, uint32_t need)
+SL_NOINLINE static void note_need(symline_result *r, uint32_t need)
 {
     if (need > r->points_needed) {
         r->points_needed = need;

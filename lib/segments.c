@@ -53,16 +53,22 @@ uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
     return best;
 }
 
+/* The length of (dx, dy), rounded down; 32-bit operands, 64-bit squares. */
+SL_NOINLINE static uint64_t hypot_q(int32_t dx, int32_t dy)
+{
+    return symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+}
+
 uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
                                 int32_t py)
 {
     /* Differences of Q8 coordinates of one frame fit 25 bits; products 64. */
     const int32_t wx = px - ax, wy = py - ay;
-    uint64_t len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    uint64_t len = hypot_q(dx, dy);
     int64_t c;
     uint64_t cross;
     if (len == 0u) {
-        return (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)wx * wx + (int64_t)wy * wy));
+        return (uint32_t)hypot_q(wx, wy);
     }
     c = (int64_t)wx * dy - (int64_t)wy * dx;
     cross = (uint64_t)(c < 0 ? -c : c);
@@ -120,7 +126,7 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
     if ((dx | dy) == 0) {
         return (uint32_t)symline_i_isqrt64(best);
     }
-    len = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    len = hypot_q(dx, dy);
     /* floor(floor(best / win) / len) = floor(best / (win len)): no 64-bit
      * division (its library helper's frame would deepen the stack). */
     return symline_i_div_q8(best, len * win);
@@ -133,18 +139,8 @@ bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t
                         uint32_t thr)
 {
     const int32_t dx = x1 - x0, dy = y1 - y0; /* 25 bits: Q8 coordinates of one frame */
-    const uint64_t chord = symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    const uint64_t chord = hypot_q(dx, dy);
     return max_dev > thr && (uint64_t)max_dev * 32u > chord;
-}
-
-/* Shifts the pair right until both magnitudes are below 2^bits (keeps the ratio). */
-static void shrink(int64_t *a, int64_t *b, unsigned bits)
-{
-    const int64_t lim = (int64_t)1 << bits;
-    while (*a >= lim || *a <= -lim || *b >= lim || *b <= -lim) {
-        *a /= 2;
-        *b /= 2;
-    }
 }
 
 /*
@@ -161,8 +157,9 @@ static void shrink(int64_t *a, int64_t *b, unsigned bits)
 SL_NOINLINE static void rel_q4(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
                                int32_t mx, int32_t my, int32_t *x, int32_t *y)
 {
-    *x = (symline_i_pt_q8x(q, level) - ox) / 16 - mx;
-    *y = (symline_i_pt_q8y(q, level) - oy) / 16 - my;
+    symline_i_pt_off(q, level, ox, oy, x, y);
+    *x = *x / 16 - mx;
+    *y = *y / 16 - my;
 }
 
 SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
@@ -171,7 +168,7 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     /* Coordinates in Q4 full resolution, relative to the first point. */
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
     int32_t ox, oy, sx = 0, sy = 0, mx, my, ux, uy, len;
-    int64_t a = 0, b = 0, c = 0, r, lam, vx, vy;
+    int64_t a = 0, b = 0, c = 0;
     uint32_t i, cnt = 0u;
     symline_i_pt_off(&p[0], level, 0, 0, &ox, &oy);
     for (i = 0; i < n; i += step) {
@@ -198,17 +195,21 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
         c >>= 1;
     }
     {
-        /* Below 2^30 each: 32-bit operands, 64-bit products. */
-        const int32_t ac = (int32_t)a - (int32_t)c, b32 = (int32_t)b;
-        r = (int64_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
+        /* Below 2^30 each: 32-bit operands, 64-bit products. b^2 <= ac (less
+         * the halvings' rounding) keeps the larger eigenvalue lam = (a + c) / 2
+         * + r within a + c + 1 < 2^31. */
+        const int32_t a32 = (int32_t)a, c32 = (int32_t)c, ac = a32 - c32, b32 = (int32_t)b;
+        const uint32_t lam =
+            (uint32_t)((a32 + c32) / 2) +
+            (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
+        ux = a32 >= c32 ? (int32_t)(lam - (uint32_t)c32) : b32;
+        uy = a32 >= c32 ? b32 : (int32_t)(lam - (uint32_t)a32);
     }
-    lam = (a + c) / 2 + r;
-    vx = a >= c ? lam - c : b;
-    vy = a >= c ? b : lam - a;
-    shrink(&vx, &vy, 15);
-    /* Both within +-2^15 now: 32 bits suffice. */
-    ux = (int32_t)vx;
-    uy = (int32_t)vy;
+    /* Halved until both are within +-2^15: their squares' sum fits 32 bits. */
+    while (SL_OUTSIDE(ux, 32767) || SL_OUTSIDE(uy, 32767)) {
+        ux /= 2;
+        uy /= 2;
+    }
     len = (int32_t)symline_i_isqrt64((uint32_t)(ux * ux + uy * uy));
     if (len == 0) {
         return false;

@@ -72,7 +72,7 @@ cross m0plus-os MinSizeRel symline -DSYMLINE_CPU=cortex-m0plus -DSYMLINE_BUILD_F
 cross m4 Release symline_fw_bench -DSYMLINE_CPU=cortex-m4 -DSYMLINE_BUILD_FIRMWARE=ON
 
 # ---- measurements ----
-optional=" features histogram framepoints muff muff_vote muff_extent muff_detect intersections "
+optional=" colrun features histogram framepoints muff muff_vote muff_extent muff_detect intersections "
 for o in $(find "$FW-m4-os/lib" -name '*.obj' | sort); do
     arm-none-eabi-size -A "$o" | awk -v f="$(basename "$o" .c.obj)" '$1 ~ /^\.(text|rodata)/ { s += $2 } END { print f, s }'
 done >"$TMP/size"
@@ -250,9 +250,9 @@ quote docs/porting.md 'points (\([0-9]*\) bytes) while the result'
 figure "  points the result keeps" "$(points default kept)" ""
 quote docs/porting.md 'while the result keeps \([0-9]*\)'
 figure "instructions per pixel on Cortex-M4 -O3, 320x240, one axis, one scale" "$(per_px 320x240 1axis1lvl)" ""
-quote README.md '(qemu instruction counts) \([0-9]*\)$'
+quote README.md 'check.sh`) \([0-9]*\) instructions per pixel for one axis'
 figure "instructions per pixel on Cortex-M4 -O3, 320x240, default configuration" "$(per_px 320x240 default)" ""
-quote README.md 'one axis at one scale, \([0-9]*\) for the default'
+quote README.md '^ *\([0-9]*\) for the default (both axes'
 
 if [ -n "$DATA" ]; then
     sh tools/eval/evaluate.sh "$DATA" --real-only --build "$BUILD" --out "$TMP/eval" >"$TMP/eval.md" 2>"$TMP/eval.err" ||

@@ -30,8 +30,9 @@ prefix=${SYMLINE_FW_BUILD:-$root/build-fw}
 jobs=2
 stack_budget=512
 # 12 KiB before this round; its target for the core with the field-line stages was
-# 16 KiB, which the core exceeds (17.3 KiB after the size work, 18.3 before: field
-# boundary 3.0, the earlier-segment index 1.2, sub-pixel 0.8 KiB; docs/RESULTS.md).
+# 16 KiB, which the core exceeds (17.6 KiB after the size work, with the merge's grid
+# of ends: field boundary 2.7, the merge 1.8, the earlier-segment index 1.2, sub-pixel
+# 0.8 KiB; docs/RESULTS.md).
 # The budget holds it near where it is, so that it cannot grow unnoticed.
 size_budget=18432
 qemu_timeout=120
