@@ -17,8 +17,9 @@
  *   capture-check stages FILE N STAGE... the same, and each line's detect_stages_ms
  *                                      holds exactly these stages, whose times add
  *                                      up to no more than stages_ms.detect
- *   capture-check steady FILE N        json FILE N, and every line found the same
- *                                      number (> 0) of segments (one still frame)
+ *   capture-check steady FILE N [S]    json FILE N, and every line found the same
+ *                                      number (> 0) of segments (one still frame);
+ *                                      with S: exactly S segments
  *   capture-check same PGM REF.pgm     same size and luma within 2 of REF everywhere
  *   capture-check jpeg IN.pgm OUT.jpg REF.pgm
  *                                      (on the build machine) compresses IN as a
@@ -173,9 +174,10 @@ static int bars(const char *path, const char *ref, const char *expect)
 
 /* names: NULL, or the detector's stages each line must split its detect time into (--profile).
  * steady: every line must report the same number (> 0) of segments. */
-static int json(const char *path, const char *count, const char *const *names, size_t nnames, int steady)
+static int json(const char *path, const char *count, const char *const *names, size_t nnames, int steady,
+                const char *segments)
 {
-    long first_segments = -1;
+    long first_segments = segments != NULL ? strtol(segments, NULL, 10) : -1;
     char line[1 << 16];
     long want = strtol(count, NULL, 10), n = 0;
     long long prev_seq = -1;
@@ -204,8 +206,12 @@ static int json(const char *path, const char *count, const char *const *names, s
         }
         prev_seq = info.sequence;
         if (steady && (info.segments <= 0 || (first_segments >= 0 && info.segments != first_segments))) {
-            fprintf(stderr, "capture-check: %s line %ld: %ld segments, the first line %ld\n", path, n + 1,
-                    info.segments, first_segments);
+            if (first_segments < 0) {
+                fprintf(stderr, "capture-check: %s line %ld: no segments\n", path, n + 1);
+            } else {
+                fprintf(stderr, "capture-check: %s line %ld: %ld segments, expected %ld\n", path, n + 1,
+                        info.segments, first_segments);
+            }
             fclose(f);
             return 1;
         }
@@ -382,10 +388,10 @@ int main(int argc, char **argv)
         return bars(argv[2], ref, expect);
     }
     if (argc == 4 && strcmp(argv[1], "json") == 0) {
-        return json(argv[2], argv[3], NULL, 0, 0);
+        return json(argv[2], argv[3], NULL, 0, 0, NULL);
     }
-    if (argc == 4 && strcmp(argv[1], "steady") == 0) {
-        return json(argv[2], argv[3], NULL, 0, 1);
+    if ((argc == 4 || argc == 5) && strcmp(argv[1], "steady") == 0) {
+        return json(argv[2], argv[3], NULL, 0, 1, argc == 5 ? argv[4] : NULL);
     }
     if (argc == 4 && strcmp(argv[1], "same") == 0) {
         return same(argv[2], argv[3]);
@@ -397,10 +403,10 @@ int main(int argc, char **argv)
         return feed(argv[2], argv[3], argv[4], argv[5]);
     }
     if (argc >= 5 && strcmp(argv[1], "stages") == 0) {
-        return json(argv[2], argv[3], (const char *const *)argv + 4, (size_t)argc - 4, 0);
+        return json(argv[2], argv[3], (const char *const *)argv + 4, (size_t)argc - 4, 0, NULL);
     }
     fputs("usage: capture-check press DEVICE NAME | set DEVICE NAME VALUE | bars PGM [REF.pgm] [=Y0,...,Y7] | json FILE N | stages FILE N STAGE...\n"
-          "       | steady FILE N | same PGM REF.pgm | jpeg IN.pgm OUT.jpg REF.pgm | feed DEVICE OUT.jpg W H\n",
+          "       | steady FILE N [S] | same PGM REF.pgm | jpeg IN.pgm OUT.jpg REF.pgm | feed DEVICE OUT.jpg W H\n",
           stderr);
     return 2;
 }

@@ -55,7 +55,10 @@ if [ ! -f "$root/.done" ]; then
     done
     touch "$root/.done"
 fi
-lsrc=$(ls -d "$root"/usr/src/v4l2loopback-* 2>/dev/null | head -n 1)
+lsrc=
+for d in "$root"/usr/src/v4l2loopback-*; do
+    [ -f "$d/v4l2loopback.c" ] && lsrc=$d
+done
 [ -n "$lsrc" ] || { echo "guest-loopback: no v4l2loopback source in the v4l2loopback-dkms package" >&2; exit 1; }
 rm -rf "$out"
 mkdir -p "$out"

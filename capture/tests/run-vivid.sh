@@ -110,10 +110,22 @@ else
     for d in $(modinfo -F depends "$loopko" | tr ',' ' '); do
         grep -q "^$d.ko\$" "$root/modules/order" || missing="$missing $d"
     done
+    # What the detector finds in the reference luma (the same program, replaying it here):
+    # the guest must find exactly that in every decoded frame.
+    if [ $rc -eq 0 ]; then
+        rm -rf "$cache/mjpeg-ref"
+        mkdir -p "$cache/mjpeg-ref"
+        cp "$root/mjpeg/ref.pgm" "$cache/mjpeg-ref/"
+        "$gbuild/bin/symline-capture" --replay "$cache/mjpeg-ref" --frames 1 --summary-every 0 \
+            >"$cache/mjpeg-ref.json" 2>/dev/null || rc=$?
+        "$gbuild/bin/capture-check" steady "$cache/mjpeg-ref.json" 1 |
+            sed -n 's/^steady: 1 lines, \([0-9]*\) segments each$/\1/p' >"$root/mjpeg/segments"
+        [ -s "$root/mjpeg/segments" ] || rc=1
+    fi
     if [ $rc -eq 77 ]; then
         skip "mjpeg-loopback: the guest build has no libturbojpeg (libturbojpeg0-dev's archive)"
     elif [ $rc -ne 0 ]; then
-        echo "run-vivid: cannot make the Motion-JPEG frame" >&2
+        echo "run-vivid: cannot make the Motion-JPEG frame or its reference" >&2
         exit 1
     elif [ -n "$missing" ]; then
         skip "mjpeg-loopback: v4l2loopback needs modules vivid does not load:$missing"
