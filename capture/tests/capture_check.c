@@ -17,6 +17,19 @@
  *   capture-check stages FILE N STAGE... the same, and each line's detect_stages_ms
  *                                      holds exactly these stages, whose times add
  *                                      up to no more than stages_ms.detect
+ *   capture-check steady FILE N [S]    json FILE N, and every line found the same
+ *                                      number (> 0) of segments (one still frame);
+ *                                      with S: exactly S segments
+ *   capture-check same PGM REF.pgm     same size and luma within 2 of REF everywhere
+ *   capture-check jpeg IN.pgm OUT.jpg REF.pgm
+ *                                      (on the build machine) compresses IN as a
+ *                                      webcam does (YCbCr 4:2:2, quality 90) into
+ *                                      OUT, and writes OUT's luma as libjpeg-turbo
+ *                                      decodes it to REF; exit 77 without libturbojpeg
+ *   capture-check feed DEVICE OUT.jpg W H
+ *                                      sets DEVICE's output side (v4l2loopback) to
+ *                                      Motion-JPEG WxH and writes OUT.jpg to it as
+ *                                      one frame every 40 ms until killed
  *
  * Exit 0 when the check holds, 1 (with a reason on stderr) when not.
  */
@@ -28,10 +41,15 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "imgio.h"
 #include "json_check.h"
+
+#ifdef SYMLINE_HAVE_TURBOJPEG
+#include <turbojpeg.h>
+#endif
 
 static int fail(const char *fmt, const char *a, long b)
 {
@@ -154,9 +172,12 @@ static int bars(const char *path, const char *ref, const char *expect)
     return rc;
 }
 
-/* names: NULL, or the detector's stages each line must split its detect time into (--profile). */
-static int json(const char *path, const char *count, const char *const *names, size_t nnames)
+/* names: NULL, or the detector's stages each line must split its detect time into (--profile).
+ * steady: every line must report the same number (> 0) of segments. */
+static int json(const char *path, const char *count, const char *const *names, size_t nnames, int steady,
+                const char *segments)
 {
+    long first_segments = segments != NULL ? strtol(segments, NULL, 10) : -1;
     char line[1 << 16];
     long want = strtol(count, NULL, 10), n = 0;
     long long prev_seq = -1;
@@ -184,14 +205,166 @@ static int json(const char *path, const char *count, const char *const *names, s
             return fail("%s: sequence number not rising at line %ld (a frame handed out twice?)", path, n + 1);
         }
         prev_seq = info.sequence;
+        if (steady && (info.segments <= 0 || (first_segments >= 0 && info.segments != first_segments))) {
+            if (first_segments < 0) {
+                fprintf(stderr, "capture-check: %s line %ld: no segments\n", path, n + 1);
+            } else {
+                fprintf(stderr, "capture-check: %s line %ld: %ld segments, expected %ld\n", path, n + 1,
+                        info.segments, first_segments);
+            }
+            fclose(f);
+            return 1;
+        }
+        if (first_segments < 0) {
+            first_segments = info.segments;
+        }
         n++;
     }
     fclose(f);
+    if (steady) {
+        printf("steady: %ld lines, %ld segments each\n", n, first_segments);
+    }
     if (n != want) {
         fprintf(stderr, "capture-check: %s: %ld frame lines, expected %ld\n", path, n, want);
         return 1;
     }
     return 0;
+}
+
+static int same(const char *path, const char *ref)
+{
+    imgio_gray img, rimg;
+    char err[512];
+    size_t i, worst = 0;
+    int rc = 0, maxd = 0;
+    if (imgio_read_gray(path, &img, err, sizeof err) != 0) {
+        return fail("%s%ld", err, 0);
+    }
+    if (imgio_read_gray(ref, &rimg, err, sizeof err) != 0) {
+        imgio_free(&img);
+        return fail("%s%ld", err, 0);
+    }
+    if (rimg.width != img.width || rimg.height != img.height) {
+        rc = fail("%s: size differs from the reference frame%ld", path, 0);
+    } else {
+        for (i = 0; i < (size_t)img.width * img.height; i++) {
+            int d = abs((int)img.px[i] - (int)rimg.px[i]);
+            if (d > maxd) {
+                maxd = d;
+                worst = i;
+            }
+        }
+        printf("same: largest luma difference %d\n", maxd);
+        if (maxd > 2) {
+            fprintf(stderr, "capture-check: %s: luma %d at (%lu,%lu), reference %d\n", path, img.px[worst],
+                    (unsigned long)(worst % img.width), (unsigned long)(worst / img.width), rimg.px[worst]);
+            rc = 1;
+        }
+    }
+    imgio_free(&img);
+    imgio_free(&rimg);
+    return rc;
+}
+
+static int make_jpeg(const char *in, const char *out, const char *ref)
+{
+#ifdef SYMLINE_HAVE_TURBOJPEG
+    imgio_gray img;
+    char err[512];
+    unsigned char *rgb, *jpg = NULL, *luma;
+    unsigned long size = 0;
+    size_t i, n;
+    int rc = 1;
+    FILE *f;
+    tjhandle c, d;
+    if (imgio_read_gray(in, &img, err, sizeof err) != 0) {
+        return fail("%s%ld", err, 0);
+    }
+    n = (size_t)img.width * img.height;
+    rgb = malloc(3 * n);
+    luma = malloc(n);
+    c = tjInitCompress();
+    d = tjInitDecompress();
+    if (rgb != NULL && luma != NULL && c != NULL && d != NULL) {
+        for (i = 0; i < n; i++) {
+            rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = img.px[i];
+        }
+        if (tjCompress2(c, rgb, (int)img.width, 0, (int)img.height, TJPF_RGB, &jpg, &size, TJSAMP_422, 90, 0) != 0) {
+            fail("tjCompress2: %s%ld", tjGetErrorStr2(c), 0);
+        } else if (tjDecompress2(d, jpg, size, luma, (int)img.width, 0, (int)img.height, TJPF_GRAY, 0) != 0) {
+            fail("tjDecompress2: %s%ld", tjGetErrorStr2(d), 0);
+        } else if ((f = fopen(out, "wb")) == NULL || fwrite(jpg, 1, size, f) != size || fclose(f) != 0) {
+            fail("%s: cannot write (%ld)", out, errno);
+        } else if (imgio_write_gray(ref, luma, img.width, img.height, img.width, err, sizeof err) != 0) {
+            fail("%s%ld", err, 0);
+        } else {
+            printf("jpeg: %s %ux%u, %lu bytes\n", out, img.width, img.height, size);
+            rc = 0;
+        }
+    }
+    tjFree(jpg);
+    if (c != NULL) {
+        tjDestroy(c);
+    }
+    if (d != NULL) {
+        tjDestroy(d);
+    }
+    free(rgb);
+    free(luma);
+    imgio_free(&img);
+    return rc;
+#else
+    (void)in;
+    (void)out;
+    (void)ref;
+    fputs("capture-check: built without libturbojpeg\n", stderr);
+    return 77;
+#endif
+}
+
+/* The writer of a v4l2loopback device: what a program sending a camera stream does. */
+static int feed(const char *dev, const char *jpeg, const char *w, const char *h)
+{
+    static unsigned char buf[1 << 21];
+    struct v4l2_format fmt;
+    size_t len;
+    FILE *f = fopen(jpeg, "rb");
+    int fd;
+    if (f == NULL) {
+        return fail("%s: cannot open (%ld)", jpeg, errno);
+    }
+    len = fread(buf, 1, sizeof buf, f);
+    fclose(f);
+    if (len == 0 || len == sizeof buf) {
+        return fail("%s: empty or larger than the buffer (%ld bytes)", jpeg, (long)len);
+    }
+    fd = open(dev, O_RDWR);
+    if (fd < 0) {
+        return fail("%s: cannot open (%ld)", dev, errno);
+    }
+    memset(&fmt, 0, sizeof fmt);
+    fmt.type = V4L2_BUF_TYPE_VIDEO_OUTPUT;
+    fmt.fmt.pix.width = (uint32_t)strtoul(w, NULL, 10);
+    fmt.fmt.pix.height = (uint32_t)strtoul(h, NULL, 10);
+    fmt.fmt.pix.pixelformat = V4L2_PIX_FMT_MJPEG;
+    fmt.fmt.pix.field = V4L2_FIELD_NONE;
+    if (ioctl(fd, VIDIOC_S_FMT, &fmt) != 0) {
+        int e = errno;
+        close(fd);
+        return fail("%s: VIDIOC_S_FMT (output, MJPG) failed (errno %ld)", dev, e);
+    }
+    if (fmt.fmt.pix.pixelformat != V4L2_PIX_FMT_MJPEG || fmt.fmt.pix.sizeimage < len) {
+        close(fd);
+        return fail("%s: output format not taken (sizeimage %ld)", dev, (long)fmt.fmt.pix.sizeimage);
+    }
+    for (;;) {
+        if (write(fd, buf, len) != (ssize_t)len) {
+            int e = errno;
+            close(fd);
+            return fail("%s: write failed (errno %ld)", dev, e);
+        }
+        nanosleep(&(struct timespec){0, 40000000L}, NULL);
+    }
 }
 
 int main(int argc, char **argv)
@@ -215,11 +388,25 @@ int main(int argc, char **argv)
         return bars(argv[2], ref, expect);
     }
     if (argc == 4 && strcmp(argv[1], "json") == 0) {
-        return json(argv[2], argv[3], NULL, 0);
+        return json(argv[2], argv[3], NULL, 0, 0, NULL);
+    }
+    if ((argc == 4 || argc == 5) && strcmp(argv[1], "steady") == 0) {
+        return json(argv[2], argv[3], NULL, 0, 1, argc == 5 ? argv[4] : NULL);
+    }
+    if (argc == 4 && strcmp(argv[1], "same") == 0) {
+        return same(argv[2], argv[3]);
+    }
+    if (argc == 5 && strcmp(argv[1], "jpeg") == 0) {
+        return make_jpeg(argv[2], argv[3], argv[4]);
+    }
+    if (argc == 6 && strcmp(argv[1], "feed") == 0) {
+        return feed(argv[2], argv[3], argv[4], argv[5]);
     }
     if (argc >= 5 && strcmp(argv[1], "stages") == 0) {
-        return json(argv[2], argv[3], (const char *const *)argv + 4, (size_t)argc - 4);
+        return json(argv[2], argv[3], (const char *const *)argv + 4, (size_t)argc - 4, 0, NULL);
     }
-    fputs("usage: capture-check press DEVICE NAME | set DEVICE NAME VALUE | bars PGM [REF.pgm] [=Y0,...,Y7] | json FILE N | stages FILE N STAGE...\n", stderr);
+    fputs("usage: capture-check press DEVICE NAME | set DEVICE NAME VALUE | bars PGM [REF.pgm] [=Y0,...,Y7] | json FILE N | stages FILE N STAGE...\n"
+          "       | steady FILE N [S] | same PGM REF.pgm | jpeg IN.pgm OUT.jpg REF.pgm | feed DEVICE OUT.jpg W H\n",
+          stderr);
     return 2;
 }

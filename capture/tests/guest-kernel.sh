@@ -30,8 +30,8 @@ fi
 kver=${pkg#linux-image-}
 tree=$cache/kernel-$kver
 if [ ! -f "$tree/.done" ]; then
-    # A new ABI replaces the trees (and the vimc builds) of older ones.
-    rm -rf "$cache"/kernel-* "$cache"/kbuild-* "$cache"/vimc-*
+    # A new ABI replaces the trees (and the vimc and v4l2loopback builds) of older ones.
+    rm -rf "$cache"/kernel-* "$cache"/kbuild-* "$cache"/vimc-* "$cache"/kheaders-* "$cache"/loopback-*
     mkdir -p "$tree"
     (cd "$cache" && rm -f "$pkg"_*.deb && apt-get download "$pkg" >&2)
     dpkg-deb -x "$cache/$pkg"_*.deb "$tree"

@@ -4,6 +4,8 @@
 # Debian's own kernel under qemu (TCG), loads vivid (and vimc when libcamera is
 # built), and runs a statically linked symline-capture inside the guest.
 # Pass/fail comes from the markers the guest prints on its serial console.
+# Motion-JPEG, which vivid does not offer, goes through v4l2loopback (built
+# here for the guest kernel from Debian's v4l2loopback-dkms source).
 # The libcamera checks on vimc run unless SYMLINE_WITH_LIBCAMERA=OFF; what they
 # need (libcamera-dev, g++) is installed with apt-get. A step that cannot run
 # is printed as SKIP, never counted as passed, and the run then exits 77
@@ -61,7 +63,9 @@ fresh_build_dir() {
     fi
 }
 
-# Guest build: static, PGM only (no libpng in the guest).
+# Guest build: static, PGM only (no libpng in the guest); Motion-JPEG decoded with
+# libturbojpeg's archive, installed here when missing (without it the MJPEG step is skipped).
+need_pkg libturbojpeg0-dev pkg-config || true
 gbuild=$cache/guest-build
 fresh_build_dir "$gbuild"
 cmake -S "$src" -B "$gbuild" -DCMAKE_BUILD_TYPE=Release -DSYMLINE_BUILD_TESTS=OFF \
@@ -90,6 +94,46 @@ modprobe -d "$ktree" -S "$kver" --show-depends vivid | while read -r cmd path _;
     [ "$name" = vivid.ko ] || echo "$name" >>"$root/modules/order"
 done
 [ -f "$root/modules/vivid.ko" ] || { echo "run-vivid: vivid.ko not found in $kver" >&2; exit 1; }
+
+# Motion-JPEG through a real driver (vivid offers none): v4l2loopback, built for the
+# guest kernel from Debian's v4l2loopback-dkms source; capture-check feeds its output
+# side a JPEG made here from a bundled frame, symline-capture reads the capture side.
+loop_frame=$src/tests/data/msl_20190606_r2_cam0_20190606_204340.pgm
+with_loopback=0
+if ! loopko=$(sh "$here/guest-loopback.sh" "$cache" "$kver"); then
+    skip "mjpeg-loopback: v4l2loopback could not be built for $kver (see above)"
+else
+    rc=0
+    mkdir -p "$root/mjpeg"
+    "$gbuild/bin/capture-check" jpeg "$loop_frame" "$root/mjpeg/frame.jpg" "$root/mjpeg/ref.pgm" >&2 || rc=$?
+    missing=
+    for d in $(modinfo -F depends "$loopko" | tr ',' ' '); do
+        grep -q "^$d.ko\$" "$root/modules/order" || missing="$missing $d"
+    done
+    # What the detector finds in the reference luma (the same program, replaying it here):
+    # the guest must find exactly that in every decoded frame.
+    if [ $rc -eq 0 ]; then
+        rm -rf "$cache/mjpeg-ref"
+        mkdir -p "$cache/mjpeg-ref"
+        cp "$root/mjpeg/ref.pgm" "$cache/mjpeg-ref/"
+        "$gbuild/bin/symline-capture" --replay "$cache/mjpeg-ref" --frames 1 --summary-every 0 \
+            >"$cache/mjpeg-ref.json" 2>/dev/null || rc=$?
+        "$gbuild/bin/capture-check" steady "$cache/mjpeg-ref.json" 1 |
+            sed -n 's/^steady: 1 lines, \([0-9]*\) segments each$/\1/p' >"$root/mjpeg/segments"
+        [ -s "$root/mjpeg/segments" ] || rc=1
+    fi
+    if [ $rc -eq 77 ]; then
+        skip "mjpeg-loopback: the guest build has no libturbojpeg (libturbojpeg0-dev's archive)"
+    elif [ $rc -ne 0 ]; then
+        echo "run-vivid: cannot make the Motion-JPEG frame or its reference" >&2
+        exit 1
+    elif [ -n "$missing" ]; then
+        skip "mjpeg-loopback: v4l2loopback needs modules vivid does not load:$missing"
+    else
+        cp "$loopko" "$root/modules/v4l2loopback.ko"
+        with_loopback=1
+    fi
+fi
 
 # libcamera on vimc: its build needs libcamera-dev and g++, installed here when
 # missing; only SYMLINE_WITH_LIBCAMERA=OFF or a failed installation leaves it out,
@@ -149,7 +193,11 @@ end=$(date +%s)
 
 grep -a -E '^(SYMLINE-CHECK|SYMLINE-RESULT|SYMLINE-INFO|    \| )' "$log" | tr -d '\r' || true
 echo "run-vivid: guest ran $((end - start)) s; serial log: $log" >&2
-# The libcamera checks were built into the guest: they must also have run.
+# The loopback and libcamera checks were built into the guest: they must also have run.
+if [ $with_loopback = 1 ] && ! grep -a -q '^SYMLINE-CHECK mjpeg-loopback ' "$log"; then
+    echo "run-vivid: the Motion-JPEG check on v4l2loopback was built but did not run" >&2
+    exit 1
+fi
 if [ $with_libcamera = 1 ] && ! grep -a -q '^SYMLINE-CHECK libcamera-list-vimc ' "$log"; then
     echo "run-vivid: the libcamera checks were built but did not run" >&2
     exit 1
