@@ -15,7 +15,9 @@
 #                       (build out count seed repeat jobs opts: BUILD OUT
 #                       COUNT SEED REPEAT JOBS OPTS; count, seed, repeat and
 #                       jobs are numbers); sets ARGS_SHIFT; anything else is
-#                       a usage error
+#                       a usage error. With `columns` in the list, each
+#                       --opts VALUE adds a column: OPTS_1 .. OPTS_$NOPTS
+#   args_columns        after the options: one empty column when none given
 #   args_dirs           DATA (when set) must be a folder; DATA, BUILD and OUT
 #                       (when set) become absolute paths
 # Run rather than sourced, --help prints this.
@@ -57,6 +59,7 @@ args_common() {
     args_opt=${1%%=*}
     case " ${ARGS_COMMON:-} " in
     *" ${args_opt#--} "*) ;;
+    *" columns "*) [ "$args_opt" = --opts ] || args_error "unknown option '$args_opt'" ;;
     *) args_error "unknown option '$args_opt'" ;;
     esac
     args_value "$@"
@@ -71,8 +74,21 @@ args_common() {
     --seed) SEED=$ARGS_VALUE ;;
     --repeat) REPEAT=$ARGS_VALUE ;;
     --jobs) JOBS=$ARGS_VALUE ;;
-    --opts) OPTS=$ARGS_VALUE ;;
+    --opts)
+        case " $ARGS_COMMON " in
+        *" columns "*)
+            NOPTS=$((${NOPTS:-0} + 1))
+            eval "OPTS_$NOPTS=\$ARGS_VALUE" ;;
+        *) OPTS=$ARGS_VALUE ;;
+        esac ;;
     esac
+}
+
+args_columns() {
+    if [ "${NOPTS:-0}" -eq 0 ]; then
+        NOPTS=1
+        OPTS_1=
+    fi
 }
 
 args_dirs() {

@@ -17,15 +17,9 @@ set -eu
 # shellcheck source=../args.sh
 . "$(dirname "$0")/../args.sh"
 BUILD=$REPO/build
-NOPTS=0
-ARGS_COMMON="build"
+ARGS_COMMON="build columns"
 while [ $# -gt 0 ]; do
     case $1 in
-        --opts | --opts=*)
-            args_value "$@"
-            NOPTS=$((NOPTS + 1))
-            eval "OPTS_$NOPTS=\$ARGS_VALUE"
-            shift "$ARGS_SHIFT" ;;
         --) shift; break ;;
         -*) args_common "$@"; shift "$ARGS_SHIFT" ;;
         *) break ;;
@@ -33,10 +27,7 @@ while [ $# -gt 0 ]; do
 done
 [ $# -ge 1 ] || args_error "no FRAME given"
 args_dirs
-if [ "$NOPTS" -eq 0 ]; then
-    NOPTS=1
-    OPTS_1=
-fi
+args_columns
 BENCH=$BUILD/bin/symline-bench
 command -v valgrind >/dev/null || { echo "stages.sh: valgrind is needed (apt-get install -y valgrind)" >&2; exit 2; }
 [ -x "$BENCH" ] || { echo "stages.sh: no $BENCH (build first: cmake --build --preset default)" >&2; exit 2; }
