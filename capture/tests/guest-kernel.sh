@@ -10,15 +10,9 @@ cache=${1:?usage: guest-kernel.sh CACHE_DIR}
 mkdir -p "$cache"
 cache=$(cd "$cache" && pwd)
 
-need_pkg() {
-    for p in "$@"; do
-        if ! dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$'; then
-            apt-get install -y "$@" >&2 || { apt-get update >&2 && apt-get install -y "$@" >&2; }
-            return
-        fi
-    done
-}
-need_pkg kmod
+# shellcheck source=pkgs.sh
+. "$(dirname "$0")/pkgs.sh"
+need_pkgs kmod
 
 # The ABI number changes with security updates: resolve it now.
 pkg=$(apt-cache depends linux-image-amd64 2>/dev/null | sed -n 's/^ *Depends: \(linux-image-[0-9].*-amd64\)$/\1/p' | head -n 1)

@@ -18,16 +18,9 @@ if [ -f "$out/v4l2loopback.ko" ]; then
     exit 0
 fi
 
-need_pkg() {
-    missing=
-    for p in "$@"; do
-        dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || missing="$missing $p"
-    done
-    [ -z "$missing" ] && return 0
-    # shellcheck disable=SC2086
-    apt-get install -y $missing >&2 || { apt-get update >&2 && apt-get install -y $missing >&2; }
-}
-need_pkg make gcc xz-utils
+# shellcheck source=pkgs.sh
+. "$(dirname "$0")/pkgs.sh"
+need_pkgs make gcc xz-utils
 
 root=$cache/kheaders-$kver
 common=linux-headers-${kver%-amd64}-common

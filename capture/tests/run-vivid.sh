@@ -33,17 +33,9 @@ mkdir -p "$cache"
 cache=$(cd "$cache" && pwd)
 [ -n "$log" ] || log=$cache/vivid-serial.log
 
-need_pkg() {
-    missing=
-    for p in "$@"; do
-        dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || missing="$missing $p"
-    done
-    [ -z "$missing" ] && return 0
-    echo "run-vivid: installing$missing" >&2
-    # shellcheck disable=SC2086
-    apt-get install -y $missing >&2 || { apt-get update >&2 && apt-get install -y $missing >&2; }
-}
-need_pkg qemu-system-x86 busybox-static cpio kmod cmake gcc libc6-dev
+# shellcheck source=pkgs.sh
+. "$(dirname "$0")/pkgs.sh"
+need_pkgs qemu-system-x86 busybox-static cpio kmod cmake gcc libc6-dev
 skipped=""
 skip() {
     echo "SYMLINE-SKIP $1"
@@ -65,7 +57,7 @@ fresh_build_dir() {
 
 # Guest build: static, PGM only (no libpng in the guest); Motion-JPEG decoded with
 # libturbojpeg's archive, installed here when missing (without it the MJPEG step is skipped).
-need_pkg libturbojpeg0-dev pkg-config || true
+need_pkgs libturbojpeg0-dev pkg-config || true
 gbuild=$cache/guest-build
 fresh_build_dir "$gbuild"
 cmake -S "$src" -B "$gbuild" -DCMAKE_BUILD_TYPE=Release -DSYMLINE_BUILD_TESTS=OFF \
@@ -141,7 +133,7 @@ fi
 with_libcamera=0
 if [ "${SYMLINE_WITH_LIBCAMERA:-AUTO}" = OFF ]; then
     skip "libcamera checks on vimc: SYMLINE_WITH_LIBCAMERA=OFF"
-elif ! need_pkg libcamera-dev g++ pkg-config; then
+elif ! need_pkgs libcamera-dev g++ pkg-config; then
     skip "libcamera checks on vimc: libcamera-dev or g++ could not be installed"
 elif ! pkg-config --exists libcamera 2>/dev/null; then
     skip "libcamera checks on vimc: pkg-config does not find libcamera"

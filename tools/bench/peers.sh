@@ -36,8 +36,8 @@ done
 args_dirs
 
 # ---- tools: Debian packages, then the three binaries ----
-# shellcheck source=../pkgs.sh
-. "$REPO/tools/pkgs.sh"
+# shellcheck source=../../capture/tests/pkgs.sh
+. "$REPO/capture/tests/pkgs.sh"
 if command -v dpkg >/dev/null 2>&1; then
     need_pkgs cmake make gcc g++ libc6-dev pkg-config libpng-dev libopencv-dev libopencv-contrib-dev
 fi

@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: Apache-2.0
 # need_pkgs NAME...: installs the Debian packages of the list that are missing
-# (apt-get, as root; sudo otherwise). Sourced by the evaluation and benchmark
-# scripts, which call it only where dpkg exists.
+# (apt-get, as root; sudo otherwise); progress and errors on stderr. Sourced
+# by the capture integration test and its guest build scripts, and by the
+# evaluation and benchmark scripts in tools/, which call it only where dpkg
+# exists.
 need_pkgs() {
     missing=
     for p in "$@"; do
@@ -23,6 +25,6 @@ if [ "$(basename "$0")" = pkgs.sh ]; then
     case ${1:-} in
     -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;;
     esac
-    echo "tools/pkgs.sh: source it, then call need_pkgs NAME..." >&2
+    echo "capture/tests/pkgs.sh: source it, then call need_pkgs NAME..." >&2
     exit 2
 fi
