@@ -82,28 +82,40 @@ static int parse_feat_args(int argc, char **argv, feat_args *a, int allow_plot)
     return 0;
 }
 
+/* The arguments, then the input frame and a view of it: 0, 1 (--help was
+ * answered) or the exit status of a failure. */
+static int load_feat(int argc, char **argv, int allow_plot, feat_args *a, imgio_gray *in,
+                     symline_image *view)
+{
+    char err[512];
+    const int rc = parse_feat_args(argc, argv, a, allow_plot);
+    if (rc != 0) {
+        return rc;
+    }
+    if (imgio_read_gray(a->in, in, err, sizeof err) != 0) {
+        return cli_error("%s", err);
+    }
+    view->width = in->width;
+    view->height = in->height;
+    view->stride = in->width;
+    view->data = in->px;
+    return 0;
+}
+
 int cmd_features(int argc, char **argv)
 {
     feat_args a;
     imgio_gray in;
     symline_image view;
-    char err[512];
     symline_point *pts;
     uint32_t cap, n = 0u, i;
     void *ws;
     size_t ws_size;
     symline_status st;
-    int rc = parse_feat_args(argc, argv, &a, 0);
+    int rc = load_feat(argc, argv, 0, &a, &in, &view);
     if (rc != 0) {
         return rc == 1 ? CLI_OK : rc;
     }
-    if (imgio_read_gray(a.in, &in, err, sizeof err) != 0) {
-        return cli_error("%s", err);
-    }
-    view.width = in.width;
-    view.height = in.height;
-    view.stride = in.width;
-    view.data = in.px;
     ws_size = symline_features_workspace_size(in.width, in.height, a.radius);
     cap = symline_features_max_points(in.width, in.height);
     ws = malloc(ws_size);
@@ -171,17 +183,10 @@ int cmd_histogram(int argc, char **argv)
     void *ws;
     size_t ws_size;
     symline_status st;
-    int rc = parse_feat_args(argc, argv, &a, 1);
+    int rc = load_feat(argc, argv, 1, &a, &in, &view);
     if (rc != 0) {
         return rc == 1 ? CLI_OK : rc;
     }
-    if (imgio_read_gray(a.in, &in, err, sizeof err) != 0) {
-        return cli_error("%s", err);
-    }
-    view.width = in.width;
-    view.height = in.height;
-    view.stride = in.width;
-    view.data = in.px;
     ws_size = symline_histogram_workspace_size(in.width, a.radius);
     ws = malloc(ws_size);
     counts = (uint16_t *)malloc((size_t)in.width * sizeof(uint16_t));
