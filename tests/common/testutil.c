@@ -45,3 +45,19 @@ uint32_t tu_energy_direct(const uint8_t *q, size_t step, uint32_t n, uint32_t i,
     }
     return e;
 }
+
+symline_status tu_detect_guarded(const symline_image *img, const symline_config *cfg,
+                                 symline_result *r, int *guards_ok)
+{
+    const size_t need = symline_detect_workspace_size(img->width, img->height, cfg);
+    uint8_t *ws = need > 0u ? tu_guard_alloc(need) : NULL;
+    symline_status st;
+    if (ws == NULL) { /* a zero size query fails the caller's status check */
+        *guards_ok = 0;
+        return SYMLINE_ERR_BUFFER;
+    }
+    st = symline_detect(img, cfg, ws, need, r);
+    *guards_ok = tu_guard_ok(ws, need);
+    tu_guard_free(ws);
+    return st;
+}

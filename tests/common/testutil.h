@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "symline/detect.h"
 #include "symline/types.h"
 
 /* Deterministic pseudo-random numbers (xorshift32); state must be non-zero. */
@@ -31,6 +32,15 @@ static inline uint32_t tu_rand(uint32_t *s)
 uint8_t *tu_guard_alloc(size_t n);
 int tu_guard_ok(const uint8_t *p, size_t n);
 void tu_guard_free(uint8_t *p);
+
+/*
+ * symline_detect() of img with cfg into r (its outputs set by the caller), in
+ * a guarded workspace of exactly the queried size: the status, and in
+ * *guards_ok whether no byte around the workspace was written (a size query
+ * of 0 gives SYMLINE_ERR_BUFFER without a call).
+ */
+symline_status tu_detect_guarded(const symline_image *img, const symline_config *cfg,
+                                 symline_result *r, int *guards_ok);
 
 /* Direct-from-the-formula energy of index i of a sequence (used as an oracle). */
 uint32_t tu_energy_direct(const uint8_t *q, size_t step, uint32_t n, uint32_t i, uint32_t m);

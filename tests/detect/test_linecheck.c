@@ -96,25 +96,20 @@ static void detect(const uint8_t *px, symline_field_mode mode, symline_result *r
 {
     symline_config cfg;
     symline_image img;
-    size_t need;
-    uint8_t *ws;
+    int guards_ok;
     symline_config_default(&cfg);
     cfg.field_boundary = mode;
     img.width = W;
     img.height = H;
     img.stride = W;
     img.data = px;
-    need = symline_detect_workspace_size(W, H, &cfg);
-    assert_true(need > 0u);
-    ws = tu_guard_alloc(need);
     memset(r, 0, sizeof *r);
     r->segments = segs;
     r->segment_cap = 256u;
     r->points = pts;
     r->point_cap = 4u * W * H;
-    assert_int_equal(symline_detect(&img, &cfg, ws, need, r), SYMLINE_OK);
-    assert_true(tu_guard_ok(ws, need));
-    tu_guard_free(ws);
+    assert_int_equal(tu_detect_guarded(&img, &cfg, r, &guards_ok), SYMLINE_OK);
+    assert_true(guards_ok);
 }
 
 /* Segments with both ends inside the box (pixels). */

@@ -346,8 +346,7 @@ static uint32_t detect_rows(const uint8_t *px, symline_field_mode mode, symline_
     symline_image img;
     static symline_segment segs[256];
     static symline_point pts[2u * W * H];
-    size_t need;
-    uint8_t *ws;
+    int guards_ok;
     uint32_t i;
     symline_config_default(&cfg);
     cfg.field_boundary = mode;
@@ -355,17 +354,13 @@ static uint32_t detect_rows(const uint8_t *px, symline_field_mode mode, symline_
     img.height = H;
     img.stride = W;
     img.data = px;
-    need = symline_detect_workspace_size(W, H, &cfg);
-    assert_true(need > 0u);
-    ws = tu_guard_alloc(need);
     memset(r, 0, sizeof *r);
     r->segments = segs;
     r->segment_cap = 256u;
     r->points = pts;
     r->point_cap = 2u * W * H;
-    assert_int_equal(symline_detect(&img, &cfg, ws, need, r), SYMLINE_OK);
-    assert_true(tu_guard_ok(ws, need));
-    tu_guard_free(ws);
+    assert_int_equal(tu_detect_guarded(&img, &cfg, r, &guards_ok), SYMLINE_OK);
+    assert_true(guards_ok);
     *above = *below = 0u;
     for (i = 0; i < r->segment_count; i++) {
         const int32_t y = (r->segments[i].y0 + r->segments[i].y1) / 512;
