@@ -128,28 +128,19 @@ static void set_ends(symline_segment *s, int32_t x0, int32_t y0, int32_t x1, int
     s->y1 = y1;
 }
 
-/* Field-by-field copy (a struct assignment may become a libc memcpy call). */
-static void copy_segment(symline_segment *d, const symline_segment *s)
+/* Byte by byte: a struct assignment or memcpy may become a libc call. */
+static void copy_bytes(void *d, const void *s, size_t n)
 {
-    set_ends(d, s->x0, s->y0, s->x1, s->y1);
-    d->max_dev = s->max_dev;
-    d->first = s->first;
-    d->count = s->count;
-    d->kind = s->kind;
-    d->axis = s->axis;
-    d->level = s->level;
-    d->merged = s->merged;
+    uint8_t *o = (uint8_t *)d;
+    const uint8_t *i = (const uint8_t *)s;
+    while (n-- != 0u) {
+        *o++ = *i++;
+    }
 }
 
 static void copy_points(symline_point *d, const symline_point *s, uint32_t n)
 {
-    uint32_t k;
-    for (k = 0; k < n; k++) {
-        d[k].x = s[k].x;
-        d[k].y = s[k].y;
-        d[k].fx = s[k].fx;
-        d[k].fy = s[k].fy;
-    }
+    copy_bytes(d, s, (size_t)n * sizeof(symline_point));
 }
 
 /* A slot whose segment was absorbed (kind is a symline_kind otherwise); the
@@ -402,7 +393,7 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
     }
     for (i = 0, w = 0; i < m.n; i++) {
         if (r->segments[i].kind != SL_GONE) {
-            copy_segment(&r->segments[w++], &r->segments[i]);
+            copy_bytes(&r->segments[w++], &r->segments[i], sizeof(symline_segment));
         }
     }
     r->segment_count = w;

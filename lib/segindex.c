@@ -41,20 +41,13 @@ uint32_t symline_i_cell_of(int32_t v_q8, uint32_t n)
     return c < n ? c : n - 1u;
 }
 
-static uint32_t scaled(uint32_t u, uint32_t k, uint32_t sh)
-{
-    return (u >> sh) * k + (((u & ((1u << sh) - 1u)) * k) >> sh);
-}
-
 static void visit_cell(symline_i_cellwalk *w, uint32_t c)
 {
     uint32_t node;
     /* if/else rather than a switch: no jump table helper on small cores. */
     if (w->mode == SL_WALK_COUNT) {
-        w->end[c] += w->width;
+        w->end[c] += w->width * w->sign;
         w->added += w->width;
-    } else if (w->mode == SL_WALK_UNCOUNT) {
-        w->end[c] -= w->width;
     } else if (w->mode == SL_WALK_FILL) {
         w->ids[w->end[c]++] = w->seg;
         if (w->width == 2u) {
@@ -70,11 +63,24 @@ static void visit_cell(symline_i_cellwalk *w, uint32_t c)
     }
 }
 
+/* The cells c[0] .. c[1] (of n) within margin of the span from p to q. */
+static void cell_span(int32_t p, int32_t q, int32_t margin, uint32_t n, uint32_t c[2])
+{
+    c[0] = symline_i_cell_of((p < q ? p : q) - margin, n);
+    c[1] = symline_i_cell_of((p > q ? p : q) + margin, n);
+}
+
+/* a + d k / 2^sh, rounded down: d < 2^26 and k <= 2^12, the product needs 64 bits. */
+SL_NOINLINE static int32_t split_at(int32_t a, int32_t d, uint32_t k, uint32_t sh)
+{
+    return a + (int32_t)(((int64_t)d * (int32_t)k) >> sh);
+}
+
 void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
                               int32_t margin)
 {
-    const uint32_t ux = (uint32_t)(bx > ax ? bx - ax : ax - bx);
-    const uint32_t uy = (uint32_t)(by > ay ? by - ay : ay - by);
+    const int32_t dx = bx - ax, dy = by - ay;
+    const uint32_t ux = (uint32_t)(dx < 0 ? -dx : dx), uy = (uint32_t)(dy < 0 ? -dy : dy);
     const uint32_t len = ux > uy ? ux : uy;
     uint32_t sh = 0u, k;
     int32_t px = ax, py = ay;
@@ -82,25 +88,23 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     while ((len >> sh) > (SL_PX_Q8(1u) << SL_CELL_SHIFT)) {
         sh++;
     }
+    /* 2^sh pieces of at most a cell; any split of the chord covers it. */
     for (k = 1u; k <= (1u << sh); k++) {
-        const int32_t ox = (int32_t)scaled(ux, k, sh), oy = (int32_t)scaled(uy, k, sh);
-        const int32_t qx = bx >= ax ? ax + ox : ax - ox, qy = by >= ay ? ay + oy : ay - oy;
-        const uint32_t cx0 = symline_i_cell_of((px < qx ? px : qx) - margin, w->cols);
-        const uint32_t cx1 = symline_i_cell_of((px > qx ? px : qx) + margin, w->cols);
-        const uint32_t cy0 = symline_i_cell_of((py < qy ? py : qy) - margin, w->rows);
-        const uint32_t cy1 = symline_i_cell_of((py > qy ? py : qy) + margin, w->rows);
-        uint32_t cx, cy;
-        for (cy = cy0; cy <= cy1; cy++) {
-            for (cx = cx0; cx <= cx1; cx++) {
-                if (cx < w->px0 || cx > w->px1 || cy < w->py0 || cy > w->py1) {
-                    visit_cell(w, cy * w->cols + cx);
+        const int32_t qx = split_at(ax, dx, k, sh), qy = split_at(ay, dy, k, sh);
+        uint32_t cx[2], cy[2], x, y;
+        cell_span(px, qx, margin, w->cols, cx);
+        cell_span(py, qy, margin, w->rows, cy);
+        for (y = cy[0]; y <= cy[1]; y++) {
+            for (x = cx[0]; x <= cx[1]; x++) {
+                if (x < w->px0 || x > w->px1 || y < w->py0 || y > w->py1) {
+                    visit_cell(w, y * w->cols + x);
                 }
             }
         }
-        w->px0 = cx0;
-        w->px1 = cx1;
-        w->py0 = cy0;
-        w->py1 = cy1;
+        w->px0 = cx[0];
+        w->px1 = cx[1];
+        w->py0 = cy[0];
+        w->py1 = cy[1];
         px = qx;
         py = qy;
     }
@@ -181,12 +185,13 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
     /* Count, segment by segment, while the ids fit. */
     v.mode = SL_WALK_COUNT;
+    v.sign = 1u;
     for (s = 0; s < nseg && s < SL_PIECE; s++) {
         v.added = 0u;
         visit_segment(&v, r, s, tol_q8);
         if (v.added > cap - total) {
             /* Does not fit: take its counts back; it and later ones stay out. */
-            v.mode = SL_WALK_UNCOUNT;
+            v.sign = UINT32_MAX;
             visit_segment(&v, r, s, tol_q8);
             break;
         }
