@@ -167,25 +167,29 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
 {
     /* Coordinates in Q4 full resolution, relative to the first point. */
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
-    int32_t ox, oy, sx = 0, sy = 0, mx, my, ux, uy, len;
+    int32_t ox, oy, mx, my, ux, uy, len;
+    uint32_t sx = 0u, sy = 0u; /* the second sweep's sums wrap unused */
     int64_t a = 0, b = 0, c = 0;
-    uint32_t i, cnt = 0u;
+    uint32_t i, k, cnt = 0u;
     symline_i_pt_off(&p[0], level, 0, 0, &ox, &oy);
-    for (i = 0; i < n; i += step) {
-        int32_t qx, qy;
-        rel_q4(&p[i], level, ox, oy, 0, 0, &qx, &qy);
-        sx += qx;
-        sy += qy;
-        cnt++;
-    }
-    mx = sx / (int32_t)cnt;
-    my = sy / (int32_t)cnt;
-    for (i = 0; i < n; i += step) {
-        int32_t dx, dy;
-        rel_q4(&p[i], level, ox, oy, mx, my, &dx, &dy);
-        a += (int64_t)dx * dx;
-        b += (int64_t)dx * dy;
-        c += (int64_t)dy * dy;
+    /* Two sweeps: the mean (mx, my still 0), then the scatter about it. */
+    mx = my = 0;
+    for (k = 0; k < 2u; k++) {
+        for (i = 0; i < n; i += step) {
+            int32_t dx, dy;
+            rel_q4(&p[i], level, ox, oy, mx, my, &dx, &dy);
+            sx += (uint32_t)dx;
+            sy += (uint32_t)dy;
+            cnt++;
+            a += (int64_t)dx * dx;
+            b += (int64_t)dx * dy;
+            c += (int64_t)dy * dy;
+        }
+        if (k == 0u) {
+            mx = (int32_t)sx / (int32_t)cnt;
+            my = (int32_t)sy / (int32_t)cnt;
+            a = b = c = 0;
+        }
     }
     /* Until a, c (never negative) and |b| are below 2^30. */
     while ((a | c) >= ((int64_t)1 << 30) ||
