@@ -23,22 +23,15 @@ static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
     return (uint64_t)(dx * dx + dy * dy);
 }
 
-/* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
-static void end_of(const symline_segment *a, const symline_segment *b, uint32_t i, int32_t *x,
-                   int32_t *y)
-{
-    const symline_segment *s = i < 2u ? a : b;
-    *x = (i & 1u) ? s->x1 : s->x0;
-    *y = (i & 1u) ? s->y1 : s->y0;
-}
-
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece). */
 SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b, uint64_t gap2,
                                   uint32_t dev_q8, int32_t ends[4])
 {
-    const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
-    const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
+    /* The four ends: a's two, then b's two (x, y each). */
+    const int32_t e[8] = {a->x0, a->y0, a->x1, a->y1, b->x0, b->y0, b->x1, b->y1};
+    const int32_t adx = e[2] - e[0], ady = e[3] - e[1];
+    const int32_t bdx = e[6] - e[4], bdy = e[7] - e[5];
     /* The longer piece by the larger of |dx|, |dy| (within 30 % of its length). */
     const int32_t aax = adx < 0 ? -adx : adx, aay = ady < 0 ? -ady : ady;
     const int32_t abx = bdx < 0 ? -bdx : bdx, aby = bdy < 0 ? -bdy : bdy;
@@ -53,30 +46,24 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
      * pairs of a cluttered frame fail it); then each end on the other
      * piece's line. Both must hold, so the order changes only the cost. */
     for (i = 0; i < 4u; i++) {
-        int32_t x, y, ox, oy;
-        uint64_t t;
-        end_of(a, b, i >> 1, &x, &y);
-        end_of(a, b, 2u | (i & 1u), &ox, &oy);
-        t = dist2(x, y, ox, oy);
+        const int32_t *p = &e[i & 2u], *q = &e[4u + 2u * (i & 1u)];
+        const uint64_t t = dist2(p[0], p[1], q[0], q[1]);
         g = t < g ? t : g;
     }
     if (g > gap2) {
         return false;
     }
     for (i = 0; i < 4u; i++) {
-        const symline_segment *o = i < 2u ? b : a;
-        int32_t x, y;
-        end_of(a, b, i, &x, &y);
-        if (symline_i_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
+        const int32_t *o = &e[i < 2u ? 4u : 0u];
+        if (symline_i_line_dist_q8(o[0], o[1], o[2] - o[0], o[3] - o[1], e[2u * i],
+                                   e[2u * i + 1u]) > dev_q8) {
             return false;
         }
     }
     /* New ends: the extreme end points along the longer piece. */
     for (i = 0; i < 4u; i++) {
-        int32_t x, y;
-        int64_t proj;
-        end_of(a, b, i, &x, &y);
-        proj = (int64_t)x * dx + (int64_t)y * dy;
+        const int32_t x = e[2u * i], y = e[2u * i + 1u];
+        const int64_t proj = (int64_t)x * dx + (int64_t)y * dy;
         if (i == 0u || proj < lo) {
             lo = proj;
             ends[0] = x;
@@ -248,8 +235,6 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
     q.cols = m->cols;
     q.rows = m->rows;
     q.mode = SL_WALK_GATHER;
-    q.px0 = 1u; /* no previous piece */
-    q.px1 = 0u;
     q.head = m->head;
     q.next = m->next;
     q.cand = m->cand;

@@ -82,7 +82,8 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     const int32_t dx = bx - ax, dy = by - ay;
     const uint32_t ux = (uint32_t)(dx < 0 ? -dx : dx), uy = (uint32_t)(dy < 0 ? -dy : dy);
     const uint32_t len = ux > uy ? ux : uy;
-    uint32_t sh = 0u, k;
+    /* The previous piece's cells: none before the first. */
+    uint32_t sh = 0u, k, px0 = 1u, px1 = 0u, py0 = 0u, py1 = 0u;
     int32_t px = ax, py = ay;
     margin += (int32_t)((len + (uint32_t)margin) >> 10) + SL_PX_Q8(1);
     while ((len >> sh) > (SL_PX_Q8(1u) << SL_CELL_SHIFT)) {
@@ -96,15 +97,15 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
         cell_span(py, qy, margin, w->rows, cy);
         for (y = cy[0]; y <= cy[1]; y++) {
             for (x = cx[0]; x <= cx[1]; x++) {
-                if (x < w->px0 || x > w->px1 || y < w->py0 || y > w->py1) {
+                if (x < px0 || x > px1 || y < py0 || y > py1) {
                     visit_cell(w, y * w->cols + x);
                 }
             }
         }
-        w->px0 = cx[0];
-        w->px1 = cx[1];
-        w->py0 = cy[0];
-        w->py1 = cy[1];
+        px0 = cx[0];
+        px1 = cx[1];
+        py0 = cy[0];
+        py1 = cy[1];
         px = qx;
         py = qy;
     }
@@ -119,8 +120,6 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
     const symline_segment *s = &r->segments[id];
     const symline_point *p = r->points + s->first;
     uint32_t i;
-    v->px0 = 1u; /* no previous piece */
-    v->px1 = 0u;
     v->seg = id;
     v->width = 1u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
@@ -132,8 +131,6 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
         v->seg = SL_PIECE | (s->first + i);
         v->piece_end = s->first + j;
-        v->px0 = 1u;
-        v->px1 = 0u;
         symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
                                  (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, tol);
     }

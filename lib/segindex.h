@@ -36,15 +36,14 @@ typedef struct symline_i_segindex {
  * the segment ends listed in the cells (merge.c). A switch rather than a
  * function pointer, so that the firmware's stack analysis can follow it. */
 typedef enum symline_i_walk_mode {
-    SL_WALK_COUNT,   /* end[c] += width * sign (-1: a count taken back), added += width */
-    SL_WALK_FILL,    /* ids[end[c]++] = seg */
-    SL_WALK_GATHER   /* every node of cell c's list (head, next) appended to cand */
+    SL_WALK_COUNT, /* end[c] += width * sign (-1: a count taken back), added += width */
+    SL_WALK_FILL,  /* ids[end[c]++] = seg */
+    SL_WALK_GATHER /* every node of cell c's list (head, next) appended to cand */
 } symline_i_walk_mode;
 
 typedef struct symline_i_cellwalk {
     uint32_t cols, rows;
     symline_i_walk_mode mode;
-    uint32_t px0, py0, px1, py1;     /* the previous piece's cells; set px0 > px1 to start */
     uint32_t *end, *ids, seg, added; /* COUNT, FILL */
     uint32_t sign;                   /* COUNT: 1, or UINT32_MAX (-1) */
     uint32_t piece_end, width;       /* FILL: a curve piece's second entry; 2 then, else 1 */

@@ -214,7 +214,7 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
         ux /= 2;
         uy /= 2;
     }
-    len = (int32_t)symline_i_isqrt64((uint32_t)(ux * ux + uy * uy));
+    len = (int32_t)hypot_q(ux, uy);
     if (len == 0) {
         return false;
     }
