@@ -24,9 +24,9 @@ static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 }
 
 /* Whether line b may join line a: close ends, each piece on the other's line.
- * Sets the joined ends (the extreme ends along the longer piece). */
+ * Sets the joined ends (the extreme ends along the longer piece) as j's. */
 SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b, uint64_t gap2,
-                                  uint32_t dev_q8, int32_t ends[4])
+                                  uint32_t dev_q8, symline_segment *j)
 {
     /* The four ends: a's two, then b's two (x, y each). */
     const int32_t e[8] = {a->x0, a->y0, a->x1, a->y1, b->x0, b->y0, b->x1, b->y1};
@@ -66,13 +66,13 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
         const int64_t proj = (int64_t)x * dx + (int64_t)y * dy;
         if (i == 0u || proj < lo) {
             lo = proj;
-            ends[0] = x;
-            ends[1] = y;
+            j->x0 = x;
+            j->y0 = y;
         }
         if (i == 0u || proj > hi) {
             hi = proj;
-            ends[2] = x;
-            ends[3] = y;
+            j->x1 = x;
+            j->y1 = y;
         }
     }
     return true;
@@ -83,18 +83,18 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
  * are never on the stack together. */
 SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_point *ap,
                                        const symline_segment *b, const symline_point *bp,
-                                       const int32_t ends[4], uint32_t curve_q8)
+                                       const symline_segment *j, uint32_t curve_q8)
 {
     uint32_t d = 0u, sm = 0u, k;
     for (k = 0; k < 2u; k++) {
         const symline_point *p = k ? bp : ap;
         const uint32_t n = k ? b->count : a->count;
-        const uint32_t dk = symline_i_max_dev(p, n, 0u, ends[0], ends[1], ends[2], ends[3]);
-        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, ends[0], ends[1], ends[2], ends[3]);
+        const uint32_t dk = symline_i_max_dev(p, n, 0u, j);
+        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, j);
         d = dk > d ? dk : d;
         sm = sk > sm ? sk : sm;
     }
-    return symline_i_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_NO_JOIN : d;
+    return symline_i_is_curve(j, sm, curve_q8) ? SL_NO_JOIN : d;
 }
 
 /* A line may join; so may a piece taken for a curve whose points (p),
@@ -103,16 +103,7 @@ SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_p
 static bool joinable(const symline_segment *s, const symline_point *p, uint32_t curve_q8)
 {
     return s->kind == SYMLINE_KIND_LINE ||
-           symline_i_smooth_dev(p, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <= curve_q8 / 2u;
-}
-
-/* A segment's ends, Q8. */
-static void set_ends(symline_segment *s, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
-{
-    s->x0 = x0;
-    s->y0 = y0;
-    s->x1 = x1;
-    s->y1 = y1;
+           symline_i_smooth_dev(p, s->count, 0u, s) <= curve_q8 / 2u;
 }
 
 /* Byte by byte: a struct assignment or memcpy may become a libc call. */
@@ -171,7 +162,7 @@ typedef struct merger {
 
 /* Piece j joins piece i (i < j): the joined ends and max_dev, j's points
  * right behind i's, slot j gone. */
-static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uint32_t dev)
+static void absorb(merger *m, uint32_t i, uint32_t j, const symline_segment *e, uint32_t dev)
 {
     symline_result *r = m->r;
     symline_segment *a = &r->segments[i];
@@ -179,7 +170,10 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uin
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
     const uint8_t lb = r->segments[j].level;
-    set_ends(a, ends[0], ends[1], ends[2], ends[3]);
+    a->x0 = e->x0;
+    a->y0 = e->y0;
+    a->x1 = e->x1;
+    a->y1 = e->y1;
     a->max_dev = dev;
     a->kind = SYMLINE_KIND_LINE;
     a->level = a->level > lb ? a->level : lb;
@@ -199,9 +193,9 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uin
     r->segments[j].kind = SL_GONE;
 }
 
-/* The joined piece's max_dev when piece j may join piece i (ends: the
- * joined ends), else SL_NO_JOIN. */
-static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, int32_t ends[4])
+/* The joined piece's max_dev when piece j may join piece i (e: the joined
+ * ends), else SL_NO_JOIN. */
+static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segment *e)
 {
     const symline_segment *a = &m->r->segments[i];
     const symline_segment *b = &m->r->segments[j];
@@ -210,11 +204,11 @@ static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, int32_t ends[4
     /* The cheap geometric test first; both are pure, so the order changes
      * nothing but the cost. */
     if (b->kind == SL_GONE ||
-        !mergeable(a, b, m->gap2, m->dev_q8 + symline_i_block_half_q8(level), ends) ||
+        !mergeable(a, b, m->gap2, m->dev_q8 + symline_i_block_half_q8(level), e) ||
         !joinable(b, bp, m->curve_q8)) {
         return SL_NO_JOIN;
     }
-    return joined_dev(a, m->ap, b, bp, ends, m->curve_q8 + symline_i_block_half_q8(level));
+    return joined_dev(a, m->ap, b, bp, e, m->curve_q8 + symline_i_block_half_q8(level));
 }
 
 /*
@@ -249,7 +243,7 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
  * or false when none does. */
 static bool join_first(merger *m, uint32_t i)
 {
-    int32_t ends[4];
+    symline_segment e; /* the joined ends */
     uint32_t j = i + 1u;
     if (m->cols != 0u) {
         const int32_t nc = candidates(m, &m->r->segments[i]);
@@ -260,7 +254,7 @@ static bool join_first(merger *m, uint32_t i)
              * in the grid. */
             for (k = 0; k < (uint32_t)nc; k++) {
                 const uint32_t c = m->cand[k];
-                if (c > i && c < best && pair_dev(m, i, c, ends) != SL_NO_JOIN) {
+                if (c > i && c < best && pair_dev(m, i, c, &e) != SL_NO_JOIN) {
                     best = c;
                 }
             }
@@ -268,9 +262,9 @@ static bool join_first(merger *m, uint32_t i)
         }
     }
     for (; j < m->n; j++) {
-        const uint32_t dev = pair_dev(m, i, j, ends);
+        const uint32_t dev = pair_dev(m, i, j, &e);
         if (dev != SL_NO_JOIN) {
-            absorb(m, i, j, ends, dev);
+            absorb(m, i, j, &e, dev);
             return true;
         }
     }
@@ -288,7 +282,7 @@ static void grid_build(merger *m)
     for (s = 0; s < m->indexed; s++) {
         for (e = 0; e < 2u && segs[s].kind != SL_GONE; e++) {
             const int32_t x = e ? segs[s].x1 : segs[s].x0, y = e ? segs[s].y1 : segs[s].y0;
-            c = symline_i_cell_of(y, m->rows) * m->cols + symline_i_cell_of(x, m->cols);
+            c = symline_i_cell_at(m->cols, m->rows, x, y);
             m->next[2u * s + e] = m->head[c];
             m->head[c] = 2u * s + e;
         }
@@ -302,11 +296,10 @@ static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_
 {
     uint8_t *cur = (uint8_t *)ws;
     size_t e;
-    m->cols = ((width - 1u) >> SL_CELL_SHIFT) + 1u;
-    m->rows = ((height - 1u) >> SL_CELL_SHIFT) + 1u;
+    const uint32_t cells = symline_i_grid_dims(width, height, &m->cols, &m->rows);
     m->head = ws == NULL ? NULL
-                         : (uint32_t *)symline_i_carve(
-                               &cur, cur + bytes, (size_t)m->cols * m->rows * sizeof(uint32_t));
+                         : (uint32_t *)symline_i_carve(&cur, cur + bytes,
+                                                       (size_t)cells * sizeof(uint32_t));
     if (m->head == NULL) {
         m->cols = 0u;
         return;

@@ -19,19 +19,23 @@
 #include "fixed.h"
 #include "segments.h"
 
-static uint32_t cells_across(uint32_t n)
+uint32_t symline_i_grid_dims(uint32_t width, uint32_t height, uint32_t *cols, uint32_t *rows)
 {
-    return ((n - 1u) >> SL_CELL_SHIFT) + 1u;
+    *cols = ((width - 1u) >> SL_CELL_SHIFT) + 1u;
+    *rows = ((height - 1u) >> SL_CELL_SHIFT) + 1u;
+    return *cols * *rows;
 }
 
 size_t symline_i_segindex_ws_size(uint32_t width, uint32_t height)
 {
-    const size_t cells = (size_t)cells_across(width) * cells_across(height);
+    uint32_t cols, rows;
+    const size_t cells = symline_i_grid_dims(width, height, &cols, &rows);
     return symline_i_align_up(cells * sizeof(uint32_t)) + SL_ALIGN +
            symline_i_align_up(cells * SL_IDS_PER_CELL * sizeof(uint32_t));
 }
 
-uint32_t symline_i_cell_of(int32_t v_q8, uint32_t n)
+/* The cell (column or row) of a Q8 coordinate, clamped to 0 .. n-1. */
+static uint32_t cell_of(int32_t v_q8, uint32_t n)
 {
     uint32_t c;
     if (v_q8 < 0) {
@@ -63,11 +67,16 @@ static void visit_cell(symline_i_cellwalk *w, uint32_t c)
     }
 }
 
+uint32_t symline_i_cell_at(uint32_t cols, uint32_t rows, int32_t x_q8, int32_t y_q8)
+{
+    return cell_of(y_q8, rows) * cols + cell_of(x_q8, cols);
+}
+
 /* The cells c[0] .. c[1] (of n) within margin of the span from p to q. */
 static void cell_span(int32_t p, int32_t q, int32_t margin, uint32_t n, uint32_t c[2])
 {
-    c[0] = symline_i_cell_of((p < q ? p : q) - margin, n);
-    c[1] = symline_i_cell_of((p > q ? p : q) + margin, n);
+    c[0] = cell_of((p < q ? p : q) - margin, n);
+    c[1] = cell_of((p > q ? p : q) + margin, n);
 }
 
 /* a + d k / 2^sh, rounded down: d < 2^26 and k <= 2^12, the product needs 64 bits. */
@@ -155,12 +164,10 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
                               const symline_result *r, uint32_t nseg, int32_t tol_q8)
 {
     uint8_t *cur = (uint8_t *)mem, *const lim = (uint8_t *)mem + bytes;
-    const uint32_t cells = cells_across(width) * cells_across(height);
+    const uint32_t cells = symline_i_grid_dims(width, height, &ix->cols, &ix->rows);
     uint32_t c, s, cap, cap2, total = 0u, sum = 0u;
     uint32_t *ids2;
     symline_i_cellwalk v;
-    ix->cols = cells_across(width);
-    ix->rows = cells_across(height);
     ix->end = (uint32_t *)symline_i_carve(&cur, lim, (size_t)cells * sizeof(uint32_t));
     ix->indexed = 0u;
     if (ix->end == NULL) {
@@ -212,8 +219,7 @@ bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result 
 {
     uint32_t i = 0u;
     if (ix != NULL && ix->cols != 0u) {
-        const uint32_t c =
-            symline_i_cell_of(y, ix->rows) * ix->cols + symline_i_cell_of(x, ix->cols);
+        const uint32_t c = symline_i_cell_at(ix->cols, ix->rows, x, y);
         uint32_t k;
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
             const uint32_t e = ix->ids[k];

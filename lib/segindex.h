@@ -54,8 +54,11 @@ typedef struct symline_i_cellwalk {
 void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
                               int32_t margin);
 
-/* The cell (column or row) of a Q8 coordinate, clamped to 0 .. n-1. */
-uint32_t symline_i_cell_of(int32_t v_q8, uint32_t n);
+/* The grid of a width x height frame: *cols x *rows cells (returned). */
+uint32_t symline_i_grid_dims(uint32_t width, uint32_t height, uint32_t *cols, uint32_t *rows);
+
+/* The cell of a Q8 position, each coordinate clamped to the grid. */
+uint32_t symline_i_cell_at(uint32_t cols, uint32_t rows, int32_t x_q8, int32_t y_q8);
 
 /* Bytes of workspace symline_i_segindex_build() uses for a width x height frame. */
 size_t symline_i_segindex_ws_size(uint32_t width, uint32_t height);

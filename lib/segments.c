@@ -109,10 +109,9 @@ static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, i
 }
 
 SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level,
-                                         int32_t x0, int32_t y0, int32_t x1, int32_t y1,
-                                         uint32_t win)
+                                         const symline_segment *c, uint32_t win)
 {
-    const int32_t dx = x1 - x0, dy = y1 - y0;
+    const int32_t x0 = c->x0, y0 = c->y0, dx = c->x1 - x0, dy = c->y1 - y0;
     uint64_t best, len;
     if (n == 0u) {
         return 0u;
@@ -135,10 +134,10 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
 /* A curve bends away from its chord by more than the threshold and by more
  * than 1/32 of the chord: a straight line's pixel steps and noise stay near
  * 1-2 px however long it is, while an arc's sagitta grows with its chord. */
-bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
-                        uint32_t thr)
+bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr)
 {
-    const int32_t dx = x1 - x0, dy = y1 - y0; /* 25 bits: Q8 coordinates of one frame */
+    /* 25 bits: Q8 coordinates of one frame */
+    const int32_t dx = c->x1 - c->x0, dy = c->y1 - c->y0;
     const uint64_t chord = hypot_q(dx, dy);
     return max_dev > thr && (uint64_t)max_dev * 32u > chord;
 }
@@ -299,12 +298,11 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
     bool curve;
     chord_ends(p, n, level, s);
-    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
-    curve = symline_i_is_curve(s->x0, s->y0, s->x1, s->y1,
-                               symline_i_smooth_dev(p, n, level, s->x0, s->y0, s->x1, s->y1), thr);
+    s->max_dev = symline_i_max_dev(p, n, level, s);
+    curve = symline_i_is_curve(s, symline_i_smooth_dev(p, n, level, s), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
-        s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
+        s->max_dev = symline_i_max_dev(p, n, level, s);
     }
     s->level = (uint8_t)level;
     s->merged = false;
@@ -384,5 +382,5 @@ void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, ui
     /* A curve keeps the chord of its first and last point (no line fit). */
     s->kind = SYMLINE_KIND_CURVE;
     chord_ends(p, n, level, s);
-    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
+    s->max_dev = symline_i_max_dev(p, n, level, s);
 }

@@ -119,9 +119,22 @@ static void bend_tells_flat_arc_from_line(void **state)
     assert_true(symline_i_bend_q8(p, 60) >= 80u); /* ... but it bends */
 }
 
+/* c with the chord (x0, y0)-(x1, y1), Q8. */
+static const symline_segment *chord(symline_segment *c, int32_t x0, int32_t y0, int32_t x1,
+                                    int32_t y1)
+{
+    memset(c, 0, sizeof(*c));
+    c->x0 = x0;
+    c->y0 = y0;
+    c->x1 = x1;
+    c->y1 = y1;
+    return c;
+}
+
 static void distances(void **state)
 {
     symline_point p[4];
+    symline_segment c;
     (void)state;
     memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     /* (3, 4) px from the line through the origin along x: 4 px (Q8). */
@@ -135,13 +148,15 @@ static void distances(void **state)
     p[1].y = 2;
     p[2].x = 10;
     p[2].y = 0;
-    assert_int_equal(symline_i_max_dev(p, 3, 0, 0, 0, 10 * 256, 0), 2u * 256u);
-    assert_int_equal(symline_i_max_dev(p, 3, 1, 128, 128, 20 * 256 + 128, 128), 4u * 256u);
+    assert_int_equal(symline_i_max_dev(p, 3, 0, chord(&c, 0, 0, 10 * 256, 0)), 2u * 256u);
+    assert_int_equal(symline_i_max_dev(p, 3, 1, chord(&c, 128, 128, 20 * 256 + 128, 128)),
+                     4u * 256u);
     /* Curve test: above the threshold and above 1/32 of the chord. */
-    assert_true(symline_i_is_curve(0, 0, 64 * 256, 0, 3u * 256u, 512u));
-    assert_false(symline_i_is_curve(0, 0, 64 * 256, 0, 512u, 512u)); /* not above the threshold */
-    assert_false(
-        symline_i_is_curve(0, 0, 200 * 256, 0, 6u * 256u, 512u)); /* under 1/32 of 200 px */
+    assert_true(symline_i_is_curve(chord(&c, 0, 0, 64 * 256, 0), 3u * 256u, 512u));
+    /* not above the threshold */
+    assert_false(symline_i_is_curve(chord(&c, 0, 0, 64 * 256, 0), 512u, 512u));
+    /* under 1/32 of 200 px */
+    assert_false(symline_i_is_curve(chord(&c, 0, 0, 200 * 256, 0), 6u * 256u, 512u));
 }
 
 static void near_segment(void **state)
