@@ -152,17 +152,19 @@ typedef struct merger {
     uint32_t n; /* slots */
     uint64_t gap2;
     uint32_t gap_q8, dev_q8, curve_q8;
-    uint32_t cols, rows; /* of the grid; cols 0: no grid, every later piece is tried */
-    int32_t margin;      /* Q8, across i's line */
-    uint32_t *head, *next, *cand, cand_cap, indexed;
+    /* The walk gathering the candidates: the grid (w.cols 0: none, every
+     * later piece is tried), its lists, where the candidates go, the margin
+     * across i's line. */
+    symline_i_cellwalk w;
+    uint32_t *head, *next, indexed;
     symline_point *out; /* NULL: rotations */
     uint32_t pos;       /* where the piece in hand starts in out */
     symline_point *ap;  /* the piece in hand's points (in out, or in place) */
 } merger;
 
-/* Piece j joins piece i (i < j): the joined ends and max_dev, j's points
+/* Piece j joins piece i (i < j): the joined ends and max_dev (e's), j's points
  * right behind i's, slot j gone. */
-static void absorb(merger *m, uint32_t i, uint32_t j, const symline_segment *e, uint32_t dev)
+static void absorb(merger *m, uint32_t i, uint32_t j, const symline_segment *e)
 {
     symline_result *r = m->r;
     symline_segment *a = &r->segments[i];
@@ -170,11 +172,7 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const symline_segment *e, 
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
     const uint8_t lb = r->segments[j].level;
-    a->x0 = e->x0;
-    a->y0 = e->y0;
-    a->x1 = e->x1;
-    a->y1 = e->y1;
-    a->max_dev = dev;
+    copy_bytes(a, e, offsetof(symline_segment, first)); /* the ends and max_dev */
     a->kind = SYMLINE_KIND_LINE;
     a->level = a->level > lb ? a->level : lb;
     a->merged = true; /* points piece after piece (curvejoin.c) */
@@ -212,9 +210,9 @@ static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segmen
 }
 
 /*
- * The slots with an end in the cells within m->margin of a's chord
- * stretched by the gap past both ends, in m->cand (in cell order, a slot
- * may come twice). Returns their number, or -1 when more than m->cand_cap
+ * The slots with an end in the cells within m->w.margin of a's chord
+ * stretched by the gap past both ends, in m->w.cand (in cell order, a slot
+ * may come twice). Returns their number, or -1 when more than m->w.cand_cap
  * were found: then every later piece is tried.
  */
 SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
@@ -225,18 +223,9 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
     /* Whole multiples of a's direction, longer than the gap (the larger of
      * |dx|, |dy| is no longer than the chord). */
     const int32_t k = cheb > 0u ? (int32_t)(m->gap_q8 / cheb + 1u) : 0;
-    symline_i_cellwalk q;
-    q.cols = m->cols;
-    q.rows = m->rows;
-    q.mode = SL_WALK_GATHER;
-    q.head = m->head;
-    q.next = m->next;
-    q.cand = m->cand;
-    q.cand_cap = m->cand_cap;
-    q.n = 0u;
-    symline_i_cellwalk_chord(&q, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k,
-                             m->margin);
-    return q.n > q.cand_cap ? -1 : (int32_t)q.n;
+    m->w.n = 0u;
+    symline_i_cellwalk_chord(&m->w, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k);
+    return m->w.n > m->w.cand_cap ? -1 : (int32_t)m->w.n;
 }
 
 /* Piece i takes the first later piece (in slot order) that joins it: true,
@@ -245,7 +234,7 @@ static bool join_first(merger *m, uint32_t i)
 {
     symline_segment e; /* the joined ends */
     uint32_t j = i + 1u;
-    if (m->cols != 0u) {
+    if (m->w.cols != 0u) {
         const int32_t nc = candidates(m, &m->r->segments[i]);
         if (nc >= 0) {
             uint32_t best = SL_NO_NODE, k;
@@ -253,7 +242,7 @@ static bool join_first(merger *m, uint32_t i)
              * that does (the tests are pure); failing that, the pieces not
              * in the grid. */
             for (k = 0; k < (uint32_t)nc; k++) {
-                const uint32_t c = m->cand[k];
+                const uint32_t c = m->w.cand[k];
                 if (c > i && c < best && pair_dev(m, i, c, &e) != SL_NO_JOIN) {
                     best = c;
                 }
@@ -262,9 +251,9 @@ static bool join_first(merger *m, uint32_t i)
         }
     }
     for (; j < m->n; j++) {
-        const uint32_t dev = pair_dev(m, i, j, &e);
-        if (dev != SL_NO_JOIN) {
-            absorb(m, i, j, &e, dev);
+        e.max_dev = pair_dev(m, i, j, &e);
+        if (e.max_dev != SL_NO_JOIN) {
+            absorb(m, i, j, &e);
             return true;
         }
     }
@@ -276,13 +265,13 @@ static void grid_build(merger *m)
 {
     const symline_segment *segs = m->r->segments;
     uint32_t c, s, e;
-    for (c = 0; c < m->cols * m->rows; c++) {
+    for (c = 0; c < m->w.cols * m->w.rows; c++) {
         m->head[c] = SL_NO_NODE;
     }
     for (s = 0; s < m->indexed; s++) {
         for (e = 0; e < 2u && segs[s].kind != SL_GONE; e++) {
             const int32_t x = e ? segs[s].x1 : segs[s].x0, y = e ? segs[s].y1 : segs[s].y0;
-            c = symline_i_cell_at(m->cols, m->rows, x, y);
+            c = symline_i_cell_at(m->w.cols, m->w.rows, x, y);
             m->next[2u * s + e] = m->head[c];
             m->head[c] = 2u * s + e;
         }
@@ -296,24 +285,27 @@ static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_
 {
     uint8_t *cur = (uint8_t *)ws;
     size_t e;
-    const uint32_t cells = symline_i_grid_dims(width, height, &m->cols, &m->rows);
+    const uint32_t cells = symline_i_grid_dims(width, height, &m->w.cols, &m->w.rows);
     m->head = ws == NULL ? NULL
                          : (uint32_t *)symline_i_carve(&cur, cur + bytes,
                                                        (size_t)cells * sizeof(uint32_t));
     if (m->head == NULL) {
-        m->cols = 0u;
+        m->w.cols = 0u;
         return;
     }
     e = (size_t)((uint8_t *)ws + bytes - cur) / sizeof(uint32_t);
     m->indexed = (size_t)m->n < e * 3u / 8u ? m->n : (uint32_t)(e * 3u / 8u);
     m->next = (uint32_t *)(void *)cur;
-    m->cand = m->next + 2u * (size_t)m->indexed;
+    m->w.mode = SL_WALK_GATHER;
+    m->w.head = m->head;
+    m->w.next = m->next;
+    m->w.cand = m->next + 2u * (size_t)m->indexed;
     e -= 2u * (size_t)m->indexed;
-    m->cand_cap = e > 0xFFFFFFu ? 0xFFFFFFu : (uint32_t)e; /* too few: every later piece */
+    m->w.cand_cap = e > 0xFFFFFFu ? 0xFFFFFFu : (uint32_t)e; /* too few: every later piece */
     /* A joining piece's end lies within the deviation of i's line (plus the
      * coarsest scale's half block, plus rounding). */
-    m->margin = (int32_t)(m->dev_q8 + symline_i_block_half_q8(SYMLINE_DETECT_MAX_LEVELS - 1u) +
-                          SL_PX_Q8(1u));
+    m->w.margin = (int32_t)(m->dev_q8 + symline_i_block_half_q8(SYMLINE_DETECT_MAX_LEVELS - 1u) +
+                            SL_PX_Q8(1u));
 }
 
 void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
@@ -342,7 +334,7 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
     while (changed) {
         changed = false;
         m.pos = 0u;
-        if (m.cols != 0u) {
+        if (m.w.cols != 0u) {
             grid_build(&m);
         }
         for (i = 0; i < m.n; i++) {

@@ -85,8 +85,7 @@ SL_NOINLINE static int32_t split_at(int32_t a, int32_t d, uint32_t k, uint32_t s
     return a + (int32_t)(((int64_t)d * (int32_t)k) >> sh);
 }
 
-void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
-                              int32_t margin)
+void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
     const int32_t dx = bx - ax, dy = by - ay;
     const uint32_t ux = (uint32_t)(dx < 0 ? -dx : dx), uy = (uint32_t)(dy < 0 ? -dy : dy);
@@ -94,7 +93,8 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     /* The previous piece's cells: none before the first. */
     uint32_t sh = 0u, k, px0 = 1u, px1 = 0u, py0 = 0u, py1 = 0u;
     int32_t px = ax, py = ay;
-    margin += (int32_t)((len + (uint32_t)margin) >> 10) + SL_PX_Q8(1);
+    const int32_t margin =
+        w->margin + (int32_t)((len + (uint32_t)w->margin) >> 10) + (int32_t)SL_PX_Q8(1u);
     while ((len >> sh) > (SL_PX_Q8(1u) << SL_CELL_SHIFT)) {
         sh++;
     }
@@ -124,7 +124,7 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
  * id, a curve piece by piece (a cell then asks only the pieces near it, not
  * a long curve along its whole length), each piece in every cell it
  * touches. Point indices from 2^31 on (16 GiB of points) list the curve whole. */
-static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32_t id, int32_t tol)
+static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32_t id)
 {
     const symline_segment *s = &r->segments[id];
     const symline_point *p = r->points + s->first;
@@ -132,7 +132,7 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
     v->seg = id;
     v->width = 1u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
-        symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, tol);
+        symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1);
         return;
     }
     v->width = 2u;
@@ -141,7 +141,7 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
         v->seg = SL_PIECE | (s->first + i);
         v->piece_end = s->first + j;
         symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
-                                 (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, tol);
+                                 (int32_t)p[j].x << 8, (int32_t)p[j].y << 8);
     }
 }
 
@@ -188,15 +188,16 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
         ix->end[c] = 0u;
     }
     /* Count, segment by segment, while the ids fit. */
+    v.margin = tol_q8;
     v.mode = SL_WALK_COUNT;
     v.sign = 1u;
     for (s = 0; s < nseg && s < SL_PIECE; s++) {
         v.added = 0u;
-        visit_segment(&v, r, s, tol_q8);
+        visit_segment(&v, r, s);
         if (v.added > cap - total) {
             /* Does not fit: take its counts back; it and later ones stay out. */
             v.sign = UINT32_MAX;
-            visit_segment(&v, r, s, tol_q8);
+            visit_segment(&v, r, s);
             break;
         }
         total += v.added;
@@ -210,7 +211,7 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
     v.mode = SL_WALK_FILL;
     for (s = 0; s < ix->indexed; s++) {
-        visit_segment(&v, r, s, tol_q8);
+        visit_segment(&v, r, s);
     }
 }
 

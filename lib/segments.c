@@ -79,26 +79,26 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
  * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0,
-                                       int32_t y0, int32_t dx, int32_t dy)
+SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, const int32_t g[4])
 {
+    const int32_t dx = g[2], dy = g[3];
     int32_t wx, wy;
-    symline_i_pt_off(q, level, x0, y0, &wx, &wy);
+    symline_i_pt_off(q, level, g[0], g[1], &wx, &wy);
     return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
                           : (int64_t)wx * dy - (int64_t)wy * dx;
 }
 
 /* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]. */
-static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
-                           int32_t y0, int32_t dx, int32_t dy, uint32_t win)
+static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, const int32_t g[4],
+                           uint32_t win)
 {
     int64_t sum = 0;
     uint64_t best = 0u;
     uint32_t i;
     for (i = 0; i < n; i++) {
-        sum += chord_cross(&p[i], level, x0, y0, dx, dy);
+        sum += chord_cross(&p[i], level, g);
         if (i >= win) {
-            sum -= chord_cross(&p[i - win], level, x0, y0, dx, dy);
+            sum -= chord_cross(&p[i - win], level, g);
         }
         if (i + 1u >= win) {
             const uint64_t m = (uint64_t)(sum < 0 ? -sum : sum);
@@ -111,7 +111,8 @@ static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, i
 SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level,
                                          const symline_segment *c, uint32_t win)
 {
-    const int32_t x0 = c->x0, y0 = c->y0, dx = c->x1 - x0, dy = c->y1 - y0;
+    /* The chord: its first end and its direction (x0, y0, dx, dy). */
+    const int32_t dx = c->x1 - c->x0, dy = c->y1 - c->y0, g[4] = {c->x0, c->y0, dx, dy};
     uint64_t best, len;
     if (n == 0u) {
         return 0u;
@@ -121,7 +122,7 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
      * one division at the end. With no direction: the distance to the end
      * itself, point by point. */
     win = (dx | dy) == 0 || win < 1u ? 1u : (win > n ? n : win);
-    best = window_max(p, n, level, x0, y0, dx, dy, win);
+    best = window_max(p, n, level, g, win);
     if ((dx | dy) == 0) {
         return (uint32_t)symline_i_isqrt64(best);
     }
