@@ -23,15 +23,22 @@ static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
     return (uint64_t)(dx * dx + dy * dy);
 }
 
+/* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
+static void end_of(const symline_segment *a, const symline_segment *b, uint32_t i, int32_t *x,
+                   int32_t *y)
+{
+    const symline_segment *s = i < 2u ? a : b;
+    *x = (i & 1u) ? s->x1 : s->x0;
+    *y = (i & 1u) ? s->y1 : s->y0;
+}
+
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece) as j's. */
 SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b, uint64_t gap2,
                                   uint32_t dev_q8, symline_segment *j)
 {
-    /* The four ends: a's two, then b's two (x, y each). */
-    const int32_t e[8] = {a->x0, a->y0, a->x1, a->y1, b->x0, b->y0, b->x1, b->y1};
-    const int32_t adx = e[2] - e[0], ady = e[3] - e[1];
-    const int32_t bdx = e[6] - e[4], bdy = e[7] - e[5];
+    const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
+    const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
     /* The longer piece by the larger of |dx|, |dy| (within 30 % of its length). */
     const int32_t aax = adx < 0 ? -adx : adx, aay = ady < 0 ? -ady : ady;
     const int32_t abx = bdx < 0 ? -bdx : bdx, aby = bdy < 0 ? -bdy : bdy;
@@ -46,24 +53,30 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
      * pairs of a cluttered frame fail it); then each end on the other
      * piece's line. Both must hold, so the order changes only the cost. */
     for (i = 0; i < 4u; i++) {
-        const int32_t *p = &e[i & 2u], *q = &e[4u + 2u * (i & 1u)];
-        const uint64_t t = dist2(p[0], p[1], q[0], q[1]);
+        int32_t x, y, ox, oy;
+        uint64_t t;
+        end_of(a, b, i >> 1, &x, &y);
+        end_of(a, b, 2u | (i & 1u), &ox, &oy);
+        t = dist2(x, y, ox, oy);
         g = t < g ? t : g;
     }
     if (g > gap2) {
         return false;
     }
     for (i = 0; i < 4u; i++) {
-        const int32_t *o = &e[i < 2u ? 4u : 0u];
-        if (symline_i_line_dist_q8(o[0], o[1], o[2] - o[0], o[3] - o[1], e[2u * i],
-                                   e[2u * i + 1u]) > dev_q8) {
+        const symline_segment *o = i < 2u ? b : a;
+        int32_t x, y;
+        end_of(a, b, i, &x, &y);
+        if (symline_i_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
             return false;
         }
     }
     /* New ends: the extreme end points along the longer piece. */
     for (i = 0; i < 4u; i++) {
-        const int32_t x = e[2u * i], y = e[2u * i + 1u];
-        const int64_t proj = (int64_t)x * dx + (int64_t)y * dy;
+        int32_t x, y;
+        int64_t proj;
+        end_of(a, b, i, &x, &y);
+        proj = (int64_t)x * dx + (int64_t)y * dy;
         if (i == 0u || proj < lo) {
             lo = proj;
             j->x0 = x;
@@ -152,11 +165,9 @@ typedef struct merger {
     uint32_t n; /* slots */
     uint64_t gap2;
     uint32_t gap_q8, dev_q8, curve_q8;
-    /* The walk gathering the candidates: the grid (w.cols 0: none, every
-     * later piece is tried), its lists, where the candidates go, the margin
-     * across i's line. */
-    symline_i_cellwalk w;
-    uint32_t *head, *next, indexed;
+    uint32_t cols, rows; /* of the grid; cols 0: no grid, every later piece is tried */
+    int32_t margin;      /* Q8, across i's line */
+    uint32_t *head, *next, *cand, cand_cap, indexed;
     symline_point *out; /* NULL: rotations */
     uint32_t pos;       /* where the piece in hand starts in out */
     symline_point *ap;  /* the piece in hand's points (in out, or in place) */
@@ -210,9 +221,9 @@ static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segmen
 }
 
 /*
- * The slots with an end in the cells within m->w.margin of a's chord
- * stretched by the gap past both ends, in m->w.cand (in cell order, a slot
- * may come twice). Returns their number, or -1 when more than m->w.cand_cap
+ * The slots with an end in the cells within m->margin of a's chord
+ * stretched by the gap past both ends, in m->cand (in cell order, a slot
+ * may come twice). Returns their number, or -1 when more than m->cand_cap
  * were found: then every later piece is tried.
  */
 SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
@@ -223,9 +234,18 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
     /* Whole multiples of a's direction, longer than the gap (the larger of
      * |dx|, |dy| is no longer than the chord). */
     const int32_t k = cheb > 0u ? (int32_t)(m->gap_q8 / cheb + 1u) : 0;
-    m->w.n = 0u;
-    symline_i_cellwalk_chord(&m->w, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k);
-    return m->w.n > m->w.cand_cap ? -1 : (int32_t)m->w.n;
+    symline_i_cellwalk q;
+    q.cols = m->cols;
+    q.rows = m->rows;
+    q.margin = m->margin;
+    q.mode = SL_WALK_GATHER;
+    q.head = m->head;
+    q.next = m->next;
+    q.cand = m->cand;
+    q.cand_cap = m->cand_cap;
+    q.n = 0u;
+    symline_i_cellwalk_chord(&q, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k);
+    return q.n > q.cand_cap ? -1 : (int32_t)q.n;
 }
 
 /* Piece i takes the first later piece (in slot order) that joins it: true,
@@ -234,7 +254,7 @@ static bool join_first(merger *m, uint32_t i)
 {
     symline_segment e; /* the joined ends */
     uint32_t j = i + 1u;
-    if (m->w.cols != 0u) {
+    if (m->cols != 0u) {
         const int32_t nc = candidates(m, &m->r->segments[i]);
         if (nc >= 0) {
             uint32_t best = SL_NO_NODE, k;
@@ -242,7 +262,7 @@ static bool join_first(merger *m, uint32_t i)
              * that does (the tests are pure); failing that, the pieces not
              * in the grid. */
             for (k = 0; k < (uint32_t)nc; k++) {
-                const uint32_t c = m->w.cand[k];
+                const uint32_t c = m->cand[k];
                 if (c > i && c < best && pair_dev(m, i, c, &e) != SL_NO_JOIN) {
                     best = c;
                 }
@@ -265,13 +285,13 @@ static void grid_build(merger *m)
 {
     const symline_segment *segs = m->r->segments;
     uint32_t c, s, e;
-    for (c = 0; c < m->w.cols * m->w.rows; c++) {
+    for (c = 0; c < m->cols * m->rows; c++) {
         m->head[c] = SL_NO_NODE;
     }
     for (s = 0; s < m->indexed; s++) {
         for (e = 0; e < 2u && segs[s].kind != SL_GONE; e++) {
             const int32_t x = e ? segs[s].x1 : segs[s].x0, y = e ? segs[s].y1 : segs[s].y0;
-            c = symline_i_cell_at(m->w.cols, m->w.rows, x, y);
+            c = symline_i_cell_at(m->cols, m->rows, x, y);
             m->next[2u * s + e] = m->head[c];
             m->head[c] = 2u * s + e;
         }
@@ -285,27 +305,24 @@ static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_
 {
     uint8_t *cur = (uint8_t *)ws;
     size_t e;
-    const uint32_t cells = symline_i_grid_dims(width, height, &m->w.cols, &m->w.rows);
+    const uint32_t cells = symline_i_grid_dims(width, height, &m->cols, &m->rows);
     m->head = ws == NULL ? NULL
                          : (uint32_t *)symline_i_carve(&cur, cur + bytes,
                                                        (size_t)cells * sizeof(uint32_t));
     if (m->head == NULL) {
-        m->w.cols = 0u;
+        m->cols = 0u;
         return;
     }
     e = (size_t)((uint8_t *)ws + bytes - cur) / sizeof(uint32_t);
     m->indexed = (size_t)m->n < e * 3u / 8u ? m->n : (uint32_t)(e * 3u / 8u);
     m->next = (uint32_t *)(void *)cur;
-    m->w.mode = SL_WALK_GATHER;
-    m->w.head = m->head;
-    m->w.next = m->next;
-    m->w.cand = m->next + 2u * (size_t)m->indexed;
+    m->cand = m->next + 2u * (size_t)m->indexed;
     e -= 2u * (size_t)m->indexed;
-    m->w.cand_cap = e > 0xFFFFFFu ? 0xFFFFFFu : (uint32_t)e; /* too few: every later piece */
+    m->cand_cap = e > 0xFFFFFFu ? 0xFFFFFFu : (uint32_t)e; /* too few: every later piece */
     /* A joining piece's end lies within the deviation of i's line (plus the
      * coarsest scale's half block, plus rounding). */
-    m->w.margin = (int32_t)(m->dev_q8 + symline_i_block_half_q8(SYMLINE_DETECT_MAX_LEVELS - 1u) +
-                            SL_PX_Q8(1u));
+    m->margin = (int32_t)(m->dev_q8 + symline_i_block_half_q8(SYMLINE_DETECT_MAX_LEVELS - 1u) +
+                          SL_PX_Q8(1u));
 }
 
 void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
@@ -334,7 +351,7 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
     while (changed) {
         changed = false;
         m.pos = 0u;
-        if (m.w.cols != 0u) {
+        if (m.cols != 0u) {
             grid_build(&m);
         }
         for (i = 0; i < m.n; i++) {

@@ -22,6 +22,7 @@ const char *symline_status_str(symline_status st)
     /* -st for the codes, 9 (unknown) for anything else a caller may pass. */
     uint32_t i = 0u - (uint32_t)st;
     const char *s = NAMES;
+    /* cppcheck-suppress knownConditionTrueFalse */
     for (i = i <= 8u ? i : 9u; i > 0u; i--) {
         while (*s++ != '\0') {
         }
