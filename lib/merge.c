@@ -237,14 +237,14 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
     symline_i_cellwalk q;
     q.cols = m->cols;
     q.rows = m->rows;
-    q.margin = m->margin;
     q.mode = SL_WALK_GATHER;
     q.head = m->head;
     q.next = m->next;
     q.cand = m->cand;
     q.cand_cap = m->cand_cap;
     q.n = 0u;
-    symline_i_cellwalk_chord(&q, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k);
+    symline_i_cellwalk_chord(&q, a->x0 - dx * k, a->y0 - dy * k, a->x1 + dx * k, a->y1 + dy * k,
+                             m->margin);
     return q.n > q.cand_cap ? -1 : (int32_t)q.n;
 }
 

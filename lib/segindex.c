@@ -85,7 +85,8 @@ SL_NOINLINE static int32_t split_at(int32_t a, int32_t d, uint32_t k, uint32_t s
     return a + (int32_t)(((int64_t)d * (int32_t)k) >> sh);
 }
 
-void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by)
+void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
+                              int32_t margin)
 {
     const int32_t dx = bx - ax, dy = by - ay;
     const uint32_t ux = (uint32_t)(dx < 0 ? -dx : dx), uy = (uint32_t)(dy < 0 ? -dy : dy);
@@ -93,8 +94,7 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     /* The previous piece's cells: none before the first. */
     uint32_t sh = 0u, k, px0 = 1u, px1 = 0u, py0 = 0u, py1 = 0u;
     int32_t px = ax, py = ay;
-    const int32_t margin =
-        w->margin + (int32_t)((len + (uint32_t)w->margin) >> 10) + (int32_t)SL_PX_Q8(1u);
+    margin += (int32_t)((len + (uint32_t)margin) >> 10) + (int32_t)SL_PX_Q8(1u);
     while ((len >> sh) > (SL_PX_Q8(1u) << SL_CELL_SHIFT)) {
         sh++;
     }
@@ -132,7 +132,7 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
     v->seg = id;
     v->width = 1u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
-        symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1);
+        symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, v->margin);
         return;
     }
     v->width = 2u;
@@ -141,7 +141,7 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
         v->seg = SL_PIECE | (s->first + i);
         v->piece_end = s->first + j;
         symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
-                                 (int32_t)p[j].x << 8, (int32_t)p[j].y << 8);
+                                 (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, v->margin);
     }
 }
 

@@ -43,7 +43,7 @@ typedef enum symline_i_walk_mode {
 
 typedef struct symline_i_cellwalk {
     uint32_t cols, rows;
-    int32_t margin; /* Q8, before the rounding slack */
+    int32_t margin; /* COUNT, FILL: the segment grid's tolerance (Q8) */
     symline_i_walk_mode mode;
     uint32_t *end, *ids, seg, added; /* COUNT, FILL */
     uint32_t sign;                   /* COUNT: 1, or UINT32_MAX (-1) */
@@ -52,8 +52,8 @@ typedef struct symline_i_cellwalk {
     uint32_t *cand, cand_cap, n;     /* GATHER: n found; cap + 1 when full */
 } symline_i_cellwalk;
 
-void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx,
-                              int32_t by);
+void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
+                              int32_t margin);
 
 /* The grid of a width x height frame: *cols x *rows cells (returned). */
 uint32_t symline_i_grid_dims(uint32_t width, uint32_t height, uint32_t *cols, uint32_t *rows);
