@@ -153,13 +153,20 @@ bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr
  */
 #define SL_FIT_SAMPLES 2048u
 
-/* Point q in Q4 full resolution relative to (ox, oy) (Q8) minus (mx, my) (Q4). */
-SL_NOINLINE static void rel_q4(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
-                               int32_t mx, int32_t my, int32_t *x, int32_t *y)
+/* The fit's frame: the points' level, the origin (ox, oy) (Q8 full
+ * resolution) and the mean (mx, my) (Q4, relative to the origin). */
+typedef struct symline_i_fitframe {
+    uint32_t level;
+    int32_t ox, oy, mx, my;
+} symline_i_fitframe;
+
+/* Point q in Q4 full resolution relative to the origin, minus the mean. */
+SL_NOINLINE static void rel_q4(const symline_point *q, const symline_i_fitframe *f, int32_t *x,
+                               int32_t *y)
 {
-    symline_i_pt_off(q, level, ox, oy, x, y);
-    *x = *x / 16 - mx;
-    *y = *y / 16 - my;
+    symline_i_pt_off(q, f->level, f->ox, f->oy, x, y);
+    *x = *x / 16 - f->mx;
+    *y = *y / 16 - f->my;
 }
 
 SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
@@ -167,17 +174,19 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
 {
     /* Coordinates in Q4 full resolution, relative to the first point. */
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
-    int32_t ox, oy, mx, my, ux, uy, len;
+    symline_i_fitframe f;
+    int32_t ux, uy, len;
     uint32_t sx = 0u, sy = 0u; /* the second sweep's sums wrap unused */
     int64_t a = 0, b = 0, c = 0;
     uint32_t i, k, cnt = 0u;
-    symline_i_pt_off(&p[0], level, 0, 0, &ox, &oy);
+    f.level = level;
+    symline_i_pt_off(&p[0], level, 0, 0, &f.ox, &f.oy);
     /* Two sweeps: the mean (mx, my still 0), then the scatter about it. */
-    mx = my = 0;
+    f.mx = f.my = 0;
     for (k = 0; k < 2u; k++) {
         for (i = 0; i < n; i += step) {
             int32_t dx, dy;
-            rel_q4(&p[i], level, ox, oy, mx, my, &dx, &dy);
+            rel_q4(&p[i], &f, &dx, &dy);
             sx += (uint32_t)dx;
             sy += (uint32_t)dy;
             cnt++;
@@ -186,8 +195,8 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
             c += (int64_t)dy * dy;
         }
         if (k == 0u) {
-            mx = (int32_t)sx / (int32_t)cnt;
-            my = (int32_t)sy / (int32_t)cnt;
+            f.mx = (int32_t)sx / (int32_t)cnt;
+            f.my = (int32_t)sy / (int32_t)cnt;
             a = b = c = 0;
         }
     }
@@ -224,11 +233,11 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     for (i = 0; i < 2u; i++) {
         int32_t qx, qy;
         int64_t t;
-        rel_q4(&p[i == 0u ? 0u : n - 1u], level, ox, oy, mx, my, &qx, &qy);
+        rel_q4(&p[i == 0u ? 0u : n - 1u], &f, &qx, &qy);
         t = (int64_t)qx * ux + (int64_t)qy * uy; /* Q4 * Q15 */
         /* Back to Q8 absolute: mean + t*u, Q4*Q15*Q15 -> Q8 is a shift by 26. */
-        const int32_t ex = ox + mx * 16 + (int32_t)((t * ux) >> 26);
-        const int32_t ey = oy + my * 16 + (int32_t)((t * uy) >> 26);
+        const int32_t ex = f.ox + f.mx * 16 + (int32_t)((t * ux) >> 26);
+        const int32_t ey = f.oy + f.my * 16 + (int32_t)((t * uy) >> 26);
         if (i == 0u) {
             s->x0 = ex;
             s->y0 = ey;
