@@ -34,8 +34,8 @@ static void end_of(const symline_segment *a, const symline_segment *b, uint32_t 
 
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece) as j's. */
-SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b, uint64_t gap2,
-                                  uint32_t dev_q8, symline_segment *j)
+SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b,
+                                  uint32_t gap_q8, uint32_t dev_q8, symline_segment *j)
 {
     const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
     const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
@@ -60,7 +60,7 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
         t = dist2(x, y, ox, oy);
         g = t < g ? t : g;
     }
-    if (g > gap2) {
+    if (g > (uint64_t)gap_q8 * gap_q8) {
         return false;
     }
     for (i = 0; i < 4u; i++) {
@@ -163,7 +163,6 @@ static void copy_points(symline_point *d, const symline_point *s, uint32_t n)
 typedef struct merger {
     symline_result *r;
     uint32_t n; /* slots */
-    uint64_t gap2;
     uint32_t gap_q8, dev_q8, curve_q8;
     uint32_t cols, rows; /* of the grid; cols 0: no grid, every later piece is tried */
     int32_t margin;      /* Q8, across i's line */
@@ -213,7 +212,7 @@ static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segmen
     /* The cheap geometric test first; both are pure, so the order changes
      * nothing but the cost. */
     if (b->kind == SL_GONE ||
-        !mergeable(a, b, m->gap2, m->dev_q8 + symline_i_block_half_q8(level), e) ||
+        !mergeable(a, b, m->gap_q8, m->dev_q8 + symline_i_block_half_q8(level), e) ||
         !joinable(b, bp, m->curve_q8)) {
         return SL_NO_JOIN;
     }
@@ -337,7 +336,6 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
     m.r = r;
     m.n = r->segment_count;
     m.gap_q8 = gap_px << SL_Q8_SHIFT; /* gap_px <= SYMLINE_MAX_DIM: no wrap */
-    m.gap2 = (uint64_t)m.gap_q8 * m.gap_q8;
     m.dev_q8 = cfg->merge_dev_q8;
     m.curve_q8 = cfg->curve_dev_q8;
     /* Room for the layout: as many points again as there are. */

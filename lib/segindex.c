@@ -146,7 +146,7 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
 }
 
 /* The start of an area, aligned for uint32_t ids, and how many it holds. */
-static uint32_t *id_area(void *mem, size_t bytes, uint32_t *n)
+SL_NOINLINE static uint32_t *id_area(void *mem, size_t bytes, uint32_t *n)
 {
     uint8_t *cur = (uint8_t *)mem;
     const size_t skip = (SL_ALIGN - ((uintptr_t)cur & (SL_ALIGN - 1u))) & (SL_ALIGN - 1u);
