@@ -79,10 +79,13 @@ static void cell_span(int32_t p, int32_t q, int32_t margin, uint32_t n, uint32_t
     c[1] = cell_of((p > q ? p : q) + margin, n);
 }
 
-/* a + d k / 2^sh, rounded down: d < 2^26 and k <= 2^12, the product needs 64 bits. */
+/* a + d k / 2^sh, d's magnitude rounded down, in 32 bits: |d| < 2^26 and
+ * k <= 2^sh <= 2^13 keep both products below 2^26. */
 SL_NOINLINE static int32_t split_at(int32_t a, int32_t d, uint32_t k, uint32_t sh)
 {
-    return a + (int32_t)(((int64_t)d * (int32_t)k) >> sh);
+    const uint32_t u = (uint32_t)(d < 0 ? -d : d);
+    const int32_t o = (int32_t)((u >> sh) * k + (((u & ((1u << sh) - 1u)) * k) >> sh));
+    return d < 0 ? a - o : a + o;
 }
 
 void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
