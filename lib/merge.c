@@ -91,25 +91,6 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     return true;
 }
 
-/* The joined piece's max_dev, or SL_NO_JOIN when it would be a curve
- * (ap, bp: the pieces' points). Kept apart from mergeable() so their frames
- * are never on the stack together. */
-SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_point *ap,
-                                       const symline_segment *b, const symline_point *bp,
-                                       const symline_segment *j, uint32_t curve_q8)
-{
-    uint32_t d = 0u, sm = 0u, k;
-    for (k = 0; k < 2u; k++) {
-        const symline_point *p = k ? bp : ap;
-        const uint32_t n = k ? b->count : a->count;
-        const uint32_t dk = symline_i_max_dev(p, n, 0u, j);
-        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, j);
-        d = dk > d ? dk : d;
-        sm = sk > sm ? sk : sm;
-    }
-    return symline_i_is_curve(j, sm, curve_q8) ? SL_NO_JOIN : d;
-}
-
 /* A line may join; so may a piece taken for a curve whose points (p),
  * smoothed, stay within half the curve threshold of its chord: a straight
  * piece whose ridge jitters on the turf, not an arc of the circle. */
@@ -201,6 +182,26 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const symline_segment *e)
     r->segments[j].kind = SL_GONE;
 }
 
+/* The joined piece's max_dev, or SL_NO_JOIN when it would be a curve by
+ * the curve threshold plus half a block of level (j: the joined ends; the
+ * pieces' points: a's in hand, b's in place). Kept apart from mergeable() so
+ * their frames are never on the stack together. */
+SL_NOINLINE static uint32_t joined_dev(const merger *m, const symline_segment *a,
+                                       const symline_segment *b, const symline_segment *j,
+                                       uint32_t level)
+{
+    uint32_t d = 0u, sm = 0u, k;
+    for (k = 0; k < 2u; k++) {
+        const symline_point *p = k ? m->r->points + b->first : m->ap;
+        const uint32_t n = k ? b->count : a->count;
+        const uint32_t dk = symline_i_max_dev(p, n, 0u, j);
+        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, j);
+        d = dk > d ? dk : d;
+        sm = sk > sm ? sk : sm;
+    }
+    return symline_i_is_curve(j, sm, m->curve_q8 + symline_i_block_half_q8(level)) ? SL_NO_JOIN : d;
+}
+
 /* The joined piece's max_dev when piece j may join piece i (e: the joined
  * ends), else SL_NO_JOIN. */
 static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segment *e)
@@ -216,7 +217,7 @@ static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segmen
         !joinable(b, bp, m->curve_q8)) {
         return SL_NO_JOIN;
     }
-    return joined_dev(a, m->ap, b, bp, e, m->curve_q8 + symline_i_block_half_q8(level));
+    return joined_dev(m, a, b, e, level);
 }
 
 /*
