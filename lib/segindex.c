@@ -103,7 +103,10 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     }
     /* 2^sh pieces of at most a cell; any split of the chord covers it. */
     for (k = 1u; k <= (1u << sh); k++) {
-        const int32_t qx = split_at(ax, dx, k, sh), qy = split_at(ay, dy, k, sh);
+        /* The last piece ends at b (a short chord is one piece). */
+        const bool last = k == 1u << sh;
+        const int32_t qx = last ? bx : split_at(ax, dx, k, sh);
+        const int32_t qy = last ? by : split_at(ay, dy, k, sh);
         uint32_t cx[2], cy[2], x, y;
         cell_span(px, qx, margin, w->cols, cx);
         cell_span(py, qy, margin, w->rows, cy);
@@ -221,23 +224,26 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
 bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
                              int32_t x, int32_t y, int32_t tol_q8)
 {
+    symline_i_near q;
     uint32_t i = 0u;
+    q.x = x;
+    q.y = y;
+    q.tol = tol_q8;
     if (ix != NULL && ix->cols != 0u) {
         const uint32_t c = symline_i_cell_at(ix->cols, ix->rows, x, y);
         uint32_t k;
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
             const uint32_t e = ix->ids[k];
             if ((e & SL_PIECE) != 0u
-                    ? symline_i_near_piece(&r->points[e - SL_PIECE], &r->points[ix->ids[++k]], x, y,
-                                           tol_q8)
-                    : symline_i_near_segment(&r->segments[e], r->points, x, y, tol_q8)) {
+                    ? symline_i_near_piece(&r->points[e - SL_PIECE], &r->points[ix->ids[++k]], &q)
+                    : symline_i_near_segment(&r->segments[e], r->points, &q)) {
                 return true;
             }
         }
         i = ix->indexed;
     }
     for (; i < nseg; i++) {
-        if (symline_i_near_segment(&r->segments[i], r->points, x, y, tol_q8)) {
+        if (symline_i_near_segment(&r->segments[i], r->points, &q)) {
             return true;
         }
     }

@@ -319,9 +319,10 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
 }
 
 /* True when (px, py) lies within tol of the segment a-b (all Q8). */
-static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px,
-                              int32_t py, int32_t tol)
+static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by,
+                              const symline_i_near *q)
 {
+    const int32_t px = q->x, py = q->y, tol = q->tol;
     /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
     int32_t dx, dy, wx, wy, t2, c;
     int64_t t, dd;
@@ -358,25 +359,24 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
            (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
 }
 
-bool symline_i_near_piece(const symline_point *a, const symline_point *b, int32_t x, int32_t y,
-                          int32_t tol_q8)
+bool symline_i_near_piece(const symline_point *a, const symline_point *b, const symline_i_near *q)
 {
     /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
     return near_chord((int32_t)a->x << SL_Q8_SHIFT, (int32_t)a->y << SL_Q8_SHIFT,
-                      (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, x, y, tol_q8);
+                      (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, q);
 }
 
-bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,
-                            int32_t y, int32_t tol_q8)
+bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
+                            const symline_i_near *q)
 {
     uint32_t i;
     const symline_point *p = pts + s->first;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
-        return near_chord(s->x0, s->y0, s->x1, s->y1, x, y, tol_q8);
+        return near_chord(s->x0, s->y0, s->x1, s->y1, q);
     }
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
-        if (symline_i_near_piece(&p[i], &p[j], x, y, tol_q8)) {
+        if (symline_i_near_piece(&p[i], &p[j], q)) {
             return true;
         }
     }

@@ -67,13 +67,18 @@ bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr
  * and the grid of earlier segments, segindex.c). */
 #define SL_POLY_STEP 4u
 
-/* True when (x, y) (Q8) lies within tol_q8 of the curve piece a-b (whole
- * pixels): one step of symline_i_near_segment()'s polyline. */
-bool symline_i_near_piece(const symline_point *a, const symline_point *b, int32_t x, int32_t y,
-                          int32_t tol_q8);
-/* True when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
- * (its chord for lines, its points for curves). */
-bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,
-                            int32_t y, int32_t tol_q8);
+/* A nearness query: is the full-resolution point (x, y) (Q8) within tol
+ * (Q8) of a segment or piece? */
+typedef struct symline_i_near {
+    int32_t x, y, tol;
+} symline_i_near;
+
+/* True when q's point lies within q's tolerance of the curve piece a-b
+ * (whole pixels): one step of symline_i_near_segment()'s polyline. */
+bool symline_i_near_piece(const symline_point *a, const symline_point *b, const symline_i_near *q);
+/* True when q's point lies within q's tolerance of segment s (its chord for
+ * lines, its points for curves). */
+bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
+                            const symline_i_near *q);
 
 #endif /* SYMLINE_LIB_SEGMENTS_H */

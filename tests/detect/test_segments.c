@@ -159,6 +159,17 @@ static void distances(void **state)
     assert_false(symline_i_is_curve(chord(&c, 0, 0, 200 * 256, 0), 6u * 256u, 512u));
 }
 
+/* symline_i_near_segment() of s for the point (x, y) and tolerance tol (Q8). */
+static bool near(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
+                 int32_t tol)
+{
+    symline_i_near q;
+    q.x = x;
+    q.y = y;
+    q.tol = tol;
+    return symline_i_near_segment(s, pts, &q);
+}
+
 static void near_segment(void **state)
 {
     symline_point pts[16];
@@ -174,10 +185,10 @@ static void near_segment(void **state)
     s.y1 = 10 * 256;
     s.kind = SYMLINE_KIND_LINE;
     s.count = 2;
-    assert_true(symline_i_near_segment(&s, pts, 30 * 256, 11 * 256, 512));  /* 1 px off the chord */
-    assert_false(symline_i_near_segment(&s, pts, 30 * 256, 13 * 256, 512)); /* 3 px off */
-    assert_true(symline_i_near_segment(&s, pts, 51 * 256, 10 * 256, 512));  /* 1 px beyond an end */
-    assert_false(symline_i_near_segment(&s, pts, 53 * 256, 10 * 256, 512)); /* 3 px beyond it */
+    assert_true(near(&s, pts, 30 * 256, 11 * 256, 512));  /* 1 px off the chord */
+    assert_false(near(&s, pts, 30 * 256, 13 * 256, 512)); /* 3 px off */
+    assert_true(near(&s, pts, 51 * 256, 10 * 256, 512));  /* 1 px beyond an end */
+    assert_false(near(&s, pts, 53 * 256, 10 * 256, 512)); /* 3 px beyond it */
     /* A curve is followed along its points, not its chord: an L of points. */
     for (i = 0; i < 8u; i++) {
         pts[i].x = 10;
@@ -192,8 +203,8 @@ static void near_segment(void **state)
     s.y0 = 10 * 256;
     s.x1 = 24 * 256;
     s.y1 = 24 * 256;
-    assert_true(symline_i_near_segment(&s, pts, 10 * 256, 17 * 256, 256)); /* on the vertical arm */
-    assert_false(symline_i_near_segment(&s, pts, 17 * 256, 17 * 256, 256)); /* on the chord only */
+    assert_true(near(&s, pts, 10 * 256, 17 * 256, 256));  /* on the vertical arm */
+    assert_false(near(&s, pts, 17 * 256, 17 * 256, 256)); /* on the chord only */
 }
 
 int main(void)
