@@ -295,11 +295,12 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     return (uint32_t)d << 1;
 }
 
-/* The chord of p[0..n-1]'s first and last point as s's ends. */
+/* The chord of p[0..n-1]'s first and last point as s's ends, and its max_dev. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
     symline_i_pt_off(&p[0], level, 0, 0, &s->x0, &s->y0);
     symline_i_pt_off(&p[n - 1u], level, 0, 0, &s->x1, &s->y1);
+    s->max_dev = symline_i_max_dev(p, n, level, s);
 }
 
 void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
@@ -308,7 +309,6 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
     bool curve;
     chord_ends(p, n, level, s);
-    s->max_dev = symline_i_max_dev(p, n, level, s);
     curve = symline_i_is_curve(s, symline_i_smooth_dev(p, n, level, s), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
@@ -392,5 +392,4 @@ void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, ui
     /* A curve keeps the chord of its first and last point (no line fit). */
     s->kind = SYMLINE_KIND_CURVE;
     chord_ends(p, n, level, s);
-    s->max_dev = symline_i_max_dev(p, n, level, s);
 }
