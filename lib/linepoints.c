@@ -225,10 +225,7 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img,
             drop_dim_s(&p->filter, row + k, row, row + (size_t)2u * k, w - 2u * k, map + k);
         }
 #endif
-        for (x = 0; x < w; x++) {
-            if (map[x] != SYMLINE_MAP_S) {
-                continue;
-            }
+        SL_FOR_EACH_S(x, map, w) {
             if (!symline_i_linefilter_gray(&p->filter, row[x], row[x >= k ? x - k : 0u],
                                            row[x + k < w ? x + k : w - 1u])) {
                 continue;
@@ -272,10 +269,7 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
 #ifdef SL_ROW_PREFILTER
     drop_dim_s(&p->filter, c, lo, hi, p->w, map);
 #endif
-    for (x = 0; x < p->w; x++) {
-        if (map[x] != SYMLINE_MAP_S) {
-            continue;
-        }
+    SL_FOR_EACH_S(x, map, p->w) {
         if (!symline_i_linefilter_gray(&p->filter, c[x], lo[x], hi[x])) {
             continue;
         }

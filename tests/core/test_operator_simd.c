@@ -7,6 +7,8 @@
  * portable reference entry by entry: random images, every radius 1..32 the
  * detector allows and larger ones up to 255, odd and short widths, unaligned
  * starts, strides, both axes, gray-value extremes, and no write past the row.
+ * Also the line filter's search for S points (lib/linefilter.h), SIMD against
+ * the portable reference where built.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -16,6 +18,7 @@
 
 #include <cmocka.h>
 
+#include "linefilter.h"
 #include "symline/symmetry.h"
 #include "symmetry.h"
 #include "testutil.h"
@@ -210,6 +213,30 @@ static void simd_is_reference(void **state)
 }
 #endif
 
+#ifdef SYMLINE_PORT_FIND_S
+/* The SIMD search for S points against the reference: every start, maps of
+ * every length up to 100 at every alignment, S points dense to absent. */
+static void find_s_is_reference(void **state)
+{
+    static const uint8_t kinds[] = {SYMLINE_MAP_NONE, SYMLINE_MAP_A, SYMLINE_MAP_S};
+    uint8_t map[128];
+    uint32_t s = 3u, t, i, x;
+    (void)state;
+    for (t = 0; t < 4000u; t++) {
+        const uint32_t n = tu_rand(&s) % 101u, off = tu_rand(&s) % 16u;
+        const uint32_t one_in = 1u + tu_rand(&s) % 64u; /* S density */
+        for (i = 0; i < sizeof map; i++) {
+            const uint32_t r = tu_rand(&s);
+            map[i] = (r % one_in == 0u) ? SYMLINE_MAP_S : kinds[(r >> 8) % 2u];
+        }
+        for (x = 0; x <= n; x++) {
+            assert_int_equal(symline_i_find_s(map + off, x, n),
+                             symline_i_find_s_c(map + off, x, n));
+        }
+    }
+}
+#endif
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -218,6 +245,9 @@ int main(void)
         cmocka_unit_test(frames_are_definition),
 #ifdef SYMLINE_PORT_ENERGY
         cmocka_unit_test(simd_is_reference),
+#endif
+#ifdef SYMLINE_PORT_FIND_S
+        cmocka_unit_test(find_s_is_reference),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
