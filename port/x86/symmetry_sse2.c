@@ -15,29 +15,14 @@
  * w_j d_j^2 + w_k d_k^2 in each pixel's 32-bit lane. madd multiplies signed
  * 16-bit lanes: w d <= 128 * 255 < 2^15 holds for radii up to 128; larger
  * radii (not used by the detector, which allows 32) take the reference.
- * Sums are exact: an energy is below 2^32 (255^2 * 255 * 256 / 2).
+ * Sums are exact: an energy is below 2^32 (255^2 * 255 * 256 / 2). The passes
+ * over a row, its ends and tail: ../symmetry_rows.h.
  */
 #include <emmintrin.h>
-#include <stddef.h>
 
-#include "symmetry.h"
-
-/* 255^2: the squared difference counted for a pair that leaves the image. */
-#define SL_DMAX2 65025u
 /* Largest radius whose weighted differences fit madd's signed 16 bits. */
-#define SL_MADD_RADIUS_MAX 128u
-/* Pairs summed in registers per pass over a row (the detector's radius 3
- * needs one pass; larger radii add further passes onto the stored sums). Four
- * keep the eight row pointers in registers. */
-#define SL_PASS_PAIRS 4u
-
-/* The pairs of one pass: pair p compares lo[p][x] with hi[p][x] at weight w[p]. */
-typedef struct pass {
-    const uint8_t *lo[SL_PASS_PAIRS];
-    const uint8_t *hi[SL_PASS_PAIRS];
-    uint32_t w[SL_PASS_PAIRS];
-    uint32_t n; /* pairs, 1..SL_PASS_PAIRS */
-} pass;
+#define SL_PORT_RADIUS_MAX 128u
+#include "../symmetry_rows.h"
 
 static inline __m128i load16(const uint8_t *p)
 {
@@ -87,11 +72,7 @@ static inline void store_block(uint32_t *E, const __m128i acc[4])
     }
 }
 
-/*
- * E[x] = base[x] + sum over the pass's pairs for x < count, base[x] = init on
- * the first pass over a row (add 0), E[x] itself on later ones (add 1).
- */
-static inline __attribute__((always_inline)) void run_pass(const pass *ps, uint32_t np,
+static inline __attribute__((always_inline)) void run_pass(const sl_pass *ps, uint32_t np,
                                                            uint32_t count, uint32_t init, int add,
                                                            uint32_t *E)
 {
@@ -119,126 +100,12 @@ static inline __attribute__((always_inline)) void run_pass(const pass *ps, uint3
         block(lo, hi, wv, np, x, acc);
         store_block(E + x, acc);
     }
-    if (x == count) {
-        return;
-    }
-    if (!add && count >= 16u) {
+    if (x < count && !add && count >= 16u) {
         /* The last 16 entries once more: the same values, rewritten. */
         __m128i acc[4] = {vinit, vinit, vinit, vinit};
-        x = count - 16u;
-        block(lo, hi, wv, np, x, acc);
-        store_block(E + x, acc);
+        block(lo, hi, wv, np, count - 16u, acc);
+        store_block(E + (count - 16u), acc);
         return;
     }
-    for (; x < count; x++) {
-        uint32_t e = add ? E[x] : init;
-        for (p = 0; p < np; p++) {
-            const int32_t d = (int32_t)lo[p][x] - (int32_t)hi[p][x];
-            e += ps->w[p] * (uint32_t)(d * d);
-        }
-        E[x] = e;
-    }
-}
-
-/* One pass with its pair count and mode as constants. */
-static void do_pass(const pass *ps, uint32_t count, uint32_t init, int add, uint32_t *E)
-{
-    switch (ps->n * 2u + (add ? 1u : 0u)) {
-    case 2: run_pass(ps, 1u, count, init, 0, E); break;
-    case 3: run_pass(ps, 1u, count, init, 1, E); break;
-    case 4: run_pass(ps, 2u, count, init, 0, E); break;
-    case 5: run_pass(ps, 2u, count, init, 1, E); break;
-    case 6: run_pass(ps, 3u, count, init, 0, E); break;
-    case 7: run_pass(ps, 3u, count, init, 1, E); break;
-    case 8: run_pass(ps, 4u, count, init, 0, E); break;
-    default: run_pass(ps, 4u, count, init, 1, E); break;
-    }
-}
-
-/* Adds pair (a, b) at weight w to the pass; runs it over E when full. */
-static void push_pair(pass *ps, const uint8_t *a, const uint8_t *b, uint32_t w, uint32_t count,
-                      uint32_t init, int *add, uint32_t *E)
-{
-    ps->lo[ps->n] = a;
-    ps->hi[ps->n] = b;
-    ps->w[ps->n] = w;
-    if (++ps->n == SL_PASS_PAIRS) {
-        do_pass(ps, count, init, *add, E);
-        ps->n = 0u;
-        *add = 1;
-    }
-}
-
-/* Runs what is left of the pass; a row without any pair is init throughout. */
-static void finish(pass *ps, uint32_t count, uint32_t init, int add, uint32_t *E)
-{
-    uint32_t x;
-    if (ps->n > 0u) {
-        do_pass(ps, count, init, add, E);
-    } else if (!add) {
-        for (x = 0; x < count; x++) {
-            E[x] = init;
-        }
-    }
-}
-
-/* The energy at k < m entries from the nearer end of a row, q + k its centre:
- * the pairs beyond the end count 255^2 each (lib/symmetry.c). */
-static uint32_t row_end(const uint8_t *q, uint32_t m, uint32_t k)
-{
-    const uint32_t t = m - k;
-    uint32_t e = SL_DMAX2 * (t * (t + 1u) / 2u), j;
-    for (j = 1u; j <= k; j++) {
-        const int32_t d = (int32_t)q[k - j] - (int32_t)q[k + j];
-        e += (m + 1u - j) * (uint32_t)(d * d);
-    }
-    return e;
-}
-
-void symline_i_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
-{
-    pass ps;
-    int add = 0;
-    uint32_t j;
-    const uint8_t *c;
-    if (m > SL_MADD_RADIUS_MAX || n < 2u * m + 16u) {
-        symline_i_energy_row_c(q, n, m, E);
-        return;
-    }
-    /* The m entries at either end, where pairs leave the row. */
-    for (j = 0; j < m; j++) {
-        E[j] = row_end(q, m, j);
-        E[n - 1u - j] = row_end(q + (n - 1u - 2u * j), m, j);
-    }
-    /* The interior m .. n-1-m, where every pair lies in the row. */
-    c = q + m;
-    ps.n = 0u;
-    for (j = 1u; j <= m; j++) {
-        push_pair(&ps, c - j, c + j, m + 1u - j, n - 2u * m, 0u, &add, E + m);
-    }
-    finish(&ps, n - 2u * m, 0u, add, E + m);
-}
-
-void symline_i_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width, uint32_t *E)
-{
-    pass ps;
-    int add = 0;
-    uint32_t j, border = 0u;
-    if (m > SL_MADD_RADIUS_MAX) {
-        symline_i_energy_across_c(rows, m, width, E);
-        return;
-    }
-    /* A pair with a partner outside the image adds the same 255^2 to every column. */
-    for (j = 1u; j <= m; j++) {
-        if (rows[m - j] == NULL || rows[m + j] == NULL) {
-            border += (m + 1u - j) * SL_DMAX2;
-        }
-    }
-    ps.n = 0u;
-    for (j = 1u; j <= m; j++) {
-        if (rows[m - j] != NULL && rows[m + j] != NULL) {
-            push_pair(&ps, rows[m - j], rows[m + j], m + 1u - j, width, border, &add, E);
-        }
-    }
-    finish(&ps, width, border, add, E);
+    pass_tail(ps, np, x, count, init, add, E);
 }
