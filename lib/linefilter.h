@@ -119,7 +119,8 @@ static inline uint32_t symline_i_find_s_c(const uint8_t *map, uint32_t x, uint32
 }
 #ifdef SYMLINE_PORT_FIND_S
 uint32_t symline_i_find_s(const uint8_t *map, uint32_t x, uint32_t n);
-#define SL_FOR_EACH_S(x, map, n) for ((x) = 0u; ((x) = symline_i_find_s((map), (x), (n))) < (n); (x)++)
+#define SL_FOR_EACH_S(x, map, n)                                                                   \
+    for ((x) = 0u; ((x) = symline_i_find_s((map), (x), (n))) < (n); (x)++)
 #else
 #define symline_i_find_s symline_i_find_s_c
 #define SL_FOR_EACH_S(x, map, n)                                                                   \

@@ -34,10 +34,8 @@ symline_status symline_i_frame_begin(const symline_image *img, symline_axis axis
  */
 void symline_i_energy_row_c(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E);
 void symline_i_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E);
-void symline_i_energy_across_c(const uint8_t *const *rows, uint32_t m, uint32_t width,
-                               uint32_t *E);
-void symline_i_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width,
-                             uint32_t *E);
+void symline_i_energy_across_c(const uint8_t *const *rows, uint32_t m, uint32_t width, uint32_t *E);
+void symline_i_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width, uint32_t *E);
 #endif
 
 #endif /* SYMLINE_LIB_SYMMETRY_H */

@@ -36,9 +36,8 @@ typedef struct sl_pass {
  * pass over a row (add 0), E[x] itself on later ones (add 1). np and add are
  * constants where it is inlined (do_pass()).
  */
-static inline __attribute__((always_inline)) void run_pass(const sl_pass *ps, uint32_t np,
-                                                           uint32_t count, uint32_t init, int add,
-                                                           uint32_t *E);
+static inline __attribute__((always_inline)) void
+run_pass(const sl_pass *ps, uint32_t np, uint32_t count, uint32_t init, int add, uint32_t *E);
 
 /* Entries x0 .. count-1 of a pass one at a time (a row's last few). */
 static inline void pass_tail(const sl_pass *ps, uint32_t np, size_t x0, uint32_t count,

@@ -21,9 +21,8 @@
 #define SL_PORT_RADIUS_MAX 255u
 #include "../symmetry_rows.h"
 
-static inline __attribute__((always_inline)) void run_pass(const sl_pass *ps, uint32_t np,
-                                                           uint32_t count, uint32_t init, int add,
-                                                           uint32_t *E)
+static inline __attribute__((always_inline)) void
+run_pass(const sl_pass *ps, uint32_t np, uint32_t count, uint32_t init, int add, uint32_t *E)
 {
     const uint8_t *lo[SL_PASS_PAIRS], *hi[SL_PASS_PAIRS];
     uint16_t w[SL_PASS_PAIRS];

@@ -39,11 +39,11 @@ static inline void kinds16(const uint32_t *restrict up, const uint32_t *restrict
     b1 = _mm_packs_epi16(d1[0], d1[1]);
     b2 = _mm_packs_epi16(d2[0], d2[1]);
     *flat = _mm_or_si128(*flat, _mm_or_si128(_mm_cmpeq_epi8(b1, zero), _mm_cmpeq_epi8(b2, zero)));
-    _mm_storeu_si128(
-        (__m128i *)(void *)(map + x),
-        _mm_or_si128(_mm_cmpgt_epi8(zero, _mm_and_si128(b1, b2)), /* both below: S */
-                     _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi8(b1, zero), _mm_cmpgt_epi8(b2, zero)),
-                                   _mm_set1_epi8((char)SYMLINE_MAP_A))));
+    _mm_storeu_si128((__m128i *)(void *)(map + x),
+                     _mm_or_si128(_mm_cmpgt_epi8(zero, _mm_and_si128(b1, b2)), /* both below: S */
+                                  _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi8(b1, zero),
+                                                              _mm_cmpgt_epi8(b2, zero)),
+                                                _mm_set1_epi8((char)SYMLINE_MAP_A))));
 }
 
 uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,

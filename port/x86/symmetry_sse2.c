@@ -41,9 +41,8 @@ static inline __m128i absdiff(const uint8_t *a, const uint8_t *b)
  * where this is inlined, so the pair loop unrolls and the row pointers stay
  * in registers. */
 static inline __attribute__((always_inline)) void block(const uint8_t *const *lo,
-                                                        const uint8_t *const *hi,
-                                                        const __m128i *wv, uint32_t np, size_t x,
-                                                        __m128i acc[4])
+                                                        const uint8_t *const *hi, const __m128i *wv,
+                                                        uint32_t np, size_t x, __m128i acc[4])
 {
     const __m128i zero = _mm_setzero_si128();
     uint32_t p;
@@ -72,9 +71,8 @@ static inline void store_block(uint32_t *E, const __m128i acc[4])
     }
 }
 
-static inline __attribute__((always_inline)) void run_pass(const sl_pass *ps, uint32_t np,
-                                                           uint32_t count, uint32_t init, int add,
-                                                           uint32_t *E)
+static inline __attribute__((always_inline)) void
+run_pass(const sl_pass *ps, uint32_t np, uint32_t count, uint32_t init, int add, uint32_t *E)
 {
     const uint8_t *lo[SL_PASS_PAIRS], *hi[SL_PASS_PAIRS];
     __m128i wv[SL_PASS_PAIRS / 2u];

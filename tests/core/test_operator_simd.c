@@ -54,8 +54,9 @@ static void fill_gray(uint8_t *g, uint32_t n, uint32_t *s)
     uint32_t i;
     for (i = 0; i < n; i++) {
         const uint32_t r = tu_rand(s);
-        g[i] = (uint8_t)(kind == 0u ? r : kind == 1u ? ((r & 1u) ? 255u : 0u)
-                                                      : (i * 3u + r % 9u) & 255u);
+        g[i] = (uint8_t)(kind == 0u   ? r
+                         : kind == 1u ? ((r & 1u) ? 255u : 0u)
+                                      : (i * 3u + r % 9u) & 255u);
     }
 }
 
@@ -103,7 +104,7 @@ static void make_window(const uint8_t *img, uint32_t stride, uint32_t h, uint32_
                         uint32_t *s, const uint8_t **rows)
 {
     uint32_t j;
-    const uint32_t y = tu_rand(s) % (h + 2u * m) ; /* centre row, offset by m */
+    const uint32_t y = tu_rand(s) % (h + 2u * m); /* centre row, offset by m */
     for (j = 0; j <= 2u * m; j++) {
         const uint32_t yy = y + j; /* row y - m + j, offset by 2m */
         int in = yy >= 2u * m && yy - 2u * m < h;
@@ -240,8 +241,7 @@ static void find_s_is_reference(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(row_is_definition),
-        cmocka_unit_test(across_is_definition),
+        cmocka_unit_test(row_is_definition),     cmocka_unit_test(across_is_definition),
         cmocka_unit_test(frames_are_definition),
 #ifdef SYMLINE_PORT_ENERGY
         cmocka_unit_test(simd_is_reference),
