@@ -106,9 +106,9 @@ static inline bool symline_i_linefilter_a_near(const symline_i_linefilter *f, co
  * reference; symline_i_find_s() is the build's choice: a SIMD version from
  * port/ (SYMLINE_PORT_FIND_S, CMake option SYMLINE_SIMD) that tests 16
  * entries at a time, with the same result, or the reference.
- * SL_FOR_EACH_S(x, map, n) runs the statement after it for each such x in
- * turn; without the SIMD version it is the plain loop over every entry,
- * which is shorter on scalar cores.
+ * SL_NEXT_S(map, x, n) is the entry a row loop over the S points looks at
+ * after x: the next S point where the SIMD search is built, x + 1 otherwise
+ * (the loop tests each entry itself, which is shorter on scalar cores).
  */
 static inline uint32_t symline_i_find_s_c(const uint8_t *map, uint32_t x, uint32_t n)
 {
@@ -119,14 +119,10 @@ static inline uint32_t symline_i_find_s_c(const uint8_t *map, uint32_t x, uint32
 }
 #ifdef SYMLINE_PORT_FIND_S
 uint32_t symline_i_find_s(const uint8_t *map, uint32_t x, uint32_t n);
-#define SL_FOR_EACH_S(x, map, n)                                                                   \
-    for ((x) = 0u; ((x) = symline_i_find_s((map), (x), (n))) < (n); (x)++)
+#define SL_NEXT_S(map, x, n) symline_i_find_s((map), (x) + 1u, (n))
 #else
 #define symline_i_find_s symline_i_find_s_c
-#define SL_FOR_EACH_S(x, map, n)                                                                   \
-    for ((x) = 0u; (x) < (n); (x)++)                                                               \
-        if ((map)[x] != SYMLINE_MAP_S) {                                                           \
-        } else
+#define SL_NEXT_S(map, x, n) ((x) + 1u)
 #endif
 
 /*
