@@ -90,8 +90,7 @@ static void fill(uint32_t *E, uint32_t count, uint32_t value)
     }
 }
 
-/* The body of symline_energy_row() on checked arguments: the portable
- * reference; the build calls energy_row() (symmetry.h). */
+/* The portable body of symline_energy_row(), on checked arguments. */
 SL_ENERGY_REF void SL_ENERGY_ROW_REF(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
 {
     uint32_t i, j, edge;
@@ -129,8 +128,7 @@ symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint
     return SYMLINE_OK;
 }
 
-/* The body of symline_energy_across() on checked arguments: the portable
- * reference; the build calls energy_across() (symmetry.h). */
+/* The portable body of symline_energy_across(), on checked arguments. */
 SL_ENERGY_REF void SL_ENERGY_ACROSS_REF(const uint8_t *const *rows, uint32_t m, uint32_t width,
                                         uint32_t *E)
 {

@@ -2,8 +2,8 @@
 /*
  * The symmetry operator's private interface (symmetry.c): the common start
  * of the whole-frame operator calls, and the row bodies a SIMD version may
- * replace. The row and frame calls themselves are
- * public (include/symline/symmetry.h).
+ * replace. The row and frame calls themselves are public
+ * (include/symline/symmetry.h).
  */
 #ifndef SYMLINE_LIB_SYMMETRY_H
 #define SYMLINE_LIB_SYMMETRY_H
