@@ -225,7 +225,7 @@ SL_NOINLINE static symline_status collect_vertical(const symline_image *img,
             drop_dim_s(&p->filter, row + k, row, row + (size_t)2u * k, w - 2u * k, map + k);
         }
 #endif
-        for (x = 0; x < w; x++) {
+        for (x = 0; x < w; x = SL_NEXT_S(map, x, w)) {
             if (map[x] != SYMLINE_MAP_S) {
                 continue;
             }
@@ -272,7 +272,7 @@ static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t ca
 #ifdef SL_ROW_PREFILTER
     drop_dim_s(&p->filter, c, lo, hi, p->w, map);
 #endif
-    for (x = 0; x < p->w; x++) {
+    for (x = 0; x < p->w; x = SL_NEXT_S(map, x, p->w)) {
         if (map[x] != SYMLINE_MAP_S) {
             continue;
         }
