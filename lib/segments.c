@@ -53,10 +53,11 @@ uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
     return best;
 }
 
-/* The length of (dx, dy), rounded down; 32-bit operands, 64-bit squares. */
-SL_NOINLINE static uint64_t hypot_q(int32_t dx, int32_t dy)
+/* The length of (dx, dy), rounded down; 32-bit operands, 64-bit squares, a
+ * length below 2^31.5 (32 bits). */
+SL_NOINLINE static uint32_t hypot_q(int32_t dx, int32_t dy)
 {
-    return symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    return (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
 }
 
 uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
@@ -64,11 +65,11 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
 {
     /* Differences of Q8 coordinates of one frame fit 25 bits; products 64. */
     const int32_t wx = px - ax, wy = py - ay;
-    uint64_t len = hypot_q(dx, dy);
+    const uint32_t len = hypot_q(dx, dy);
     int64_t c;
     uint64_t cross;
     if (len == 0u) {
-        return (uint32_t)hypot_q(wx, wy);
+        return hypot_q(wx, wy);
     }
     c = (int64_t)wx * dy - (int64_t)wy * dx;
     cross = (uint64_t)(c < 0 ? -c : c);
@@ -139,7 +140,7 @@ bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr
 {
     /* 25 bits: Q8 coordinates of one frame */
     const int32_t dx = c->x1 - c->x0, dy = c->y1 - c->y0;
-    const uint64_t chord = hypot_q(dx, dy);
+    const uint32_t chord = hypot_q(dx, dy);
     return max_dev > thr && (uint64_t)max_dev * 32u > chord;
 }
 
@@ -258,7 +259,7 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
  * even where its largest deviation stays under the curve threshold.
  */
 /* sum / (cnt len) in Q7 grid pixels, signed (Q7 keeps a difference of two in range). */
-SL_NOINLINE static int32_t mean_q7(int64_t sum, uint32_t cnt, uint64_t len)
+SL_NOINLINE static int32_t mean_q7(int64_t sum, uint32_t cnt, uint32_t len)
 {
     const uint32_t a =
         symline_i_div_q8((uint64_t)(sum < 0 ? -sum : sum) << SL_Q8_SHIFT, (uint64_t)cnt * len);
@@ -271,7 +272,8 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     const int32_t x0 = p[0].x, y0 = p[0].y;
     const int32_t dx = (int32_t)p[n - 1u].x - x0, dy = (int32_t)p[n - 1u].y - y0;
     const int64_t dd = (int64_t)dx * dx + (int64_t)dy * dy;
-    const uint64_t len = symline_i_isqrt64((uint64_t)dd);
+    /* Below 2^17: grid coordinates are 16-bit. */
+    const uint32_t len = (uint32_t)symline_i_isqrt64((uint64_t)dd);
     int64_t sm = 0, so = 0;
     uint32_t nm = 0u, no = 0u, i;
     int32_t d;
