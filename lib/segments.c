@@ -84,7 +84,7 @@ SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, c
 {
     const int32_t dx = g[2], dy = g[3];
     int32_t wx, wy;
-    symline_i_pt_off(q, level, g[0], g[1], &wx, &wy);
+    symline_i_pt_off(q, level, g, &wx, &wy);
     return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
                           : (int64_t)wx * dy - (int64_t)wy * dx;
 }
@@ -154,18 +154,18 @@ bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr
  */
 #define SL_FIT_SAMPLES 2048u
 
-/* The fit's frame: the points' level, the origin (ox, oy) (Q8 full
+/* The fit's frame: the points' level, the origin o (Q8 full
  * resolution) and the mean (mx, my) (Q4, relative to the origin). */
 typedef struct symline_i_fitframe {
     uint32_t level;
-    int32_t ox, oy, mx, my;
+    int32_t o[2], mx, my;
 } symline_i_fitframe;
 
 /* Point q in Q4 full resolution relative to the origin, minus the mean. */
 SL_NOINLINE static void rel_q4(const symline_point *q, const symline_i_fitframe *f, int32_t *x,
                                int32_t *y)
 {
-    symline_i_pt_off(q, f->level, f->ox, f->oy, x, y);
+    symline_i_pt_off(q, f->level, f->o, x, y);
     *x = *x / 16 - f->mx;
     *y = *y / 16 - f->my;
 }
@@ -181,7 +181,7 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     int64_t a = 0, b = 0, c = 0;
     uint32_t i, k, cnt = 0u;
     f.level = level;
-    symline_i_pt_off(&p[0], level, 0, 0, &f.ox, &f.oy);
+    symline_i_pt_off(&p[0], level, NULL, &f.o[0], &f.o[1]);
     /* Two sweeps: the mean (mx, my still 0), then the scatter about it. */
     f.mx = f.my = 0;
     for (k = 0; k < 2u; k++) {
@@ -237,8 +237,8 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
         rel_q4(&p[i == 0u ? 0u : n - 1u], &f, &qx, &qy);
         t = (int64_t)qx * ux + (int64_t)qy * uy; /* Q4 * Q15 */
         /* Back to Q8 absolute: mean + t*u, Q4*Q15*Q15 -> Q8 is a shift by 26. */
-        const int32_t ex = f.ox + f.mx * 16 + (int32_t)((t * ux) >> 26);
-        const int32_t ey = f.oy + f.my * 16 + (int32_t)((t * uy) >> 26);
+        const int32_t ex = f.o[0] + f.mx * 16 + (int32_t)((t * ux) >> 26);
+        const int32_t ey = f.o[1] + f.my * 16 + (int32_t)((t * uy) >> 26);
         if (i == 0u) {
             s->x0 = ex;
             s->y0 = ey;
@@ -300,8 +300,8 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
 /* The chord of p[0..n-1]'s first and last point as s's ends, and its max_dev. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
-    symline_i_pt_off(&p[0], level, 0, 0, &s->x0, &s->y0);
-    symline_i_pt_off(&p[n - 1u], level, 0, 0, &s->x1, &s->y1);
+    symline_i_pt_off(&p[0], level, NULL, &s->x0, &s->y0);
+    symline_i_pt_off(&p[n - 1u], level, NULL, &s->x1, &s->y1);
     s->max_dev = symline_i_max_dev(p, n, level, s);
 }
 
