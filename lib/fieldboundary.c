@@ -559,25 +559,15 @@ int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
 void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
                           uint32_t width, uint32_t margin, uint16_t *rows)
 {
-    /* symline_field_y() at every grid column's centre; the centres only move
-     * right, so the chord is found by stepping on from the last one. */
-    const uint32_t s = 1u << level, last = b->count - 1u;
-    uint32_t x, i = 0u;
+    /* symline_field_y() at every grid column's centre: a few vertices per
+     * column, once per level, not per pixel. */
+    const uint32_t s = 1u << level;
+    uint32_t x;
     for (x = 0; x < w; x++) {
         /* Keep grid row y when its centre y*s + s/2 >= boundary - margin. */
-        const int32_t xc = (int32_t)(x * s + s / 2u < width ? x * s + s / 2u : width - 1u);
-        int32_t y;
-        while (i < last && xc > b->v[i + 1u].x) {
-            i++;
-        }
-        if (xc <= b->v[0].x) {
-            y = b->v[0].y;
-        } else if (i >= last) {
-            y = b->v[last].y;
-        } else {
-            y = chord_y(&b->v[i], &b->v[i + 1u], xc);
-        }
-        y -= (int32_t)(margin + s / 2u);
+        const uint32_t xc = x * s + s / 2u;
+        int32_t y = symline_field_y(b, (int32_t)(xc < width ? xc : width - 1u)) -
+                    (int32_t)(margin + s / 2u);
         y = y <= 0 ? 0 : (y + (int32_t)s - 1) >> level;
         rows[x] = (uint16_t)(y > 0xFFFF ? 0xFFFF : y);
     }
