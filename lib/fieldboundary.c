@@ -145,19 +145,14 @@ static uint8_t rel_tex(uint32_t d, uint32_t sum, uint32_t n)
     return (uint8_t)(t < 255u ? t : 255u);
 }
 
-/* Mean gray value and relative texture of the cell whose pixels start at p,
- * left (>= 1) pixels before the row's end. Every other pair of neighbours
+/* Mean gray value and relative texture of the n >= 1 pixels of a cell from p
+ * (a cell starts inside its row). Every other pair of neighbours
  * measures the grain as well as all of them at half the cost: each pair's
  * difference as its sum less twice its smaller value, doubled. This is the
  * stage's cost. */
 static inline void cell_stats_n(const uint8_t *p, uint32_t n, uint32_t *mean, uint32_t *tex)
 {
     uint32_t i, sum = 0u, lows = 0u, pairs;
-    if (n == 0u) {
-        *mean = 0u; /* not reached: a cell starts inside its row */
-        *tex = 0u;
-        return;
-    }
     for (i = 0; i + 1u < n; i += 2u) {
         const uint32_t a = p[i], b = p[i + 1u];
         sum += a + b;
@@ -204,14 +199,11 @@ static void row_cells(const symline_image *img, const symline_i_fstate *f, uint3
 /* Smallest bin value v with at least half the count at or below it. */
 SL_NOINLINE static uint32_t hist_median(const uint32_t *hist, uint32_t total)
 {
-    uint32_t i, acc = 0u;
-    for (i = 0; i < SL_FIELD_BINS; i++) {
-        acc += hist[i];
-        if (2u * acc >= total) {
-            return i;
-        }
+    uint32_t i = 0u, acc = hist[0];
+    while (2u * acc < total) { /* total is the sum of the bins: ends by the last */
+        acc += hist[++i];
     }
-    return SL_FIELD_BINS - 1u;
+    return i;
 }
 
 /* The carpet model from the lowest band of grid rows. */
@@ -234,12 +226,8 @@ SL_NOINLINE static void carpet_model(const symline_image *img, const symline_fie
             total++;
         }
     }
-    if (total == 0u) {
-        /* Only black at the bottom: take it as the carpet (a dark frame). */
-        f->hm[0] = 1u;
-        f->ht[0] = 1u;
-        total = 1u;
-    }
+    /* Only black at the bottom (total 0): both medians are bin 0, the
+     * carpet is taken to be that dark. */
     tb = 2u * hist_median(f->ht, total) + 1u;
     f->mid = 4u * hist_median(f->hm, total) + 2u;
     f->lo = f->mid > fc->mean_tol ? f->mid - fc->mean_tol : 0u;
@@ -325,27 +313,25 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
  * Reads col[].top, writes col[].ema. */
 SL_NOINLINE static void support_filter(const symline_i_fstate *f, uint32_t k, symline_i_fcol *col)
 {
-    int32_t best[SL_FIELD_MAX_SUPPORT]; /* the k smallest rows so far, ascending */
     uint32_t c, i, j;
     for (c = 0; c < f->nc; c++) {
         const uint32_t lo = c >= k ? c - k : 0u;
         const uint32_t hi = c + k < f->nc ? c + k : f->nc - 1u;
-        for (i = 0; i < k; i++) {
-            best[i] = 0x7FFFFFFF;
-        }
-        for (j = lo; j <= hi; j++) {
-            const int32_t y = col[j].top;
-            if (y < best[k - 1u]) {
-                for (i = k - 1u; i > 0u && best[i - 1u] > y; i--) {
-                    best[i] = best[i - 1u];
-                }
-                best[i] = y;
-            }
-        }
         /* A window cut by the image edge asks for proportionally fewer:
-         * 1 <= j <= the window's columns, j <= k. */
-        j = (k * (hi - lo + 1u) + 2u * k) / (2u * k + 1u);
-        col[c].ema = best[j - 1u];
+         * 1 <= rank <= the window's columns, rank <= k. */
+        const uint32_t rank = (k * (hi - lo + 1u) + 2u * k) / (2u * k + 1u);
+        int32_t pick = 0x7FFFFFFF;
+        /* The rank-th smallest row: the smallest top with at least rank
+         * tops of the window at or above it (a window of at most 17). */
+        for (i = lo; i <= hi; i++) {
+            const int32_t y = col[i].top;
+            uint32_t le = 0u;
+            for (j = lo; j <= hi; j++) {
+                le += col[j].top <= y ? 1u : 0u;
+            }
+            pick = (le >= rank && y < pick) ? y : pick;
+        }
+        col[c].ema = pick;
     }
 }
 
@@ -573,23 +559,13 @@ void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint3
     }
 }
 
-uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *pts,
-                              uint32_t *row_start, uint32_t h)
+uint32_t symline_i_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start,
+                              uint32_t h)
 {
-    uint32_t y, i = 0u, k = 0u, lo = 0xFFFFu, hi = 0u;
-    for (y = 0; y < w; y++) {
-        lo = rows[y] < lo ? rows[y] : lo;
-        hi = rows[y] > hi ? rows[y] : hi;
-    }
+    uint32_t y, i = 0u, k = 0u;
     for (y = 0; y < h; y++) {
         const uint32_t end = row_start[y + 1u];
-        if (y >= hi && k == i) {
-            return row_start[h]; /* the rest is field and stays where it is */
-        }
         row_start[y] = k;
-        if (y < lo) {
-            i = end; /* the whole row lies above the field */
-        }
         for (; i < end; i++) {
             if (pts[i].y >= rows[pts[i].x]) {
                 /* Field by field (no memcpy call); the offsets fx, fy are

@@ -232,7 +232,7 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, const symline_i_pass
             symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
                                  d->field_rows);
         }
-        *n = symline_i_field_drop(d->field_rows, p->w, point_at(d->r, d->npts), row_start, p->h);
+        *n = symline_i_field_drop(d->field_rows, point_at(d->r, d->npts), row_start, p->h);
     }
     return st;
 }
