@@ -145,14 +145,19 @@ static uint8_t rel_tex(uint32_t d, uint32_t sum, uint32_t n)
     return (uint8_t)(t < 255u ? t : 255u);
 }
 
-/* Mean gray value and relative texture of the n >= 1 pixels of a cell from p
- * (a cell starts inside its row). Every other pair of neighbours
+/* Mean gray value and relative texture of the cell whose pixels start at p,
+ * left (>= 1) pixels before the row's end. Every other pair of neighbours
  * measures the grain as well as all of them at half the cost: each pair's
  * difference as its sum less twice its smaller value, doubled. This is the
  * stage's cost. */
 static inline void cell_stats_n(const uint8_t *p, uint32_t n, uint32_t *mean, uint32_t *tex)
 {
     uint32_t i, sum = 0u, lows = 0u, pairs;
+    if (n == 0u) {
+        *mean = 0u; /* not reached: a cell starts inside its row */
+        *tex = 0u;
+        return;
+    }
     for (i = 0; i + 1u < n; i += 2u) {
         const uint32_t a = p[i], b = p[i + 1u];
         sum += a + b;

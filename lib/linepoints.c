@@ -206,7 +206,7 @@ static void decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap,
     row_start[y] = *n;
 #ifdef SL_ROW_PREFILTER
     if (w > 2u * dk) { /* along a row: the interior, where both sides lie in the row */
-        drop_dim_s(&p->filter, c + dk, lo, hi + 2u * dk, w - 2u * dk, map + dk);
+        drop_dim_s(&p->filter, c + dk, lo, hi + (size_t)2u * dk, w - 2u * dk, map + dk);
     }
 #endif
     for (x = 0; x < w; x++) {
