@@ -44,50 +44,31 @@ uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *re
 /*
  * The run rule over a row. Every entry with unequal neighbours is decided in
  * blocks by symline_i_extrema_kinds(); what is left are the runs of two or
- * more equal energies, looked for only in blocks that have some: run
- * [a, e-1] is marked at its middle unless it touches either end or is longer
- * than the plateau limit allows. A middle beyond the current block waits
- * (pend) until that block's entries are written.
+ * more equal energies, looked for only in blocks that have some. A run is
+ * decided where it ends, at i: it began at a (the last entry that differs
+ * from its left neighbour; a run lies in blocks that all have equal pairs,
+ * so a was seen), and is marked at its middle, which no later block
+ * overwrites, unless it touches either end or is longer than the plateau
+ * limit allows.
  */
 void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
 {
-    uint32_t x0, x1, i = 1u, pend = 0u;
-    uint8_t pkind = SYMLINE_MAP_NONE;
+    uint32_t x0, x1, i, a = 0u;
     map[0] = SYMLINE_MAP_NONE;
     map[n - 1u] = SYMLINE_MAP_NONE;
     for (x0 = 1u; x0 + 1u < n; x0 = x1) {
         x1 = (n - 1u - x0 < SL_PLATEAU_BLOCK) ? n - 1u : x0 + SL_PLATEAU_BLOCK;
-        const uint32_t flat =
-            symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0);
-        if (pend != 0u && pend < x1) {
-            map[pend] = pkind;
-            pend = 0u;
-        }
-        if (flat == 0u) {
+        if (symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0) == 0u) {
             continue;
         }
-        /* Pairs (i-1, i), i <= x1, where a run begins at i-1. */
-        for (i = (i > x0) ? i : x0; i <= x1; i++) {
-            uint32_t a = i - 1u, e = i;
-            if (E[i] != E[a] || (a >= 1u && E[a - 1u] == E[a])) {
-                continue;
-            }
-            while (e < n && E[e] == E[a]) {
-                e++;
-            }
-            i = e;
-            if (a >= 1u && e < n && e - 1u - (a + e - 1u) / 2u <= lag) {
-                const uint32_t mid = (a + e - 1u) / 2u;
-                const uint8_t kind = (E[a - 1u] > E[a] && E[e] > E[a]) ? (uint8_t)SYMLINE_MAP_S
-                                     : (E[a - 1u] < E[a] && E[e] < E[a])
-                                         ? (uint8_t)SYMLINE_MAP_A
-                                         : (uint8_t)SYMLINE_MAP_NONE;
-                if (mid < x1) {
-                    map[mid] = kind;
-                } else {
-                    pend = mid;
-                    pkind = kind;
-                }
+        for (i = x0; i < x1; i++) { /* i + 1 < n */
+            const uint32_t v = E[i];
+            if (v != E[i - 1u]) {
+                a = i;
+            } else if (E[i + 1u] != v && a >= 1u && i - (a + i) / 2u <= lag) {
+                map[(a + i) / 2u] = (E[a - 1u] > v && E[i + 1u] > v)   ? (uint8_t)SYMLINE_MAP_S
+                                    : (E[a - 1u] < v && E[i + 1u] < v) ? (uint8_t)SYMLINE_MAP_A
+                                                                       : (uint8_t)SYMLINE_MAP_NONE;
             }
         }
     }
