@@ -69,7 +69,8 @@ bool symline_i_field_config_ok(const symline_field_config *fc)
            fc->col_cells >= 1u && fc->col_cells <= 4u && fc->edge_slope_pct <= 10000u;
 }
 
-uint32_t symline_i_field_cell(uint32_t width, const symline_field_config *fc)
+/* Grid step for a frame `width` wide under fc (fc->cell or the automatic one). */
+static uint32_t field_cell(uint32_t width, const symline_field_config *fc)
 {
     /* A cell's texture needs a few neighbour differences to be stable: at
      * least 8 px, 16 px from 1024 px wide on. */
@@ -123,7 +124,7 @@ size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symli
         height > SYMLINE_MAX_DIM || !symline_i_field_config_ok(fc)) {
         return 0u;
     }
-    s = symline_i_field_cell(width, fc);
+    s = field_cell(width, fc);
     nc = (width + s * fc->col_cells - 1u) / (s * fc->col_cells); /* <= 65535 */
     nb = band_rows((height + s - 1u) / s, fc);
     return symline_i_align_up(sizeof(symline_i_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
@@ -469,7 +470,7 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
     if (f == NULL) {
         return; /* not reached: the workspace size was checked */
     }
-    f->s = symline_i_field_cell(img->width, fc);
+    f->s = field_cell(img->width, fc);
     f->sx = f->s * fc->col_cells;
     f->nc = (img->width + f->sx - 1u) / f->sx;
     f->nr = (img->height + f->s - 1u) / f->s;
