@@ -298,48 +298,49 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     if (E3 == NULL || cd->map == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    for (t = 0; t < h; t++) {
+    /* Rows t >= h only decide the last delta rows. */
+    for (t = 0; t < h + delta; t++) {
         uint32_t *E = E3 + (size_t)(t % erows) * w;
-        if (p->level > 0u) {
-            const uint32_t need = along ? t : (t + m < h) ? t + m : h - 1u;
-            SL_STAGE(GRID);
-            while (produced <= need) {
-                symline_i_grid_row(img, p, produced, acc,
-                                   rp->gray + (size_t)(produced % rp->gray_rows) * w);
-                produced++;
+        if (t >= h) {
+            if (t == h) {
+                /* The last row touches the bottom: never marked. */
+                uint8_t *mr = ring_map(rp, h - 1u);
+                uint32_t x;
+                for (x = 0; x < w; x++) {
+                    mr[x] = SYMLINE_MAP_NONE;
+                }
             }
-        }
-        SL_STAGE(OPERATOR);
-        if (along) {
-            (void)symline_energy_row(ring_row(rp, t), w, m, E);
-            SL_STAGE(EXTREMA);
-            symline_i_extrema_runs(E, w, p->lag, cd->map);
         } else {
-            uint32_t j;
-            for (j = 0; j <= 2u * m; j++) {
-                const uint32_t yy = t + j; /* row t - m + j, offset by m to stay unsigned */
-                rows[j] = (yy >= m && yy - m < h) ? ring_row(rp, yy - m) : NULL;
+            if (p->level > 0u) {
+                const uint32_t need = along ? t : (t + m < h) ? t + m : h - 1u;
+                SL_STAGE(GRID);
+                while (produced <= need) {
+                    symline_i_grid_row(img, p, produced, acc,
+                                       rp->gray + (size_t)(produced % rp->gray_rows) * w);
+                    produced++;
+                }
             }
-            (void)symline_energy_across(rows, m, w, E);
-            SL_STAGE(EXTREMA);
-            if (t >= 1u) {
-                symline_i_extrema_down(cd, E, t);
+            SL_STAGE(OPERATOR);
+            if (along) {
+                (void)symline_energy_row(ring_row(rp, t), w, m, E);
+                SL_STAGE(EXTREMA);
+                symline_i_extrema_runs(E, w, p->lag, cd->map);
+            } else {
+                uint32_t j;
+                for (j = 0; j <= 2u * m; j++) {
+                    const uint32_t yy = t + j; /* row t - m + j, offset by m to stay unsigned */
+                    rows[j] = (yy >= m && yy - m < h) ? ring_row(rp, yy - m) : NULL;
+                }
+                (void)symline_energy_across(rows, m, w, E);
+                SL_STAGE(EXTREMA);
+                if (t >= 1u) {
+                    symline_i_extrema_down(cd, E, t);
+                }
             }
         }
         if (t >= delta) {
             SL_STAGE(FILTER);
             decide(rp, t - delta, pts, cap, n, row_start, dropped);
-        }
-    }
-    SL_STAGE(FILTER);
-    if (!along) {
-        /* The last row touches the bottom: never marked. */
-        uint8_t *mr = ring_map(rp, h - 1u);
-        for (t = 0; t < w; t++) {
-            mr[t] = SYMLINE_MAP_NONE;
-        }
-        for (t = (h > delta) ? h - delta : 0u; t < h; t++) {
-            decide(rp, t, pts, cap, n, row_start, dropped);
         }
     }
     row_start[h] = *n;
