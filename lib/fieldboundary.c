@@ -69,17 +69,6 @@ bool symline_i_field_config_ok(const symline_field_config *fc)
            fc->col_cells >= 1u && fc->col_cells <= 4u && fc->edge_slope_pct <= 10000u;
 }
 
-/* Grid step for a frame `width` wide under fc (fc->cell or the automatic one). */
-static uint32_t field_cell(uint32_t width, const symline_field_config *fc)
-{
-    /* A cell's texture needs a few neighbour differences to be stable: at
-     * least 8 px, 16 px from 1024 px wide on. */
-    if (fc->cell != 0u) {
-        return fc->cell;
-    }
-    return width >= 1024u ? 16u : 8u;
-}
-
 /* Per grid column: scan state, then the column top (pixels), then the hull. */
 typedef struct symline_i_fcol {
     int32_t cur;  /* score of the run ending at the current row */
@@ -110,25 +99,37 @@ static size_t cols_bytes(uint32_t nc)
     return symline_i_align_up((size_t)nc * sizeof(symline_i_fcol));
 }
 
-/* Grid rows of the carpet model's band. */
-SL_NOINLINE static uint32_t band_rows(uint32_t nr, const symline_field_config *fc)
+/* The grid of a width x height frame under fc, into f's sizes unless f is
+ * NULL; returns the workspace bytes it needs. */
+SL_NOINLINE static size_t field_grid(uint32_t width, uint32_t height,
+                                     const symline_field_config *fc, symline_i_fstate *f)
 {
-    const uint32_t nb = (nr * fc->band_pct + 99u) / 100u; /* nr <= 32768: 32 bits */
-    return nb < 1u ? 1u : nb;
+    /* A cell's texture needs a few neighbour differences to be stable: at
+     * least 8 px, 16 px from 1024 px wide on. */
+    const uint32_t s = fc->cell != 0u ? fc->cell : width >= 1024u ? 16u : 8u;
+    const uint32_t sx = s * fc->col_cells;
+    const uint32_t nc = (width + sx - 1u) / sx; /* <= 65535 */
+    const uint32_t nr = (height + s - 1u) / s;
+    /* Grid rows of the carpet model's band; nr <= 32768: 32 bits. */
+    const uint32_t nb0 = (nr * fc->band_pct + 99u) / 100u, nb = nb0 < 1u ? 1u : nb0;
+    if (f != NULL) {
+        f->s = s;
+        f->sx = sx;
+        f->nc = nc;
+        f->nr = nr;
+        f->nb = nb;
+    }
+    return symline_i_align_up(sizeof(symline_i_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
+           (size_t)3u * SL_ALIGN;
 }
 
 size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symline_field_config *fc)
 {
-    uint32_t s, nc, nb;
     if (fc == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
         height > SYMLINE_MAX_DIM || !symline_i_field_config_ok(fc)) {
         return 0u;
     }
-    s = field_cell(width, fc);
-    nc = (width + s * fc->col_cells - 1u) / (s * fc->col_cells); /* <= 65535 */
-    nb = band_rows((height + s - 1u) / s, fc);
-    return symline_i_align_up(sizeof(symline_i_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
-           (size_t)3u * SL_ALIGN;
+    return field_grid(width, height, fc, NULL);
 }
 
 /* Middle row of grid row r (0 = the lowest). */
@@ -470,12 +471,8 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
     if (f == NULL) {
         return; /* not reached: the workspace size was checked */
     }
-    f->s = field_cell(img->width, fc);
-    f->sx = f->s * fc->col_cells;
-    f->nc = (img->width + f->sx - 1u) / f->sx;
-    f->nr = (img->height + f->s - 1u) / f->s;
+    (void)field_grid(img->width, img->height, fc, f);
     col = (symline_i_fcol *)symline_i_carve(&cur, end, (size_t)f->nc * sizeof(symline_i_fcol));
-    f->nb = band_rows(f->nr, fc);
     f->band = (uint8_t *)symline_i_carve(&cur, end, 2u * (size_t)f->nb * f->nc);
     if (col == NULL || f->band == NULL) {
         return;
