@@ -342,16 +342,12 @@ SL_NOINLINE static void support_filter(const symline_i_fstate *f, uint32_t k, sy
     }
 }
 
+/* Pixel column of grid column c (frame w px wide): the first and the last
+ * lie at the image edges, the others at their centres, inside the frame
+ * ((nc - 1) * sx < w, so (nc - 2) * sx + sx / 2 < w - sx / 2). */
 SL_NOINLINE static int32_t col_x(const symline_i_fstate *f, uint32_t c, uint32_t w)
 {
-    uint32_t x = c * f->sx + f->sx / 2u;
-    if (c == 0u) {
-        return 0;
-    }
-    if (c + 1u == f->nc || x > w - 1u) {
-        x = w - 1u;
-    }
-    return (int32_t)x;
+    return c == 0u ? 0 : (int32_t)(c + 1u == f->nc ? w - 1u : c * f->sx + f->sx / 2u);
 }
 
 /* Row of the chord a-b at column x (a.x < x < b.x), rounded toward the top. */
@@ -380,12 +376,7 @@ SL_NOINLINE static void hull(const symline_image *img, const symline_i_fstate *f
         if (y >= h) {
             continue; /* no field in this column (a lens's black corner, say) */
         }
-        if (n > 0u && x == col[n - 1u].cur) {
-            if (y >= col[n - 1u].best) {
-                continue; /* the same column again (a frame narrower than the grid) */
-            }
-            n--;
-        }
+        /* x grows strictly from column to column (col_x()). */
         /* Andrew's monotone chain, upper part (smaller y is higher): pop while
          * the last vertex lies on or below the chord from its predecessor. */
         while (n >= 2u) {
