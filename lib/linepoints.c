@@ -191,8 +191,8 @@ static uint8_t *ring_map(const hring *r, uint32_t y)
  * values pass the line filter, with an A point near when it asks for one.
  * Across the line: k entries either side along a row (vertical axis),
  * k rows up and down a column (horizontal axis). */
-static void decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap, uint32_t *n,
-                   uint32_t *row_start, uint32_t *dropped)
+SL_NOINLINE static void decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap,
+                               uint32_t *n, uint32_t *row_start, uint32_t *dropped)
 {
     const symline_i_pass *p = r->p;
     const uint32_t w = p->w;
