@@ -57,7 +57,7 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
     map[0] = SYMLINE_MAP_NONE;
     map[n - 1u] = SYMLINE_MAP_NONE;
     for (x0 = 1u; x0 + 1u < n; x0 = x1) {
-        x1 = (n - 1u - x0 < SL_PLATEAU_BLOCK) ? n - 1u : x0 + SL_PLATEAU_BLOCK;
+        x1 = x0 + SL_PLATEAU_SPAN(n - 1u - x0);
         if (symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0) == 0u) {
             continue;
         }
@@ -107,10 +107,10 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
     const uint32_t *mid = cd->E3 + (size_t)((t + 2u) % 3u) * w;
     const uint32_t *up = (t >= 2u) ? cd->E3 + (size_t)((t + 1u) % 3u) * w : mid;
     uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
-    uint32_t i;
+    uint32_t i, nb;
     /* In blocks, so that a plateau sends only its block down the slow path. */
-    for (i = 0; i < w; i += SL_PLATEAU_BLOCK) {
-        const uint32_t nb = (w - i < SL_PLATEAU_BLOCK) ? w - i : SL_PLATEAU_BLOCK;
+    for (i = 0; i < w; i += nb) {
+        nb = SL_PLATEAU_SPAN(w - i);
         if (symline_i_extrema_kinds(up + i, mid + i, E + i, nb, mr + i) != 0u) {
             plateaus_down(cd, up, mid, E, t, i, i + nb);
         }
