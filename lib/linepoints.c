@@ -33,9 +33,21 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     /* The width in a local: out (bytes) might alias *p, and a bound read
      * through p after every store keeps the loops from vectorising. */
     const uint32_t w = p->w;
-    const uint32_t span = w * s;
     uint32_t x, d;
     const uint8_t *src = img->data + (size_t)(y * s) * img->stride;
+#if defined(__OPTIMIZE_SIZE__)
+    /* Where the build optimises for size: one block at a time, the same sums
+     * without the accumulator's lane loops. */
+    (void)acc;
+    for (x = 0; x < w; x++) {
+        uint32_t sum = 1u << (shift - 1u);
+        for (d = 0; d < s * s; d++) {
+            sum += src[(size_t)(d >> p->level) * img->stride + x * s + (d & (s - 1u))];
+        }
+        out[x] = (uint8_t)(sum >> shift);
+    }
+#else
+    const uint32_t span = w * s;
     for (x = 0; x < span; x++) {
         acc[x] = src[x];
     }
@@ -45,7 +57,6 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
             acc[x] = (uint16_t)(acc[x] + r[x]);
         }
     }
-#if !defined(__OPTIMIZE_SIZE__)
     if (s == 2u) { /* the common first step, as a plain lane loop */
         for (x = 0; x < w; x++) {
             const uint16_t *pair = acc + (size_t)2u * x;
@@ -53,7 +64,6 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
         }
         return;
     }
-#endif
     for (x = 0; x < w; x++) {
         uint32_t sum = 0u;
         for (d = 0; d < s; d++) {
@@ -61,6 +71,7 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
         }
         out[x] = (uint8_t)((sum + (1u << (shift - 1u))) >> shift);
     }
+#endif
 }
 
 /* Rows of the horizontal-axis rings. */
