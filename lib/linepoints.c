@@ -39,10 +39,13 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     /* Where the build optimises for size: one block at a time, the same sums
      * without the accumulator's lane loops. */
     (void)acc;
-    for (x = 0; x < w; x++) {
-        uint32_t sum = 1u << (shift - 1u);
-        for (d = 0; d < s * s; d++) {
-            sum += src[(size_t)(d >> p->level) * img->stride + x * s + (d & (s - 1u))];
+    for (x = 0; x < w; x++, src += s) {
+        const uint8_t *b = src;
+        uint32_t sum = 1u << (shift - 1u), i;
+        for (d = 0; d < s; d++, b += img->stride) {
+            for (i = 0; i < s; i++) {
+                sum += b[i];
+            }
         }
         out[x] = (uint8_t)(sum >> shift);
     }
