@@ -271,12 +271,19 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
         col[c].gap = 0u;
     }
     for (r = 0; r < f->nr; r++) {
+#if defined(__OPTIMIZE_SIZE__)
+        /* Each row's cells into the band's first row (where the build
+         * optimises for size, the band's too, read again). */
+        const uint8_t *cells = f->band;
+        row_cells(img, f, r, col, gmax, f->band);
+#else
         /* The band's cells were kept; above it, each row's into the band's first row. */
         const uint8_t *cells = f->band + 2u * (size_t)r * f->nc;
         if (r >= f->nb) {
             cells = f->band;
             row_cells(img, f, r, col, gmax, f->band);
         }
+#endif
         for (c = 0; c < f->nc; c++, cells += 2) {
             const uint32_t m = cells[0], t = cells[1];
             int32_t v, dm;
