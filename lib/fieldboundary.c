@@ -251,7 +251,7 @@ SL_NOINLINE static void carpet_model(const symline_image *img, const symline_fie
     out->carpet_mean = (uint8_t)f->mid;
     f->tex_lo = tb * fc->tex_lo_pct / 100u;
     f->tex_hi = tb * fc->tex_hi_pct / 100u + 4u;
-    out->carpet_tex = (uint8_t)(tb > 255u ? 255u : tb);
+    out->carpet_tex = (uint8_t)tb; /* <= 2 * (SL_FIELD_BINS - 1) + 1 */
 }
 
 /* Upward scan of every column: the best-scoring run of carpet; col[].top
@@ -564,8 +564,8 @@ void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint3
         const uint32_t xc = x * s + s / 2u;
         int32_t y = symline_field_y(b, (int32_t)(xc < width ? xc : width - 1u)) -
                     (int32_t)(margin + s / 2u);
-        y = y <= 0 ? 0 : (y + (int32_t)s - 1) >> level;
-        rows[x] = (uint16_t)(y > 0xFFFF ? 0xFFFF : y);
+        /* The boundary lies at most at the frame's height: y <= 65535. */
+        rows[x] = (uint16_t)(y <= 0 ? 0 : (y + (int32_t)s - 1) >> level);
     }
 }
 
