@@ -73,7 +73,7 @@ bool symline_i_field_config_ok(const symline_field_config *fc)
 typedef struct symline_i_fcol {
     int32_t cur;  /* score of the run ending at the current row */
     int32_t best; /* best score seen */
-    int32_t top;  /* its top row (grid rows from the bottom), -1 = none */
+    int32_t top;  /* its top row, pixels (the frame's height: no carpet) */
     int32_t ema;  /* running mean of the column's carpet cells, Q4 */
     uint32_t gap; /* non-carpet cells since the last carpet cell */
 } symline_i_fcol;
@@ -266,7 +266,7 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
     for (c = 0; c < f->nc; c++) {
         col[c].cur = 0;
         col[c].best = 0;
-        col[c].top = -1;
+        col[c].top = (int32_t)img->height; /* no carpet: the bottom */
         col[c].ema = (int32_t)(f->mid << 4);
         col[c].gap = 0u;
     }
@@ -318,15 +318,12 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
             }
             q->cur = (q->cur > 0 ? q->cur : 0) + v;
             if (q->cur > q->best) {
+                /* The top row of the run's highest cell, pixels. */
+                const int32_t y = (int32_t)img->height - (int32_t)((r + 1u) * f->s);
                 q->best = q->cur;
-                q->top = (int32_t)r;
+                q->top = y < 0 ? 0 : y;
             }
         }
-    }
-    for (c = 0; c < f->nc; c++) {
-        /* Top row of the run's highest cell, pixels; no carpet: the bottom. */
-        const int32_t y = (int32_t)img->height - (col[c].top + 1) * (int32_t)f->s;
-        col[c].top = col[c].top < 0 ? (int32_t)img->height : (y < 0 ? 0 : y);
     }
 }
 
