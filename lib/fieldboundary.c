@@ -87,6 +87,8 @@ typedef struct symline_i_fstate {
     uint32_t hm[SL_FIELD_BINS], ht[SL_FIELD_BINS];
     uint32_t nb;   /* grid rows of the model's band */
     uint8_t *band; /* their cells' means and textures, read once */
+    const symline_field_config *fc;
+    const symline_image *img;
 } symline_i_fstate;
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 640 bytes for this state and
@@ -190,9 +192,10 @@ static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint3
  * a column behind a barrier (col not NULL, gap > gmax), which the scan
  * is done with, is left out to save time (not where the build optimises
  * for size). */
-static void row_cells(const symline_image *img, const symline_i_fstate *f, uint32_t r,
-                      const symline_i_fcol *col, uint32_t gmax, uint8_t *out)
+static void row_cells(const symline_i_fstate *f, uint32_t r, const symline_i_fcol *col,
+                      uint32_t gmax, uint8_t *out)
 {
+    const symline_image *img = f->img;
     const uint8_t *row = img->data + (size_t)sample_row(f, img->height, r) * img->stride;
     uint32_t c, x0 = 0u;
 #if defined(__OPTIMIZE_SIZE__)
@@ -223,16 +226,16 @@ SL_NOINLINE static uint32_t hist_median(const uint32_t *hist, uint32_t total)
 }
 
 /* The carpet model from the lowest band of grid rows. */
-SL_NOINLINE static void carpet_model(const symline_image *img, const symline_field_config *fc,
-                                     symline_i_fstate *f, symline_field_boundary *out)
+SL_NOINLINE static void carpet_model(symline_i_fstate *f, symline_field_boundary *out)
 {
+    const symline_field_config *fc = f->fc;
     uint32_t r, i, total = 0u, tb;
     for (i = 0; i < SL_FIELD_BINS; i++) {
         f->hm[i] = 0u;
         f->ht[i] = 0u;
     }
     for (r = 0; r < f->nb; r++) {
-        row_cells(img, f, r, NULL, 0u, f->band + 2u * (size_t)r * f->nc); /* kept for the scan */
+        row_cells(f, r, NULL, 0u, f->band + 2u * (size_t)r * f->nc); /* kept for the scan */
     }
     for (i = 0; i < f->nb * f->nc; i++) {
         const uint32_t m = f->band[2u * (size_t)i], t = f->band[2u * (size_t)i + 1u];
@@ -256,9 +259,10 @@ SL_NOINLINE static void carpet_model(const symline_image *img, const symline_fie
 
 /* Upward scan of every column: the best-scoring run of carpet; col[].top
  * becomes its top row in pixels (the frame's height: no carpet). */
-SL_NOINLINE static void scan_columns(const symline_image *img, const symline_field_config *fc,
-                                     const symline_i_fstate *f, symline_i_fcol *col)
+SL_NOINLINE static void scan_columns(const symline_i_fstate *f, symline_i_fcol *col)
 {
+    const symline_image *img = f->img;
+    const symline_field_config *fc = f->fc;
     uint32_t r, c;
     const int32_t miss = -(int32_t)fc->miss_cost;
     const int32_t lt = (int32_t)(fc->local_tol << 4);
@@ -275,13 +279,13 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
         /* Each row's cells into the band's first row (where the build
          * optimises for size, the band's too, read again). */
         const uint8_t *cells = f->band;
-        row_cells(img, f, r, col, gmax, f->band);
+        row_cells(f, r, col, gmax, f->band);
 #else
         /* The band's cells were kept; above it, each row's into the band's first row. */
         const uint8_t *cells = f->band + 2u * (size_t)r * f->nc;
         if (r >= f->nb) {
             cells = f->band;
-            row_cells(img, f, r, col, gmax, f->band);
+            row_cells(f, r, col, gmax, f->band);
         }
 #endif
         for (c = 0; c < f->nc; c++, cells += 2) {
@@ -378,9 +382,11 @@ static int32_t chord_y(const symline_field_vertex *a, const symline_field_vertex
 /* Column tops -> boundary polyline (upper hull, thinned). col[c].ema holds
  * the filtered top row in pixels. The hull is built in place over col[].cur
  * (x) and col[].best (y). */
-SL_NOINLINE static void hull(const symline_image *img, const symline_i_fstate *f, uint32_t edge_pct,
-                             symline_i_fcol *col, symline_field_boundary *out)
+SL_NOINLINE static void hull(const symline_i_fstate *f, symline_i_fcol *col,
+                             symline_field_boundary *out)
 {
+    const symline_image *img = f->img;
+    const uint32_t edge_pct = f->fc->edge_slope_pct;
     const int32_t h = (int32_t)img->height, xr = (int32_t)img->width - 1;
     uint32_t c, n = 0u, i, k = 0u;
     for (c = 0; c < f->nc; c++) {
@@ -482,10 +488,12 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
         return;
     }
     out->cell = (uint8_t)f->s;
-    carpet_model(img, fc, f, out);
-    scan_columns(img, fc, f, col);
+    f->fc = fc;
+    f->img = img;
+    carpet_model(f, out);
+    scan_columns(f, col);
     support_filter(f, fc->support, col);
-    hull(img, f, fc->edge_slope_pct, col, out);
+    hull(f, col, out);
     if (fc->restore_cells != 0u) {
         /* The support filter lowers peaks (a field corner) by a few columns'
          * slope: every column's own top counts again, but no higher than
@@ -503,7 +511,7 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
             }
             col[c].ema = t;
         }
-        hull(img, f, fc->edge_slope_pct, col, out);
+        hull(f, col, out);
     }
 }
 
