@@ -581,12 +581,12 @@ uint32_t symline_i_field_drop(const uint16_t *rows, symline_point *pts, uint32_t
     for (y = 0; y < h; y++) {
         const uint32_t end = row_start[y + 1u];
         row_start[y] = k;
-        for (; i < end; i++) {
-            if (pts[i].y >= rows[pts[i].x]) {
+        for (; i < end; i++) { /* the points of row y */
+            if (y >= rows[pts[i].x]) {
                 /* Field by field (no memcpy call); the offsets fx, fy are
                  * not set before the sub-pixel stage. */
                 pts[k].x = pts[i].x;
-                pts[k++].y = pts[i].y;
+                pts[k++].y = (uint16_t)y;
             }
         }
     }
