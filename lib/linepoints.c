@@ -216,6 +216,10 @@ SL_NOINLINE static void decide(const hring *r, uint32_t y, symline_point *pts, u
     const uint8_t *c = ring_row(r, y);
     const uint8_t *lo = ring_row(r, y >= ky ? y - ky : 0u);
     const uint8_t *hi = ring_row(r, y + ky < p->h ? y + ky : p->h - 1u);
+    /* The A points near: along the map row, or down the map ring's column x. */
+    const uint8_t *amap = along ? map : r->cd.map;
+    const uint32_t aring = along ? w : r->cd.ring, alen = along ? w : p->h;
+    const size_t astep = along ? 1u : w;
     uint32_t x;
     row_start[y] = *n;
 #ifdef SL_ROW_PREFILTER
@@ -245,10 +249,8 @@ SL_NOINLINE static void decide(const hring *r, uint32_t y, symline_point *pts, u
                                        hi[x + dk < w ? x + dk : w - 1u])) {
             continue;
         }
-        /* The A points near: along the map row, or down the map ring's column. */
         if (p->filter.a_distance != 0u &&
-            !symline_i_linefilter_a_near(&p->filter, along ? map : r->cd.map + x,
-                                         along ? w : r->cd.ring, along ? 1u : w, along ? w : p->h,
+            !symline_i_linefilter_a_near(&p->filter, amap + (along ? 0u : x), aring, astep, alen,
                                          along ? x : y)) {
             continue;
         }
