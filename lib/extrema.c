@@ -66,9 +66,11 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
             if (v != E[i - 1u]) {
                 a = i;
             } else if (E[i + 1u] != v && a >= 1u && i - (a + i) / 2u <= lag) {
-                map[(a + i) / 2u] = (E[a - 1u] > v && E[i + 1u] > v)   ? (uint8_t)SYMLINE_MAP_S
-                                    : (E[a - 1u] < v && E[i + 1u] < v) ? (uint8_t)SYMLINE_MAP_A
-                                                                       : (uint8_t)SYMLINE_MAP_NONE;
+                /* Neither neighbour equals v: larger on both sides S, smaller A. */
+                const bool left_up = E[a - 1u] > v, right_up = E[i + 1u] > v;
+                map[(a + i) / 2u] = left_up != right_up ? (uint8_t)SYMLINE_MAP_NONE
+                                    : left_up           ? (uint8_t)SYMLINE_MAP_S
+                                                        : (uint8_t)SYMLINE_MAP_A;
             }
         }
     }
