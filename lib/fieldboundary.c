@@ -275,6 +275,9 @@ SL_NOINLINE static void scan_columns(const symline_i_fstate *f, symline_i_fcol *
         col[c].gap = 0u;
     }
     for (r = 0; r < f->nr; r++) {
+        /* The top row of row r's cells, pixels. */
+        const int32_t y = (int32_t)img->height - (int32_t)((r + 1u) * f->s);
+        const int32_t top = y < 0 ? 0 : y;
 #if defined(__OPTIMIZE_SIZE__)
         /* Each row's cells into the band's first row (where the build
          * optimises for size, the band's too, read again). */
@@ -322,10 +325,8 @@ SL_NOINLINE static void scan_columns(const symline_i_fstate *f, symline_i_fcol *
             }
             q->cur = (q->cur > 0 ? q->cur : 0) + v;
             if (q->cur > q->best) {
-                /* The top row of the run's highest cell, pixels. */
-                const int32_t y = (int32_t)img->height - (int32_t)((r + 1u) * f->s);
                 q->best = q->cur;
-                q->top = y < 0 ? 0 : y;
+                q->top = top;
             }
         }
     }
@@ -350,10 +351,13 @@ SL_NOINLINE static void support_filter(const symline_i_fstate *f, uint32_t k, sy
         for (i = lo; i <= hi; i++) {
             const int32_t y = col[i].top;
             uint32_t le = 0u;
+            if (y >= pick) {
+                continue; /* cannot be smaller */
+            }
             for (j = lo; j <= hi; j++) {
                 le += col[j].top <= y ? 1u : 0u;
             }
-            pick = (le >= rank && y < pick) ? y : pick;
+            pick = le >= rank ? y : pick;
         }
         col[c].ema = pick;
     }
@@ -560,27 +564,63 @@ int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
 void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
                           uint32_t width, uint32_t margin, uint16_t *rows)
 {
-    /* symline_field_y() at every grid column's centre: a few vertices per
-     * column, once per level, not per pixel. */
+    /* symline_field_y() at every grid column's centre. */
     const uint32_t s = 1u << level;
     uint32_t x;
+#if !defined(__OPTIMIZE_SIZE__)
+    /* The centres only move right: the chord is found by stepping on from the last one. */
+    const uint32_t last = b->count - 1u;
+    uint32_t i = 0u;
+#endif
     for (x = 0; x < w; x++) {
         /* Keep grid row y when its centre y*s + s/2 >= boundary - margin. */
-        const uint32_t xc = x * s + s / 2u;
-        int32_t y = symline_field_y(b, (int32_t)(xc < width ? xc : width - 1u)) -
-                    (int32_t)(margin + s / 2u);
+        const int32_t xc = (int32_t)(x * s + s / 2u < width ? x * s + s / 2u : width - 1u);
+        int32_t y;
+#if defined(__OPTIMIZE_SIZE__)
+        y = symline_field_y(b, xc); /* where the build optimises for size: from the start */
+#else
+        while (i < last && xc > b->v[i + 1u].x) {
+            i++;
+        }
+        if (xc <= b->v[0].x) {
+            y = b->v[0].y;
+        } else if (i >= last) {
+            y = b->v[last].y;
+        } else {
+            y = chord_y(&b->v[i], &b->v[i + 1u], xc);
+        }
+#endif
+        y -= (int32_t)(margin + s / 2u);
         /* The boundary lies at most at the frame's height: y <= 65535. */
         rows[x] = (uint16_t)(y <= 0 ? 0 : (y + (int32_t)s - 1) >> level);
     }
 }
 
-uint32_t symline_i_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start,
-                              uint32_t h)
+uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *pts,
+                              uint32_t *row_start, uint32_t h)
 {
-    uint32_t y, i = 0u, k = 0u;
+    uint32_t y, i = 0u, k = 0u, lo = 0u, hi = h;
+#if !defined(__OPTIMIZE_SIZE__)
+    /* To save time: the rows wholly above the boundary are dropped unseen,
+     * and from its lowest row on the rest stays where it is. */
+    lo = 0xFFFFu;
+    hi = 0u;
+    for (y = 0; y < w; y++) {
+        lo = rows[y] < lo ? rows[y] : lo;
+        hi = rows[y] > hi ? rows[y] : hi;
+    }
+#else
+    (void)w;
+#endif
     for (y = 0; y < h; y++) {
         const uint32_t end = row_start[y + 1u];
+        if (y >= hi && k == i) {
+            return row_start[h]; /* the rest is field and stays where it is */
+        }
         row_start[y] = k;
+        if (y < lo) {
+            i = end; /* the whole row lies above the field */
+        }
         for (; i < end; i++) { /* the points of row y */
             if (y >= rows[pts[i].x]) {
                 /* Field by field (no memcpy call); the offsets fx, fy are

@@ -27,10 +27,10 @@ void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint3
                           uint32_t width, uint32_t margin, uint16_t *rows);
 
 /* Drops the points of a pass's raster list (row_start[0..h], points in grid
- * coordinates) that lie above rows[x] (one entry per grid column); compacts the list in
+ * coordinates) that lie above rows[x] (w entries); compacts the list in
  * place (x, y only: the offsets are set later, symline_i_subpixel()) and
  * returns the number kept. */
-uint32_t symline_i_field_drop(const uint16_t *rows, symline_point *pts, uint32_t *row_start,
-                              uint32_t h);
+uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *pts,
+                              uint32_t *row_start, uint32_t h);
 
 #endif /* SYMLINE_FIELDBOUNDARY_H */

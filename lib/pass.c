@@ -223,10 +223,12 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, const symline_i_pass
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         /* Above the field: nothing to trace. */
         SL_STAGE(FIELD);
-        /* The rows depend on the level alone (a few instructions per grid column). */
-        symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
-                             d->field_rows);
-        *n = symline_i_field_drop(d->field_rows, point_at(d->r, d->npts), row_start, p->h);
+        if (p->axis == SYMLINE_AXIS_HORIZONTAL || d->cfg->axes != SYMLINE_AXES_BOTH) {
+            /* The rows depend on the level alone: once per level (horizontal first). */
+            symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
+                                 d->field_rows);
+        }
+        *n = symline_i_field_drop(d->field_rows, p->w, point_at(d->r, d->npts), row_start, p->h);
     }
     return st;
 }
