@@ -160,30 +160,35 @@ symline_status symline_extrema(const symline_image *img, symline_axis axis, uint
     if (st != SYMLINE_OK) {
         return st;
     }
-    if (axis == SYMLINE_AXIS_VERTICAL) {
-        for (y = 0; y < img->height; y++) {
-            (void)symline_energy_row(img->data + (size_t)y * img->stride, img->width, m, E);
-            (void)symline_extrema_row(E, img->width, map + (size_t)y * map_stride);
-        }
-        return SYMLINE_OK;
-    }
     cd.width = img->width;
     cd.lag = SL_RUN_ANY_LENGTH;
     cd.map = map;
     cd.stride = map_stride;
     cd.ring = img->height;
-    cd.E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * img->width * sizeof(uint32_t));
-    cd.run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
-    cd.left = (int8_t *)symline_i_carve(&cur, end, img->width);
-    if (cd.E3 == NULL || cd.run_start == NULL || cd.left == NULL) {
-        return SYMLINE_ERR_BUFFER;
+    if (axis == SYMLINE_AXIS_HORIZONTAL) {
+        cd.E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * img->width * sizeof(uint32_t));
+        cd.run_start =
+            (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+        cd.left = (int8_t *)symline_i_carve(&cur, end, img->width);
+        if (cd.E3 == NULL || cd.run_start == NULL || cd.left == NULL) {
+            return SYMLINE_ERR_BUFFER;
+        }
     }
     for (y = 0; y < img->height; y++) {
+        if (axis == SYMLINE_AXIS_VERTICAL) { /* along the rows */
+            (void)symline_energy_row(img->data + (size_t)y * img->stride, img->width, m, E);
+            (void)symline_extrema_row(E, img->width, map + (size_t)y * map_stride);
+            continue;
+        }
+        /* down the columns: three rows of energies */
         E = cd.E3 + (size_t)(y % 3u) * img->width;
         (void)symline_energy_across_image(img, y, m, E);
         if (y >= 1u) {
             symline_i_extrema_down(&cd, E, y);
         }
+    }
+    if (axis == SYMLINE_AXIS_VERTICAL) {
+        return SYMLINE_OK;
     }
     /* The last row touches the bottom: never marked. */
     map += (size_t)(img->height - 1u) * map_stride;

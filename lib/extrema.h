@@ -43,14 +43,10 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
 /* Entries decided together by symline_i_extrema_runs() and columns by
  * symline_i_extrema_down(); a plateau sends only its block down the slow
  * path. SL_PLATEAU_SPAN(left): the next block of the `left` still to do;
- * where the build optimises for size, all of them (the blocks only save
- * time on rows with plateaus). */
+ * the blocks only save time (SL_FOR_SPEED; else all of them). */
 #define SL_PLATEAU_BLOCK 64u
-#if defined(__OPTIMIZE_SIZE__)
-#define SL_PLATEAU_SPAN(left) (left)
-#else
-#define SL_PLATEAU_SPAN(left) ((left) < SL_PLATEAU_BLOCK ? (left) : SL_PLATEAU_BLOCK)
-#endif
+#define SL_PLATEAU_SPAN(left)                                                                      \
+    (SL_FOR_SPEED && (left) > SL_PLATEAU_BLOCK ? SL_PLATEAU_BLOCK : (left))
 
 /*
  * Extrema down the columns, one row at a time: the state of a frame's or a

@@ -179,36 +179,27 @@ static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint3
                               uint32_t *mean, uint32_t *tex)
 {
     const uint32_t n = left < f->s ? left : f->s;
-#if !defined(__OPTIMIZE_SIZE__)
-    if (n == 8u) {
+    if (SL_FOR_SPEED && n == 8u) {
         cell_stats_n(p, 8u, mean, tex); /* the usual cell: a constant count, unrolled */
         return;
     }
-#endif
-    cell_stats_n(p, n, mean, tex); /* one loop where the build optimises for size */
+    cell_stats_n(p, n, mean, tex);
 }
 
 /* The cells (mean, texture) of grid row r into out, two bytes per column;
  * a column behind a barrier (col not NULL, gap > gmax), which the scan
- * is done with, is left out to save time (not where the build optimises
- * for size). */
+ * is done with, is left out to save time (SL_FOR_SPEED). */
 static void row_cells(const symline_i_fstate *f, uint32_t r, const symline_i_fcol *col,
                       uint32_t gmax, uint8_t *out)
 {
     const symline_image *img = f->img;
     const uint8_t *row = img->data + (size_t)sample_row(f, img->height, r) * img->stride;
     uint32_t c, x0 = 0u;
-#if defined(__OPTIMIZE_SIZE__)
-    (void)col;
-    (void)gmax;
-#endif
     for (c = 0; c < f->nc; c++, x0 += f->sx, out += 2) {
         uint32_t m, t;
-#if !defined(__OPTIMIZE_SIZE__)
-        if (col != NULL && col[c].gap > gmax) {
+        if (SL_FOR_SPEED && col != NULL && col[c].gap > gmax) {
             continue;
         }
-#endif
         cell_stats(f, row + x0, img->width - x0, &m, &t);
         out[0] = (uint8_t)m;
         out[1] = (uint8_t)t;
@@ -278,19 +269,13 @@ SL_NOINLINE static void scan_columns(const symline_i_fstate *f, symline_i_fcol *
         /* The top row of row r's cells, pixels. */
         const int32_t y = (int32_t)img->height - (int32_t)((r + 1u) * f->s);
         const int32_t top = y < 0 ? 0 : y;
-#if defined(__OPTIMIZE_SIZE__)
-        /* Each row's cells into the band's first row (where the build
-         * optimises for size, the band's too, read again). */
-        const uint8_t *cells = f->band;
-        row_cells(f, r, col, gmax, f->band);
-#else
-        /* The band's cells were kept; above it, each row's into the band's first row. */
+        /* The band's cells were kept (to save time, SL_FOR_SPEED); the other
+         * rows' are read into the band's first row. */
         const uint8_t *cells = f->band + 2u * (size_t)r * f->nc;
-        if (r >= f->nb) {
+        if (!SL_FOR_SPEED || r >= f->nb) {
             cells = f->band;
             row_cells(f, r, col, gmax, f->band);
         }
-#endif
         for (c = 0; c < f->nc; c++, cells += 2) {
             const uint32_t m = cells[0], t = cells[1];
             int32_t v, dm;
@@ -564,32 +549,29 @@ int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
 void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
                           uint32_t width, uint32_t margin, uint16_t *rows)
 {
-    /* symline_field_y() at every grid column's centre. */
-    const uint32_t s = 1u << level;
-    uint32_t x;
-#if !defined(__OPTIMIZE_SIZE__)
-    /* The centres only move right: the chord is found by stepping on from the last one. */
-    const uint32_t last = b->count - 1u;
-    uint32_t i = 0u;
-#endif
+    /* symline_field_y() at every grid column's centre; to save time
+     * (SL_FOR_SPEED), the chord is found by stepping on from the last one:
+     * the centres only move right. */
+    const uint32_t s = 1u << level, last = b->count - 1u;
+    uint32_t x, i = 0u;
     for (x = 0; x < w; x++) {
         /* Keep grid row y when its centre y*s + s/2 >= boundary - margin. */
         const int32_t xc = (int32_t)(x * s + s / 2u < width ? x * s + s / 2u : width - 1u);
         int32_t y;
-#if defined(__OPTIMIZE_SIZE__)
-        y = symline_field_y(b, xc); /* where the build optimises for size: from the start */
-#else
-        while (i < last && xc > b->v[i + 1u].x) {
-            i++;
-        }
-        if (xc <= b->v[0].x) {
-            y = b->v[0].y;
-        } else if (i >= last) {
-            y = b->v[last].y;
+        if (!SL_FOR_SPEED) {
+            y = symline_field_y(b, xc);
         } else {
-            y = chord_y(&b->v[i], &b->v[i + 1u], xc);
+            while (i < last && xc > b->v[i + 1u].x) {
+                i++;
+            }
+            if (xc <= b->v[0].x) {
+                y = b->v[0].y;
+            } else if (i >= last) {
+                y = b->v[last].y;
+            } else {
+                y = chord_y(&b->v[i], &b->v[i + 1u], xc);
+            }
         }
-#endif
         y -= (int32_t)(margin + s / 2u);
         /* The boundary lies at most at the frame's height: y <= 65535. */
         rows[x] = (uint16_t)(y <= 0 ? 0 : (y + (int32_t)s - 1) >> level);
@@ -599,19 +581,14 @@ void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint3
 uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *pts,
                               uint32_t *row_start, uint32_t h)
 {
-    uint32_t y, i = 0u, k = 0u, lo = 0u, hi = h;
-#if !defined(__OPTIMIZE_SIZE__)
-    /* To save time: the rows wholly above the boundary are dropped unseen,
-     * and from its lowest row on the rest stays where it is. */
-    lo = 0xFFFFu;
-    hi = 0u;
-    for (y = 0; y < w; y++) {
+    /* To save time (SL_FOR_SPEED): the rows wholly above the boundary (y < lo)
+     * are dropped unseen, and from its lowest row (hi) on the rest stays
+     * where it is. */
+    uint32_t y, i = 0u, k = 0u, lo = SL_FOR_SPEED ? 0xFFFFu : 0u, hi = SL_FOR_SPEED ? 0u : h;
+    for (y = 0; SL_FOR_SPEED && y < w; y++) {
         lo = rows[y] < lo ? rows[y] : lo;
         hi = rows[y] > hi ? rows[y] : hi;
     }
-#else
-    (void)w;
-#endif
     for (y = 0; y < h; y++) {
         const uint32_t end = row_start[y + 1u];
         if (y >= hi && k == i) {
@@ -622,11 +599,11 @@ uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *p
             i = end; /* the whole row lies above the field */
         }
         for (; i < end; i++) { /* the points of row y */
-            if (y >= rows[pts[i].x]) {
+            if (pts[i].y >= rows[pts[i].x]) {
                 /* Field by field (no memcpy call); the offsets fx, fy are
                  * not set before the sub-pixel stage. */
                 pts[k].x = pts[i].x;
-                pts[k++].y = (uint16_t)y;
+                pts[k++].y = pts[i].y;
             }
         }
     }

@@ -33,24 +33,24 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     /* The width in a local: out (bytes) might alias *p, and a bound read
      * through p after every store keeps the loops from vectorising. */
     const uint32_t w = p->w;
+    const uint32_t span = w * s;
     uint32_t x, d;
     const uint8_t *src = img->data + (size_t)(y * s) * img->stride;
-#if defined(__OPTIMIZE_SIZE__)
-    /* Where the build optimises for size: one block at a time, the same sums
-     * without the accumulator's lane loops. */
-    (void)acc;
-    for (x = 0; x < w; x++, src += s) {
-        const uint8_t *b = src;
-        uint32_t sum = 1u << (shift - 1u), i;
-        for (d = 0; d < s; d++, b += img->stride) {
-            for (i = 0; i < s; i++) {
-                sum += b[i];
+    if (!SL_FOR_SPEED) {
+        /* One block at a time: the same sums without the accumulator's lane
+         * loops, which only save time. */
+        for (x = 0; x < w; x++, src += s) {
+            const uint8_t *b = src;
+            uint32_t sum = 1u << (shift - 1u), i;
+            for (d = 0; d < s; d++, b += img->stride) {
+                for (i = 0; i < s; i++) {
+                    sum += b[i];
+                }
             }
+            out[x] = (uint8_t)(sum >> shift);
         }
-        out[x] = (uint8_t)(sum >> shift);
+        return;
     }
-#else
-    const uint32_t span = w * s;
     for (x = 0; x < span; x++) {
         acc[x] = src[x];
     }
@@ -74,7 +74,6 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
         }
         out[x] = (uint8_t)((sum + (1u << (shift - 1u))) >> shift);
     }
-#endif
 }
 
 /* Rows of the horizontal-axis rings. */
@@ -294,8 +293,7 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     cd->ring = along ? 1u : h_map_rows(p);
     cd->lag = p->lag;
     cd->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * cd->ring);
-    rp->gray = NULL;
-    if (p->level > 0u) {
+    if (p->level > 0u) { /* else the frame's rows are read (ring_row()) */
         rp->gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->gray_rows);
         acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
         if (rp->gray == NULL || acc == NULL) {

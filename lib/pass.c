@@ -223,8 +223,10 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, const symline_i_pass
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         /* Above the field: nothing to trace. */
         SL_STAGE(FIELD);
-        if (p->axis == SYMLINE_AXIS_HORIZONTAL || d->cfg->axes != SYMLINE_AXES_BOTH) {
-            /* The rows depend on the level alone: once per level (horizontal first). */
+        if (!SL_FOR_SPEED || p->axis == SYMLINE_AXIS_HORIZONTAL ||
+            d->cfg->axes != SYMLINE_AXES_BOTH) {
+            /* The rows depend on the level alone: to save time (SL_FOR_SPEED),
+             * once per level (horizontal first). */
             symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
                                  d->field_rows);
         }
