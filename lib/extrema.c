@@ -165,7 +165,7 @@ symline_status symline_extrema(const symline_image *img, symline_axis axis, uint
     cd.map = map;
     cd.stride = map_stride;
     cd.ring = img->height;
-    if (axis == SYMLINE_AXIS_HORIZONTAL) {
+    if (axis != SYMLINE_AXIS_VERTICAL) {
         cd.E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * img->width * sizeof(uint32_t));
         cd.run_start =
             (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));

@@ -584,18 +584,18 @@ uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *p
     /* To save time (SL_FOR_SPEED): the rows wholly above the boundary (y < lo)
      * are dropped unseen, and from its lowest row (hi) on the rest stays
      * where it is. */
-    uint32_t y, i = 0u, k = 0u, lo = SL_FOR_SPEED ? 0xFFFFu : 0u, hi = SL_FOR_SPEED ? 0u : h;
+    uint32_t y, i = 0u, k = 0u, lo = 0xFFFFu, hi = 0u;
     for (y = 0; SL_FOR_SPEED && y < w; y++) {
         lo = rows[y] < lo ? rows[y] : lo;
         hi = rows[y] > hi ? rows[y] : hi;
     }
     for (y = 0; y < h; y++) {
         const uint32_t end = row_start[y + 1u];
-        if (y >= hi && k == i) {
+        if (SL_FOR_SPEED && y >= hi && k == i) {
             return row_start[h]; /* the rest is field and stays where it is */
         }
         row_start[y] = k;
-        if (y < lo) {
+        if (SL_FOR_SPEED && y < lo) {
             i = end; /* the whole row lies above the field */
         }
         for (; i < end; i++) { /* the points of row y */
