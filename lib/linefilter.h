@@ -100,6 +100,32 @@ static inline bool symline_i_linefilter_a_near(const symline_i_linefilter *f, co
 }
 
 /*
+ * The first entry at or after x <= n of map[0..n-1] that is an S point, n when
+ * there is none: how the detector's rows find the S points the filter
+ * decides (most entries are not). symline_i_find_s_c() is the portable
+ * reference; symline_i_find_s() is the build's choice: a SIMD version from
+ * port/ (SYMLINE_PORT_FIND_S, CMake option SYMLINE_SIMD) that tests 16
+ * entries at a time, with the same result, or the reference.
+ * SL_NEXT_S(map, x, n) is the entry a row loop over the S points looks at
+ * after x: the next S point where the SIMD search is built, x + 1 otherwise
+ * (the loop tests each entry itself, which is shorter on scalar cores).
+ */
+static inline uint32_t symline_i_find_s_c(const uint8_t *map, uint32_t x, uint32_t n)
+{
+    while (x < n && map[x] != SYMLINE_MAP_S) {
+        x++;
+    }
+    return x;
+}
+#ifdef SYMLINE_PORT_FIND_S
+uint32_t symline_i_find_s(const uint8_t *map, uint32_t x, uint32_t n);
+#define SL_NEXT_S(map, x, n) symline_i_find_s((map), (x) + 1u, (n))
+#else
+#define symline_i_find_s symline_i_find_s_c
+#define SL_NEXT_S(map, x, n) ((x) + 1u)
+#endif
+
+/*
  * The contrast filter once more, over a whole traced piece q[0..n-1] (grid
  * coordinates at `level`; k: the pass's sample offset across the line in grid
  * px), on the gray values summed along it: true when its sides differ too

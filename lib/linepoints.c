@@ -226,21 +226,7 @@ SL_NOINLINE static void decide(const hring *r, uint32_t y, symline_point *pts, u
         drop_dim_s(&p->filter, c + dk, lo, hi + (size_t)2u * dk, w - 2u * dk, map + dk);
     }
 #endif
-    for (x = 0; x < w; x++) {
-#ifdef SL_ROW_PREFILTER
-        /* Few S points pass the pre-filter: 16 entries at a time past none
-         * (S, 255, is the only map value with bit 0 set). */
-        if ((x & 15u) == 0u && w - x >= 16u) {
-            uint32_t i, any = 0u;
-            for (i = 0; i < 16u; i++) {
-                any |= map[x + i];
-            }
-            if ((any & 1u) == 0u) {
-                x += 15u;
-                continue;
-            }
-        }
-#endif
+    for (x = 0; x < w; x = SL_NEXT_S(map, x, w)) {
         if (map[x] != SYMLINE_MAP_S) {
             continue;
         }

@@ -8,6 +8,27 @@
  */
 #include "symmetry.h"
 
+/*
+ * The row bodies of symline_energy_row() and symline_energy_across(). With a
+ * SIMD version from port/ (SYMLINE_PORT_ENERGY) the portable ones are the
+ * exported references symline_i_energy_*_c() and the SIMD ones are called;
+ * otherwise they are static, called once and inlined, so scalar cores build
+ * exactly the code they had.
+ */
+#ifdef SYMLINE_PORT_ENERGY
+#define SL_ENERGY_REF
+#define SL_ENERGY_ROW_REF symline_i_energy_row_c
+#define SL_ENERGY_ACROSS_REF symline_i_energy_across_c
+#define SL_ENERGY_ROW symline_i_energy_row
+#define SL_ENERGY_ACROSS symline_i_energy_across
+#else
+#define SL_ENERGY_REF static
+#define SL_ENERGY_ROW_REF energy_row
+#define SL_ENERGY_ACROSS_REF energy_across
+#define SL_ENERGY_ROW energy_row
+#define SL_ENERGY_ACROSS energy_across
+#endif
+
 /* 255^2: the squared difference counted for a pair that leaves the image. */
 #define SL_DMAX2 65025u
 
@@ -69,18 +90,10 @@ static void fill(uint32_t *E, uint32_t count, uint32_t value)
     }
 }
 
-symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
+/* The portable body of symline_energy_row(), on checked arguments. */
+SL_ENERGY_REF void SL_ENERGY_ROW_REF(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
 {
     uint32_t i, j, edge;
-    if (q == NULL || E == NULL) {
-        return SYMLINE_ERR_NULL;
-    }
-    if (n == 0u || n > SYMLINE_MAX_DIM) {
-        return SYMLINE_ERR_SIZE;
-    }
-    if (symline_i_check_radius(m) != SYMLINE_OK) {
-        return SYMLINE_ERR_RADIUS;
-    }
     /*
      * Border term: pairs j > min(i, n-1-i) leave the row, so it is nonzero only
      * within m pixels of either end; the middle starts at 0. (The two ends
@@ -98,25 +111,28 @@ symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint
     for (j = 1u; j <= m && 2u * j < n; j++) {
         add_pair(q, q + (size_t)2u * j, m + 1u - j, n - 2u * j, E + j);
     }
-    return SYMLINE_OK;
 }
 
-symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width,
-                                     uint32_t *E)
+symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
 {
-    uint32_t j, border = 0u;
-    if (rows == NULL || E == NULL) {
+    if (q == NULL || E == NULL) {
         return SYMLINE_ERR_NULL;
+    }
+    if (n == 0u || n > SYMLINE_MAX_DIM) {
+        return SYMLINE_ERR_SIZE;
     }
     if (symline_i_check_radius(m) != SYMLINE_OK) {
         return SYMLINE_ERR_RADIUS;
     }
-    if (rows[m] == NULL) {
-        return SYMLINE_ERR_NULL;
-    }
-    if (width == 0u || width > SYMLINE_MAX_DIM) {
-        return SYMLINE_ERR_SIZE;
-    }
+    SL_ENERGY_ROW(q, n, m, E);
+    return SYMLINE_OK;
+}
+
+/* The portable body of symline_energy_across(), on checked arguments. */
+SL_ENERGY_REF void SL_ENERGY_ACROSS_REF(const uint8_t *const *rows, uint32_t m, uint32_t width,
+                                        uint32_t *E)
+{
+    uint32_t j, border = 0u;
     /* A pair with a partner outside the image adds the same 255^2 to every column. */
     for (j = 1u; j <= m; j++) {
         if (rows[m - j] == NULL || rows[m + j] == NULL) {
@@ -129,6 +145,24 @@ symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uin
             add_pair(rows[m - j], rows[m + j], m + 1u - j, width, E);
         }
     }
+}
+
+symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width,
+                                     uint32_t *E)
+{
+    if (rows == NULL || E == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (symline_i_check_radius(m) != SYMLINE_OK) {
+        return SYMLINE_ERR_RADIUS;
+    }
+    if (rows[m] == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    if (width == 0u || width > SYMLINE_MAX_DIM) {
+        return SYMLINE_ERR_SIZE;
+    }
+    SL_ENERGY_ACROSS(rows, m, width, E);
     return SYMLINE_OK;
 }
 

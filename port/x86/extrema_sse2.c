@@ -6,45 +6,59 @@
  * the same output (tests/core/test_extrema_runs.c compares the two).
  *
  * Why: the decision needs only the signs of mid - up and mid - dn, and a
- * saturating pack from 32 to 16 bits keeps sign and zero. So the lanes are
- * packed once and compared 8 at a time; compilers cannot do that from the
- * C (SSE2 has no 32-to-16 truncating pack), which costs them more than half
- * of the loop in shuffles.
+ * saturating pack keeps sign and zero: from 32 to 16 and from 16 to 8 bits.
+ * So 16 entries are decided at once in byte lanes. Compilers cannot do that
+ * from the C (SSE2 has no truncating pack), which costs them more than half
+ * of the loop in shuffles. A row whose length is not a multiple of 16 ends
+ * with its last 16 entries decided once more (the same values again).
  */
 #include <emmintrin.h>
 
 #include "extrema.h"
 
+/* The kinds of 16 entries at x into map + x; flat |= the entries equal to a neighbour. */
+static inline void kinds16(const uint32_t *restrict up, const uint32_t *restrict mid,
+                           const uint32_t *restrict dn, size_t x, uint8_t *restrict map,
+                           __m128i *flat)
+{
+    const __m128i zero = _mm_setzero_si128();
+    __m128i d1[2], d2[2], b1, b2;
+    int h;
+    for (h = 0; h < 2; h++) {
+        const size_t o = x + 8u * (size_t)h;
+        const __m128i m0 = _mm_loadu_si128((const __m128i *)(const void *)(mid + o));
+        const __m128i m1 = _mm_loadu_si128((const __m128i *)(const void *)(mid + o + 4u));
+        /* E < 2^31: the differences are exact 32-bit signed values. */
+        d1[h] = _mm_packs_epi32(
+            _mm_sub_epi32(m0, _mm_loadu_si128((const __m128i *)(const void *)(up + o))),
+            _mm_sub_epi32(m1, _mm_loadu_si128((const __m128i *)(const void *)(up + o + 4u))));
+        d2[h] = _mm_packs_epi32(
+            _mm_sub_epi32(m0, _mm_loadu_si128((const __m128i *)(const void *)(dn + o))),
+            _mm_sub_epi32(m1, _mm_loadu_si128((const __m128i *)(const void *)(dn + o + 4u))));
+    }
+    b1 = _mm_packs_epi16(d1[0], d1[1]);
+    b2 = _mm_packs_epi16(d2[0], d2[1]);
+    *flat = _mm_or_si128(*flat, _mm_or_si128(_mm_cmpeq_epi8(b1, zero), _mm_cmpeq_epi8(b2, zero)));
+    _mm_storeu_si128((__m128i *)(void *)(map + x),
+                     _mm_or_si128(_mm_cmpgt_epi8(zero, _mm_and_si128(b1, b2)), /* both below: S */
+                                  _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi8(b1, zero),
+                                                              _mm_cmpgt_epi8(b2, zero)),
+                                                _mm_set1_epi8((char)SYMLINE_MAP_A))));
+}
+
 uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
                                  const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
 {
-    const __m128i zero = _mm_setzero_si128();
-    const __m128i a_bit = _mm_set1_epi8((char)SYMLINE_MAP_A);
-    __m128i flat = zero;
-    uint32_t x = 0u, tail;
-    for (; x + 16u <= n; x += 16u) {
-        __m128i d1[2], d2[2], s[2], l[2];
-        int h;
-        for (h = 0; h < 2; h++) {
-            const size_t o = x + 8u * (uint32_t)h;
-            const __m128i b0 = _mm_loadu_si128((const __m128i *)(const void *)(mid + o));
-            const __m128i b1 = _mm_loadu_si128((const __m128i *)(const void *)(mid + o + 4u));
-            /* E < 2^31: the differences are exact 32-bit signed values. */
-            d1[h] = _mm_packs_epi32(
-                _mm_sub_epi32(b0, _mm_loadu_si128((const __m128i *)(const void *)(up + o))),
-                _mm_sub_epi32(b1, _mm_loadu_si128((const __m128i *)(const void *)(up + o + 4u))));
-            d2[h] = _mm_packs_epi32(
-                _mm_sub_epi32(b0, _mm_loadu_si128((const __m128i *)(const void *)(dn + o))),
-                _mm_sub_epi32(b1, _mm_loadu_si128((const __m128i *)(const void *)(dn + o + 4u))));
-            s[h] = _mm_srai_epi16(_mm_and_si128(d1[h], d2[h]), 15); /* both below: S */
-            l[h] = _mm_and_si128(_mm_cmpgt_epi16(d1[h], zero), _mm_cmpgt_epi16(d2[h], zero));
-            flat = _mm_or_si128(
-                flat, _mm_or_si128(_mm_cmpeq_epi16(d1[h], zero), _mm_cmpeq_epi16(d2[h], zero)));
-        }
-        _mm_storeu_si128((__m128i *)(void *)(map + x),
-                         _mm_or_si128(_mm_packs_epi16(s[0], s[1]),
-                                      _mm_and_si128(_mm_packs_epi16(l[0], l[1]), a_bit)));
+    __m128i flat = _mm_setzero_si128();
+    size_t x = 0u;
+    if (n < 16u) {
+        return symline_i_extrema_kinds_c(up, mid, dn, n, map);
     }
-    tail = symline_i_extrema_kinds_c(up + x, mid + x, dn + x, n - x, map + x);
-    return tail | (uint32_t)_mm_movemask_epi8(flat);
+    for (; x + 16u <= n; x += 16u) {
+        kinds16(up, mid, dn, x, map, &flat);
+    }
+    if (x < n) {
+        kinds16(up, mid, dn, n - 16u, map, &flat);
+    }
+    return (uint32_t)_mm_movemask_epi8(flat);
 }
