@@ -283,17 +283,17 @@ static bool join_first(merger *m, uint32_t i)
 /* The grid's lists of the slots in it, in their ends' cells. */
 static void grid_build(merger *m)
 {
-    const symline_segment *segs = m->r->segments;
-    uint32_t c, s, e;
+    uint32_t c, node;
     for (c = 0; c < m->cols * m->rows; c++) {
         m->head[c] = SL_NO_NODE;
     }
-    for (s = 0; s < m->indexed; s++) {
-        for (e = 0; e < 2u && segs[s].kind != SL_GONE; e++) {
-            const int32_t x = e ? segs[s].x1 : segs[s].x0, y = e ? segs[s].y1 : segs[s].y0;
-            c = symline_i_cell_at(m->cols, m->rows, x, y);
-            m->next[2u * s + e] = m->head[c];
-            m->head[c] = 2u * s + e;
+    for (node = 0; node < 2u * m->indexed; node++) { /* end node & 1 of slot node / 2 */
+        const symline_segment *g = &m->r->segments[node >> 1];
+        if (g->kind != SL_GONE) {
+            c = symline_i_cell_at(m->cols, m->rows, (node & 1u) ? g->x1 : g->x0,
+                                  (node & 1u) ? g->y1 : g->y0);
+            m->next[node] = m->head[c];
+            m->head[c] = node;
         }
     }
 }
