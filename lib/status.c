@@ -35,8 +35,8 @@ symline_status symline_image_check(const symline_image *img)
     if (img == NULL || img->data == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    if (img->width == 0u || img->height == 0u || img->width > SYMLINE_MAX_DIM ||
-        img->height > SYMLINE_MAX_DIM) {
+    /* 0 wraps: one compare per dimension for 1 .. SYMLINE_MAX_DIM. */
+    if (img->width - 1u >= SYMLINE_MAX_DIM || img->height - 1u >= SYMLINE_MAX_DIM) {
         return SYMLINE_ERR_SIZE;
     }
     if (img->stride < img->width) {
