@@ -51,8 +51,8 @@ void symline_i_pt_to_full(symline_point *q, uint32_t level)
     int32_t x8, y8, x7, y7, x, y;
     symline_i_pt_off(q, level, NULL, &x8, &y8);
     /* Q7 full-resolution coordinates: half the Q8 ones (always even). */
-    x7 = x8 / 2;
-    y7 = y8 / 2;
+    x7 = x8 >> 1; /* exact: x8, y8 are even */
+    y7 = y8 >> 1;
     x = (x7 + 64) >> 7;
     y = (y7 + 64) >> 7;
     q->x = (uint16_t)x;

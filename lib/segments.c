@@ -213,9 +213,9 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
          * the halvings' rounding) keeps the larger eigenvalue lam = (a + c) / 2
          * + r within a + c + 1 < 2^31. */
         const int32_t a32 = (int32_t)a, c32 = (int32_t)c, ac = a32 - c32, b32 = (int32_t)b;
-        const uint32_t lam =
-            (uint32_t)((a32 + c32) / 2) +
-            (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
+        const uint32_t lam = (uint32_t)(a32 + c32) / 2u +
+                             (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac) / 4u +
+                                                         (uint64_t)((int64_t)b32 * b32));
         ux = a32 >= c32 ? (int32_t)(lam - (uint32_t)c32) : b32;
         uy = a32 >= c32 ? b32 : (int32_t)(lam - (uint32_t)a32);
     }
