@@ -166,7 +166,9 @@ SL_NOINLINE static bool pass_nth(symline_i_pass *p, const symline_config *cfg, u
     if (k >= axes * symline_i_level_count(cfg, width, height)) {
         return false;
     }
-    symline_i_pass_setup(p, cfg, symline_i_axis_of(cfg, k % axes), k / axes, width, height);
+    /* axes is 1 or 2: k's axis and level by a mask and a shift. */
+    symline_i_pass_setup(p, cfg, symline_i_axis_of(cfg, k & (axes - 1u)), k >> (axes - 1u), width,
+                         height);
     return true;
 }
 
