@@ -19,8 +19,9 @@
 
 static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
-    const int64_t dx = (int64_t)ax - bx, dy = (int64_t)ay - by;
-    return (uint64_t)(dx * dx + dy * dy);
+    /* Ends within 2^25 Q8 of the frame (merge.h): differences fit 32 bits. */
+    const int32_t dx = ax - bx, dy = ay - by;
+    return (uint64_t)((int64_t)dx * dx + (int64_t)dy * dy);
 }
 
 /* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
