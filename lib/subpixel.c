@@ -43,40 +43,65 @@ typedef struct symline_i_across {
     uint32_t lag; /* a marked run ends at most lag past its marked index */
 } symline_i_across;
 
-/* Gray value at index i + k across the line (inside the grid). */
+/* Gray value at index i + k across the line, or SL_SUB_OUT outside the grid. */
+#define SL_SUB_OUT 0x100u
 static uint32_t gray_at(const symline_i_across *a, int32_t k)
 {
-    return grid_px(a->at + (ptrdiff_t)k * (ptrdiff_t)a->step, a->stride, a->level);
+    /* A negative index wraps to beyond n. */
+    return a->i + (uint32_t)k < a->n
+               ? grid_px(a->at + (ptrdiff_t)k * (ptrdiff_t)a->step, a->stride, a->level)
+               : SL_SUB_OUT;
 }
 
-/* 1 when index i + k is inside the grid. */
-static int inside(const symline_i_across *a, int32_t k)
+/* The squared difference of a pair, SL_SUB_DMAX2 for one that leaves the grid. */
+static uint32_t diff2(uint32_t l, uint32_t r)
 {
-    return (int32_t)a->i + k >= 0 && (int32_t)a->i + k < (int32_t)a->n;
+    const int32_t d = (int32_t)l - (int32_t)r;
+    return ((l | r) & SL_SUB_OUT) != 0u ? SL_SUB_DMAX2 : (uint32_t)(d * d);
+}
+
+/* E (docs/algorithm.md) at i-1, i and i+1, anywhere in the grid, in one
+ * sweep out from i that reads each gray value once (2m+3 of them, no
+ * buffer): l0, l1, l2 hold the values at i-(j-1), i-j, i-(j+1), r0, r1, r2
+ * those at i+(j-1), i+j, i+(j+1). The weights m+1-j come from running sums:
+ * term j is added once for every t = j..m. */
+static void energies3_checked(const symline_i_across *a, uint32_t e[3])
+{
+    uint32_t l0 = gray_at(a, 0), l1 = gray_at(a, -1), r0 = l0, r1 = gray_at(a, 1);
+    uint32_t s0 = 0u, s1 = 0u, s2 = 0u, e0 = 0u, e1 = 0u, e2 = 0u;
+    int32_t j;
+    for (j = 1; j <= (int32_t)a->m; j++) {
+        const uint32_t l2 = gray_at(a, -1 - j), r2 = gray_at(a, 1 + j);
+        s0 += diff2(l2, r0); /* centre i-1: i-1-j, i-1+j */
+        s1 += diff2(l1, r1); /* centre i:   i-j,   i+j */
+        s2 += diff2(l0, r2); /* centre i+1: i+1-j, i+1+j */
+        e0 += s0;
+        e1 += s1;
+        e2 += s2;
+        l0 = l1;
+        l1 = l2;
+        r0 = r1;
+        r1 = r2;
+    }
+    e[0] = e0;
+    e[1] = e1;
+    e[2] = e2;
 }
 
 /* E at index i + k alone (the rare walk along a run of equal E). */
 static uint32_t energy_at(const symline_i_across *a, int32_t k)
 {
-    uint32_t e = 0u, j;
-    for (j = 1u; j <= a->m; j++) {
-        const int32_t sj = (int32_t)j;
-        uint32_t d2 = SL_SUB_DMAX2;
-        if (inside(a, k - sj) && inside(a, k + sj)) {
-            const int32_t d = (int32_t)gray_at(a, k - sj) - (int32_t)gray_at(a, k + sj);
-            d2 = (uint32_t)(d * d);
-        }
-        e += (a->m + 1u - j) * d2;
+    uint32_t e = 0u;
+    int32_t j;
+    for (j = 1; j <= (int32_t)a->m; j++) {
+        e += (a->m + 1u - (uint32_t)j) * diff2(gray_at(a, k - j), gray_at(a, k + j));
     }
     return e;
 }
 
-/* E (docs/algorithm.md) at i-1, i and i+1 inside the grid, in one sweep out
- * from i that reads each gray value once (2m+3 of them, no buffer): l0, l1,
- * l2 hold the values at i-(j-1), i-j, i-(j+1), r0, r1, r2 those at i+(j-1),
- * i+j, i+(j+1). The weights m+1-j come from running sums: term j is added
- * once for every t = j..m. Inline with a constant level 0 (most points, one
- * byte per gray value) and with the pass's level. */
+/* The same sweep away from the border, without the bounds checks, by
+ * pointers. Inline with a constant level 0 (most points, one byte per gray
+ * value) and with the pass's level. */
 static inline void sweep(const symline_i_across *a, uint32_t level, uint32_t e[3])
 {
     /* Pointers walk out from i: pl to i-(j+1), pr to i+(j+1). */
@@ -110,17 +135,18 @@ static inline void sweep(const symline_i_across *a, uint32_t level, uint32_t e[3
     e[2] = e2;
 }
 
-/* E at i-1, i and i+1; near the border term by term. */
+/* E at i-1, i and i+1. The bounds-checked sweep serves every point; the
+ * unchecked inline sweeps away from the border only save time (SL_FOR_SPEED). */
 static void energies3(const symline_i_across *a, uint32_t e[3])
 {
-    if (a->i < a->m + 1u || a->i + a->m + 1u >= a->n) {
-        e[0] = energy_at(a, -1);
-        e[1] = energy_at(a, 0);
-        e[2] = energy_at(a, 1);
-    } else if (a->level == 0u) {
-        sweep(a, 0u, e);
+    if (SL_FOR_SPEED && a->i >= a->m + 1u && a->i + a->m + 1u < a->n) {
+        if (a->level == 0u) {
+            sweep(a, 0u, e);
+        } else {
+            sweep(a, a->level, e);
+        }
     } else {
-        sweep(a, a->level, e);
+        energies3_checked(a, e);
     }
 }
 
