@@ -60,21 +60,21 @@ static uint32_t diff2(uint32_t l, uint32_t r)
     return ((l | r) & SL_SUB_OUT) != 0u ? SL_SUB_DMAX2 : (uint32_t)(d * d);
 }
 
-/* E (docs/algorithm.md) at i-1, i and i+1, anywhere in the grid, in one
- * sweep out from i that reads each gray value once (2m+3 of them, no
- * buffer): l0, l1, l2 hold the values at i-(j-1), i-j, i-(j+1), r0, r1, r2
- * those at i+(j-1), i+j, i+(j+1). The weights m+1-j come from running sums:
- * term j is added once for every t = j..m. */
-static void energies3_checked(const symline_i_across *a, uint32_t e[3])
+/* E (docs/algorithm.md) at i+k-1, i+k and i+k+1, anywhere in the grid, in
+ * one sweep out from i+k that reads each gray value once (2m+3 of them, no
+ * buffer): l0, l1, l2 hold the values at i+k-(j-1), i+k-j, i+k-(j+1), r0, r1,
+ * r2 those at i+k+(j-1), i+k+j, i+k+(j+1). The weights m+1-j come from
+ * running sums: term j is added once for every t = j..m. */
+static void energies3_checked(const symline_i_across *a, int32_t k, uint32_t e[3])
 {
-    uint32_t l0 = gray_at(a, 0), l1 = gray_at(a, -1), r0 = l0, r1 = gray_at(a, 1);
+    uint32_t l0 = gray_at(a, k), l1 = gray_at(a, k - 1), r0 = l0, r1 = gray_at(a, k + 1);
     uint32_t s0 = 0u, s1 = 0u, s2 = 0u, e0 = 0u, e1 = 0u, e2 = 0u;
     int32_t j;
     for (j = 1; j <= (int32_t)a->m; j++) {
-        const uint32_t l2 = gray_at(a, -1 - j), r2 = gray_at(a, 1 + j);
-        s0 += diff2(l2, r0); /* centre i-1: i-1-j, i-1+j */
-        s1 += diff2(l1, r1); /* centre i:   i-j,   i+j */
-        s2 += diff2(l0, r2); /* centre i+1: i+1-j, i+1+j */
+        const uint32_t l2 = gray_at(a, k - 1 - j), r2 = gray_at(a, k + 1 + j);
+        s0 += diff2(l2, r0); /* centre i+k-1: i+k-1-j, i+k-1+j */
+        s1 += diff2(l1, r1); /* centre i+k:   i+k-j,   i+k+j */
+        s2 += diff2(l0, r2); /* centre i+k+1: i+k+1-j, i+k+1+j */
         e0 += s0;
         e1 += s1;
         e2 += s2;
@@ -88,15 +88,13 @@ static void energies3_checked(const symline_i_across *a, uint32_t e[3])
     e[2] = e2;
 }
 
-/* E at index i + k alone (the rare walk along a run of equal E). */
+/* E at index i + k alone (the rare walk along a run of equal E): the middle
+ * one of the sweep's three. */
 static uint32_t energy_at(const symline_i_across *a, int32_t k)
 {
-    uint32_t e = 0u;
-    int32_t j;
-    for (j = 1; j <= (int32_t)a->m; j++) {
-        e += (a->m + 1u - (uint32_t)j) * diff2(gray_at(a, k - j), gray_at(a, k + j));
-    }
-    return e;
+    uint32_t e[3];
+    energies3_checked(a, k, e);
+    return e[1];
 }
 
 /* The same sweep away from the border, without the bounds checks, by
@@ -146,7 +144,7 @@ static void energies3(const symline_i_across *a, uint32_t e[3])
             sweep(a, a->level, e);
         }
     } else {
-        energies3_checked(a, e);
+        energies3_checked(a, 0, e);
     }
 }
 
