@@ -8,13 +8,13 @@
  * anything else, in one string: the i-th follows the i-th NUL. */
 static const char NAMES[] = "ok\0"
                             "NULL pointer\0"
-                            "width or height is 0 or larger than 65535\0"
-                            "stride smaller than the row length\0"
+                            "width or height 0 or > 65535\0"
+                            "stride < row length\0"
                             "radius outside 1..255\0"
                             "unknown axis\0"
-                            "buffer or workspace too small\0"
-                            "index or value out of range\0"
-                            "configuration value out of range\0"
+                            "buffer too small\0"
+                            "value out of range\0"
+                            "config out of range\0"
                             "unknown status";
 
 const char *symline_status_str(symline_status st)
