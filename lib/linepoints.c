@@ -295,8 +295,12 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     cd->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * cd->ring);
     if (p->level > 0u) { /* else the frame's rows are read (ring_row()) */
         rp->gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->gray_rows);
-        acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
-        if (rp->gray == NULL || acc == NULL) {
+        /* The box accumulator serves the lane loops alone (SL_FOR_SPEED); its
+         * room stays in the workspace size either way. */
+        if (SL_FOR_SPEED) {
+            acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+        }
+        if (rp->gray == NULL || (SL_FOR_SPEED && acc == NULL)) {
             return SYMLINE_ERR_BUFFER;
         }
     }
