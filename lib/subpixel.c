@@ -19,10 +19,11 @@ static uint32_t grid_px(const uint8_t *src, size_t stride, uint32_t level)
 {
     const uint32_t s = 1u << level;
     uint32_t sum = 0u, i, j;
-    if (level == 0u) {
+    /* Levels 0 and 1 (most points) on their own only save time (SL_FOR_SPEED). */
+    if (SL_FOR_SPEED && level == 0u) {
         return *src;
     }
-    if (level == 1u) { /* the most common coarse scale, unrolled */
+    if (SL_FOR_SPEED && level == 1u) { /* the most common coarse scale, unrolled */
         return ((uint32_t)src[0] + src[1] + src[stride] + src[stride + 1u] + 2u) >> 2;
     }
     for (j = 0; j < s; j++, src += stride) {
@@ -30,7 +31,8 @@ static uint32_t grid_px(const uint8_t *src, size_t stride, uint32_t level)
             sum += src[i];
         }
     }
-    return (sum + (1u << (2u * level - 1u))) >> (2u * level);
+    /* Half the divisor rounds (0 at level 0). */
+    return (sum + ((s * s) >> 1)) >> (2u * level);
 }
 
 /* Where the energies of one point are taken: the block of grid pixel i across
