@@ -63,7 +63,8 @@ static bool continues(const symline_segment *s, const symline_segment *c, const 
 
 /* Whether point q can lie within tol (Q8, in x and y) of an end of s, by
  * its pixel (half a pixel more): a cheap test before continues(), since
- * every curve is asked for every line. */
+ * every curve is asked for every line. It only saves time (continues()
+ * tests the ends exactly): SL_FOR_SPEED. */
 static bool near_end(const symline_point *q, const symline_segment *s, int32_t tol)
 {
     const int32_t m = tol + (int32_t)SL_Q8_ONE / 2;
@@ -85,7 +86,7 @@ void symline_i_curve_join(symline_result *r)
         for (k = 0; s->kind == SYMLINE_KIND_LINE && !s->merged && k < r->segment_count; k++) {
             const symline_segment *c = &r->segments[k];
             if (c->kind == SYMLINE_KIND_CURVE &&
-                (near_end(&r->points[c->first], s, tol) ||
+                (!SL_FOR_SPEED || near_end(&r->points[c->first], s, tol) ||
                  near_end(&r->points[c->first + c->count - 1u], s, tol)) &&
                 continues(s, c, r->points, tol)) {
                 s->kind = SYMLINE_KIND_CURVE;
