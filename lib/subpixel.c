@@ -90,12 +90,21 @@ static void energies3_checked(const symline_i_across *a, int32_t k, uint32_t e[3
     e[2] = e2;
 }
 
-/* E at index i + k alone (the rare walk along a run of equal E): the middle
- * one of the sweep's three. */
+/* E at index i + k alone (the rare walk along a run of equal E): where the
+ * build optimises for size, the middle one of the sweep's three; else term
+ * by term, which keeps the frames under the stack budget at -O3. */
 static uint32_t energy_at(const symline_i_across *a, int32_t k)
 {
     uint32_t e[3];
-    energies3_checked(a, k, e);
+    if (SL_FOR_SPEED) {
+        int32_t j;
+        e[1] = 0u;
+        for (j = 1; j <= (int32_t)a->m; j++) {
+            e[1] += (a->m + 1u - (uint32_t)j) * diff2(gray_at(a, k - j), gray_at(a, k + j));
+        }
+    } else {
+        energies3_checked(a, k, e);
+    }
     return e[1];
 }
 
@@ -135,18 +144,21 @@ static inline void sweep(const symline_i_across *a, uint32_t level, uint32_t e[3
     e[2] = e2;
 }
 
-/* E at i-1, i and i+1. The bounds-checked sweep serves every point; the
- * unchecked inline sweeps away from the border only save time (SL_FOR_SPEED). */
+/* E at i-1, i and i+1. The bounds-checked sweep serves every point where
+ * the build optimises for size; else the unchecked inline sweeps away from
+ * the border, and near it term by term. */
 static void energies3(const symline_i_across *a, uint32_t e[3])
 {
-    if (SL_FOR_SPEED && a->i >= a->m + 1u && a->i + a->m + 1u < a->n) {
-        if (a->level == 0u) {
-            sweep(a, 0u, e);
-        } else {
-            sweep(a, a->level, e);
-        }
-    } else {
+    if (!SL_FOR_SPEED) {
         energies3_checked(a, 0, e);
+    } else if (a->i < a->m + 1u || a->i + a->m + 1u >= a->n) {
+        e[0] = energy_at(a, -1);
+        e[1] = energy_at(a, 0);
+        e[2] = energy_at(a, 1);
+    } else if (a->level == 0u) {
+        sweep(a, 0u, e);
+    } else {
+        sweep(a, a->level, e);
     }
 }
 
