@@ -63,8 +63,10 @@ static uint32_t border_energy(uint32_t m, uint32_t k)
  * multiply: |d| and w * |d| <= 255 * 255 fit 16 bits, and |d| * (w * |d|) is a
  * widening 16 x 16 -> 32-bit multiply, which SSE2 and NEON have (a 32-bit
  * lane multiply SSE2 has not). Scalar cores (Cortex-M) keep the plain form,
- * which is shorter there. */
-static void add_pair(const uint8_t *a, const uint8_t *b, uint32_t w, uint32_t count, uint32_t *E)
+ * which is shorter there. Out of line: the row and the two across sums share
+ * one copy; the call is per pair offset, not per pixel. */
+SL_NOINLINE static void add_pair(const uint8_t *a, const uint8_t *b, uint32_t w, uint32_t count,
+                                 uint32_t *E)
 {
     uint32_t x;
 #if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__)
@@ -93,20 +95,27 @@ static void fill(uint32_t *E, uint32_t count, uint32_t value)
 /* The portable body of symline_energy_row(), on checked arguments. */
 SL_ENERGY_REF void SL_ENERGY_ROW_REF(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
 {
-    uint32_t i, j, edge;
+    uint32_t i, j;
     /*
      * Border term: pairs j > min(i, n-1-i) leave the row, so it is nonzero only
      * within m pixels of either end; the middle starts at 0. (The two ends
      * overlap when n < 2m; both loops then write the same values.)
      */
+#if defined(__OPTIMIZE_SIZE__)
+    /* One loop over the whole row where the build optimises for size. */
+    for (i = 0; i < n; i++) {
+        E[i] = border_energy(m, edge_distance(i, n));
+    }
+#else
+    const uint32_t edge = (m < n) ? m : n;
     fill(E, n, 0u);
-    edge = (m < n) ? m : n;
     for (i = 0; i < edge; i++) {
         E[i] = border_energy(m, edge_distance(i, n));
     }
     for (i = n - edge; i < n; i++) {
         E[i] = border_energy(m, edge_distance(i, n));
     }
+#endif
     /* In-image pairs: for offset j, indices j .. n-1-j have both partners. */
     for (j = 1u; j <= m && 2u * j < n; j++) {
         add_pair(q, q + (size_t)2u * j, m + 1u - j, n - 2u * j, E + j);
@@ -128,23 +137,57 @@ symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint
     return SYMLINE_OK;
 }
 
+/*
+ * The rows a and b of pair j (1..m) of a sum across: from the window
+ * rows[0..2m] (NULL outside the image), or, rows NULL, from the frame around
+ * row c (stride s), whose partners lie within jmax rows. False when a partner
+ * lies outside the image.
+ */
+static bool pair_rows(const uint8_t *const *rows, const uint8_t *c, size_t s, uint32_t jmax,
+                      uint32_t m, uint32_t j, const uint8_t **a, const uint8_t **b)
+{
+    if (rows != NULL) {
+        *a = rows[m - j];
+        *b = rows[m + j];
+        return *a != NULL && *b != NULL;
+    }
+    if (j > jmax) {
+        return false;
+    }
+    *a = c - (size_t)j * s;
+    *b = c + (size_t)j * s;
+    return true;
+}
+
+/* The sum across, with the rows as pair_rows() takes them: the body of
+ * symline_energy_across() and symline_energy_across_image(). */
+static void across(const uint8_t *const *rows, const uint8_t *c, size_t s, uint32_t jmax,
+                   uint32_t m, uint32_t width, uint32_t *E)
+{
+    uint32_t j, x, border = 0u;
+    const uint8_t *a, *b;
+    fill(E, width, 0u);
+    for (j = 1u; j <= m; j++) {
+        if (pair_rows(rows, c, s, jmax, m, j, &a, &b)) {
+            add_pair(a, b, m + 1u - j, width, E);
+        } else {
+            border += (m + 1u - j) * SL_DMAX2;
+        }
+    }
+    /* A pair with a partner outside the image adds the same 255^2 to every
+     * column; only rows within m of the top or bottom have such pairs. */
+    if (border != 0u) {
+        for (x = 0; x < width; x++) {
+            E[x] += border;
+        }
+    }
+}
+
 /* The portable body of symline_energy_across(), on checked arguments. */
 SL_ENERGY_REF void SL_ENERGY_ACROSS_REF(const uint8_t *const *rows, uint32_t m, uint32_t width,
                                         uint32_t *E)
 {
-    uint32_t j, border = 0u;
-    /* A pair with a partner outside the image adds the same 255^2 to every column. */
-    for (j = 1u; j <= m; j++) {
-        if (rows[m - j] == NULL || rows[m + j] == NULL) {
-            border += (m + 1u - j) * SL_DMAX2;
-        }
-    }
-    fill(E, width, border);
-    for (j = 1u; j <= m; j++) {
-        if (rows[m - j] != NULL && rows[m + j] != NULL) {
-            add_pair(rows[m - j], rows[m + j], m + 1u - j, width, E);
-        }
-    }
+    across(rows, NULL, 0u, 0u, m, width, E);
 }
 
 symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width,
@@ -169,7 +212,6 @@ symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uin
 symline_status symline_energy_across_image(const symline_image *img, uint32_t y, uint32_t m,
                                            uint32_t *E)
 {
-    uint32_t j;
     symline_status st = symline_image_check(img);
     if (st != SYMLINE_OK) {
         return st;
@@ -186,11 +228,8 @@ symline_status symline_energy_across_image(const symline_image *img, uint32_t y,
     /* Same sum as symline_energy_across(), with the rows taken from the frame
      * directly so no pointer window (up to 511 entries) has to live on the stack:
      * the pairs j > edge_distance(y) leave the frame. */
-    fill(E, img->width, border_energy(m, edge_distance(y, img->height)));
-    for (j = 1u; j <= m && j <= y && y + j < img->height; j++) {
-        add_pair(img->data + (size_t)(y - j) * img->stride,
-                 img->data + (size_t)(y + j) * img->stride, m + 1u - j, img->width, E);
-    }
+    across(NULL, img->data + (size_t)y * img->stride, img->stride, edge_distance(y, img->height), m,
+           img->width, E);
     return SYMLINE_OK;
 }
 
@@ -247,27 +286,33 @@ static symline_status energy_of_row(const symline_image *img, symline_axis axis,
     return symline_energy_across_image(img, y, m, E);
 }
 
-static symline_status check_frame(const symline_image *img, symline_axis axis, uint32_t m)
+/* The checks every whole-frame call starts with: the image, axis and radius,
+ * the caller's pointers a and b, and an output plane of height rows of width
+ * elements (out_stride, out_len). */
+static symline_status check_frame(const symline_image *img, symline_axis axis, uint32_t m,
+                                  const void *a, const void *b, uint32_t out_stride, size_t out_len)
 {
     symline_status st = symline_image_check(img);
     if (st == SYMLINE_OK) {
         st = symline_i_check_axis(axis);
     }
-    return (st == SYMLINE_OK) ? symline_i_check_radius(m) : st;
+    if (st == SYMLINE_OK) {
+        st = symline_i_check_radius(m);
+    }
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (a == NULL || b == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    return symline_i_check_plane(img->width, img->height, out_stride, out_len);
 }
 
 symline_status symline_i_frame_begin(const symline_image *img, symline_axis axis, uint32_t m,
                                      const void *out, uint32_t out_stride, size_t out_len, void *ws,
                                      size_t ws_size, uint8_t **cur, uint8_t **end, uint32_t **E)
 {
-    symline_status st = check_frame(img, axis, m);
-    if (st != SYMLINE_OK) {
-        return st;
-    }
-    if (out == NULL || ws == NULL) {
-        return SYMLINE_ERR_NULL;
-    }
-    st = symline_i_check_plane(img->width, img->height, out_stride, out_len);
+    const symline_status st = check_frame(img, axis, m, out, ws, out_stride, out_len);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -281,18 +326,8 @@ symline_status symline_energy_frame(const symline_image *img, symline_axis axis,
                                     uint32_t *E, uint32_t e_stride, size_t e_len)
 {
     uint32_t y;
-    symline_status st = check_frame(img, axis, m);
-    if (st != SYMLINE_OK) {
-        return st;
-    }
-    if (E == NULL) {
-        return SYMLINE_ERR_NULL;
-    }
-    st = symline_i_check_plane(img->width, img->height, e_stride, e_len);
-    if (st != SYMLINE_OK) {
-        return st;
-    }
-    for (y = 0; y < img->height && st == SYMLINE_OK; y++) {
+    symline_status st = check_frame(img, axis, m, E, E, e_stride, e_len);
+    for (y = 0; st == SYMLINE_OK && y < img->height; y++) {
         st = energy_of_row(img, axis, m, y, E + (size_t)y * e_stride);
     }
     return st;
