@@ -164,7 +164,7 @@ static bool pair_rows(const uint8_t *const *rows, const uint8_t *c, size_t s, ui
 static void across(const uint8_t *const *rows, const uint8_t *c, size_t s, uint32_t jmax,
                    uint32_t m, uint32_t width, uint32_t *E)
 {
-    uint32_t j, x, border = 0u;
+    uint32_t j, border = 0u;
     const uint8_t *a, *b;
     fill(E, width, 0u);
     for (j = 1u; j <= m; j++) {
@@ -177,6 +177,7 @@ static void across(const uint8_t *const *rows, const uint8_t *c, size_t s, uint3
     /* A pair with a partner outside the image adds the same 255^2 to every
      * column; only rows within m of the top or bottom have such pairs. */
     if (border != 0u) {
+        uint32_t x;
         for (x = 0; x < width; x++) {
             E[x] += border;
         }
