@@ -40,7 +40,7 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
                                                uint32_t *hist, symline_i_frame_stats *st)
 {
     const size_t step = (size_t)img->stride * SL_STATS_STEP;
-    uint32_t x, i, n = 0u, half, acc, med, mad;
+    uint32_t x, i, n = 0u, half, acc, med, mad, lo, hi;
     for (i = 0; i < 256u; i++) {
         hist[i] = 0u;
     }
@@ -71,9 +71,13 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
     /* Median absolute deviation: widen a window around the median until it
      * holds half of the samples. */
     acc = hist[med];
-    for (mad = 0u; mad < 255u && acc < half;) {
-        mad++;
-        acc += (med >= mad ? hist[med - mad] : 0u) + (med + mad <= 255u ? hist[med + mad] : 0u);
+    for (mad = 0u, lo = med, hi = med; acc < half && mad < 255u; mad++) {
+        if (lo > 0u) {
+            acc += hist[--lo];
+        }
+        if (hi < 255u) {
+            acc += hist[++hi];
+        }
     }
     st->mean = med;
     /* sigma = 1.4826 MAD for normal noise, Q4: MAD * 23.7. */
@@ -93,7 +97,7 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
 /* mean + s10 / 10 sigma, clamped to a gray value. |s10| <= 110 (a checked
  * config, plus SL_SIDE_FULL_RES_SIGMA10) and sigma_q4 <= 255 * 23.72: the
  * product fits 32 bits. */
-SL_NOINLINE static uint32_t sigma_gray(uint32_t mean, int32_t s10, uint32_t sigma_q4)
+static uint32_t sigma_gray(uint32_t mean, int32_t s10, uint32_t sigma_q4)
 {
     const int32_t t = (int32_t)mean + s10 * (int32_t)sigma_q4 / SL_SIGMA10_Q4_DIV;
     return t < 0 ? 0u : (t > 255 ? 255u : (uint32_t)t);
