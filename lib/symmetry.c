@@ -32,30 +32,26 @@
 /* 255^2: the squared difference counted for a pair that leaves the image. */
 #define SL_DMAX2 65025u
 
+/* sum_{j=1..t} j * 255^2: the energy of t pairs of weights 1..t that differ
+ * by 255 (a pair that leaves the image counts as such): Emax for t = m, and
+ * what the pairs beyond the border add at m - t pixels from the nearer end. */
+static uint32_t border_energy(uint32_t t)
+{
+    return SL_DMAX2 * (t * (t + 1u) / 2u);
+}
+
 uint32_t symline_emax(uint32_t m)
 {
     if (symline_i_check_radius(m) != SYMLINE_OK) {
         return 0u;
     }
-    return SL_DMAX2 * (m * (m + 1u) / 2u);
+    return border_energy(m);
 }
 
 /* Distance of index i to the nearer end of 0..n-1. */
 static uint32_t edge_distance(uint32_t i, uint32_t n)
 {
     return i < n - 1u - i ? i : n - 1u - i;
-}
-
-/* sum_{j=k+1..m} (m+1-j) * 255^2: what the pairs beyond the border add at
- * k pixels from the nearer end. */
-static uint32_t border_energy(uint32_t m, uint32_t k)
-{
-    uint32_t t;
-    if (k >= m) {
-        return 0u;
-    }
-    t = m - k;
-    return SL_DMAX2 * (t * (t + 1u) / 2u);
 }
 
 /* E[x] += w * (a[x] - b[x])^2 over a row; the vectorised hot loop. Where the
@@ -98,24 +94,13 @@ SL_ENERGY_REF void SL_ENERGY_ROW_REF(const uint8_t *q, uint32_t n, uint32_t m, u
     uint32_t i, j;
     /*
      * Border term: pairs j > min(i, n-1-i) leave the row, so it is nonzero only
-     * within m pixels of either end; the middle starts at 0. (The two ends
-     * overlap when n < 2m; both loops then write the same values.)
+     * within m pixels of either end; the middle starts at 0. Index i and its
+     * mirror n-1-i share the distance i up to the middle (2i < n).
      */
-#if defined(__OPTIMIZE_SIZE__)
-    /* One loop over the whole row where the build optimises for size. */
-    for (i = 0; i < n; i++) {
-        E[i] = border_energy(m, edge_distance(i, n));
-    }
-#else
-    const uint32_t edge = (m < n) ? m : n;
     fill(E, n, 0u);
-    for (i = 0; i < edge; i++) {
-        E[i] = border_energy(m, edge_distance(i, n));
+    for (i = 0; i < m && 2u * i < n; i++) {
+        E[i] = E[n - 1u - i] = border_energy(m - i);
     }
-    for (i = n - edge; i < n; i++) {
-        E[i] = border_energy(m, edge_distance(i, n));
-    }
-#endif
     /* In-image pairs: for offset j, indices j .. n-1-j have both partners. */
     for (j = 1u; j <= m && 2u * j < n; j++) {
         add_pair(q, q + (size_t)2u * j, m + 1u - j, n - 2u * j, E + j);
