@@ -59,14 +59,15 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
     if (n == 0u) {
         return;
     }
+    /* Both scans stop within the histogram: its entries sum to n >= half. */
     half = (n + 1u) / 2u;
-    for (med = 0u, acc = 0u; med < 255u && acc + hist[med] < half; med++) {
+    for (med = 0u, acc = 0u; acc + hist[med] < half; med++) {
         acc += hist[med];
     }
     /* Median absolute deviation: widen a window around the median until it
      * holds half of the samples. */
     acc = hist[med];
-    for (mad = 0u, lo = med, hi = med; acc < half && mad < 255u; mad++) {
+    for (mad = 0u, lo = med, hi = med; acc < half; mad++) {
         if (lo > 0u) {
             acc += hist[--lo];
         }
