@@ -23,6 +23,16 @@
 #define SL_NOINLINE
 #endif
 
+/* 1 where the build optimises for speed, 0 where it optimises for size
+ * (-Os, the firmware builds): code that only saves time (shortcuts, unrolled
+ * or lane loops) is written as `if (SL_FOR_SPEED ...)` and folds away
+ * there. The results are the same either way. */
+#if defined(__OPTIMIZE_SIZE__)
+#define SL_FOR_SPEED 0
+#else
+#define SL_FOR_SPEED 1
+#endif
+
 /* Copies a small routine into each caller even at -Os, where a constant
  * argument then folds away (extrema.c). */
 #if defined(__GNUC__)

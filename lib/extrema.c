@@ -44,50 +44,33 @@ uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *re
 /*
  * The run rule over a row. Every entry with unequal neighbours is decided in
  * blocks by symline_i_extrema_kinds(); what is left are the runs of two or
- * more equal energies, looked for only in blocks that have some: run
- * [a, e-1] is marked at its middle unless it touches either end or is longer
- * than the plateau limit allows. A middle beyond the current block waits
- * (pend) until that block's entries are written.
+ * more equal energies, looked for only in blocks that have some. A run is
+ * decided where it ends, at i: it began at a (the last entry that differs
+ * from its left neighbour; a run lies in blocks that all have equal pairs,
+ * so a was seen), and is marked at its middle, which no later block
+ * overwrites, unless it touches either end or is longer than the plateau
+ * limit allows.
  */
 void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
 {
-    uint32_t x0, x1, i = 1u, pend = 0u;
-    uint8_t pkind = SYMLINE_MAP_NONE;
+    uint32_t x0, x1, i, a = 0u;
     map[0] = SYMLINE_MAP_NONE;
     map[n - 1u] = SYMLINE_MAP_NONE;
     for (x0 = 1u; x0 + 1u < n; x0 = x1) {
-        x1 = (n - 1u - x0 < SL_PLATEAU_BLOCK) ? n - 1u : x0 + SL_PLATEAU_BLOCK;
-        const uint32_t flat =
-            symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0);
-        if (pend != 0u && pend < x1) {
-            map[pend] = pkind;
-            pend = 0u;
-        }
-        if (flat == 0u) {
+        x1 = x0 + SL_PLATEAU_SPAN(n - 1u - x0);
+        if (symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0) == 0u) {
             continue;
         }
-        /* Pairs (i-1, i), i <= x1, where a run begins at i-1. */
-        for (i = (i > x0) ? i : x0; i <= x1; i++) {
-            uint32_t a = i - 1u, e = i;
-            if (E[i] != E[a] || (a >= 1u && E[a - 1u] == E[a])) {
-                continue;
-            }
-            while (e < n && E[e] == E[a]) {
-                e++;
-            }
-            i = e;
-            if (a >= 1u && e < n && e - 1u - (a + e - 1u) / 2u <= lag) {
-                const uint32_t mid = (a + e - 1u) / 2u;
-                const uint8_t kind = (E[a - 1u] > E[a] && E[e] > E[a]) ? (uint8_t)SYMLINE_MAP_S
-                                     : (E[a - 1u] < E[a] && E[e] < E[a])
-                                         ? (uint8_t)SYMLINE_MAP_A
-                                         : (uint8_t)SYMLINE_MAP_NONE;
-                if (mid < x1) {
-                    map[mid] = kind;
-                } else {
-                    pend = mid;
-                    pkind = kind;
-                }
+        for (i = x0; i < x1; i++) { /* i + 1 < n */
+            const uint32_t v = E[i];
+            if (v != E[i - 1u]) {
+                a = i;
+            } else if (E[i + 1u] != v && a >= 1u && i - (a + i) / 2u <= lag) {
+                /* Neither neighbour equals v: larger on both sides S, smaller A. */
+                const bool left_up = E[a - 1u] > v, right_up = E[i + 1u] > v;
+                map[(a + i) / 2u] = left_up != right_up ? (uint8_t)SYMLINE_MAP_NONE
+                                    : left_up           ? (uint8_t)SYMLINE_MAP_S
+                                                        : (uint8_t)SYMLINE_MAP_A;
             }
         }
     }
@@ -126,10 +109,10 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
     const uint32_t *mid = cd->E3 + (size_t)((t + 2u) % 3u) * w;
     const uint32_t *up = (t >= 2u) ? cd->E3 + (size_t)((t + 1u) % 3u) * w : mid;
     uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
-    uint32_t i;
+    uint32_t i, nb;
     /* In blocks, so that a plateau sends only its block down the slow path. */
-    for (i = 0; i < w; i += SL_PLATEAU_BLOCK) {
-        const uint32_t nb = (w - i < SL_PLATEAU_BLOCK) ? w - i : SL_PLATEAU_BLOCK;
+    for (i = 0; i < w; i += nb) {
+        nb = SL_PLATEAU_SPAN(w - i);
         if (symline_i_extrema_kinds(up + i, mid + i, E + i, nb, mr + i) != 0u) {
             plateaus_down(cd, up, mid, E, t, i, i + nb);
         }
@@ -177,30 +160,35 @@ symline_status symline_extrema(const symline_image *img, symline_axis axis, uint
     if (st != SYMLINE_OK) {
         return st;
     }
-    if (axis == SYMLINE_AXIS_VERTICAL) {
-        for (y = 0; y < img->height; y++) {
-            (void)symline_energy_row(img->data + (size_t)y * img->stride, img->width, m, E);
-            (void)symline_extrema_row(E, img->width, map + (size_t)y * map_stride);
-        }
-        return SYMLINE_OK;
-    }
     cd.width = img->width;
     cd.lag = SL_RUN_ANY_LENGTH;
     cd.map = map;
     cd.stride = map_stride;
     cd.ring = img->height;
-    cd.E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * img->width * sizeof(uint32_t));
-    cd.run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
-    cd.left = (int8_t *)symline_i_carve(&cur, end, img->width);
-    if (cd.E3 == NULL || cd.run_start == NULL || cd.left == NULL) {
-        return SYMLINE_ERR_BUFFER;
+    if (axis != SYMLINE_AXIS_VERTICAL) {
+        cd.E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * img->width * sizeof(uint32_t));
+        cd.run_start =
+            (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+        cd.left = (int8_t *)symline_i_carve(&cur, end, img->width);
+        if (cd.E3 == NULL || cd.run_start == NULL || cd.left == NULL) {
+            return SYMLINE_ERR_BUFFER;
+        }
     }
     for (y = 0; y < img->height; y++) {
+        if (axis == SYMLINE_AXIS_VERTICAL) { /* along the rows */
+            (void)symline_energy_row(img->data + (size_t)y * img->stride, img->width, m, E);
+            (void)symline_extrema_row(E, img->width, map + (size_t)y * map_stride);
+            continue;
+        }
+        /* down the columns: three rows of energies */
         E = cd.E3 + (size_t)(y % 3u) * img->width;
         (void)symline_energy_across_image(img, y, m, E);
         if (y >= 1u) {
             symline_i_extrema_down(&cd, E, y);
         }
+    }
+    if (axis == SYMLINE_AXIS_VERTICAL) {
+        return SYMLINE_OK;
     }
     /* The last row touches the bottom: never marked. */
     map += (size_t)(img->height - 1u) * map_stride;

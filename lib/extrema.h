@@ -40,9 +40,13 @@ uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *re
  */
 void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map);
 
-/* Columns decided together by symline_i_extrema_down(); a plateau sends its
- * block down the slow path. */
+/* Entries decided together by symline_i_extrema_runs() and columns by
+ * symline_i_extrema_down(); a plateau sends only its block down the slow
+ * path. SL_PLATEAU_SPAN(left): the next block of the `left` still to do;
+ * the blocks only save time (SL_FOR_SPEED; else all of them). */
 #define SL_PLATEAU_BLOCK 64u
+#define SL_PLATEAU_SPAN(left)                                                                      \
+    (SL_FOR_SPEED && (left) > SL_PLATEAU_BLOCK ? SL_PLATEAU_BLOCK : (left))
 
 /*
  * Extrema down the columns, one row at a time: the state of a frame's or a

@@ -69,21 +69,11 @@ bool symline_i_field_config_ok(const symline_field_config *fc)
            fc->col_cells >= 1u && fc->col_cells <= 4u && fc->edge_slope_pct <= 10000u;
 }
 
-uint32_t symline_i_field_cell(uint32_t width, const symline_field_config *fc)
-{
-    /* A cell's texture needs a few neighbour differences to be stable: at
-     * least 8 px, 16 px from 1024 px wide on. */
-    if (fc->cell != 0u) {
-        return fc->cell;
-    }
-    return width >= 1024u ? 16u : 8u;
-}
-
 /* Per grid column: scan state, then the column top (pixels), then the hull. */
 typedef struct symline_i_fcol {
     int32_t cur;  /* score of the run ending at the current row */
     int32_t best; /* best score seen */
-    int32_t top;  /* its top row (grid rows from the bottom), -1 = none */
+    int32_t top;  /* its top row, pixels (the frame's height: no carpet) */
     int32_t ema;  /* running mean of the column's carpet cells, Q4 */
     uint32_t gap; /* non-carpet cells since the last carpet cell */
 } symline_i_fcol;
@@ -97,6 +87,8 @@ typedef struct symline_i_fstate {
     uint32_t hm[SL_FIELD_BINS], ht[SL_FIELD_BINS];
     uint32_t nb;   /* grid rows of the model's band */
     uint8_t *band; /* their cells' means and textures, read once */
+    const symline_field_config *fc;
+    const symline_image *img;
 } symline_i_fstate;
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 640 bytes for this state and
@@ -109,25 +101,37 @@ static size_t cols_bytes(uint32_t nc)
     return symline_i_align_up((size_t)nc * sizeof(symline_i_fcol));
 }
 
-/* Grid rows of the carpet model's band. */
-SL_NOINLINE static uint32_t band_rows(uint32_t nr, const symline_field_config *fc)
+/* The grid of a width x height frame under fc, into f's sizes unless f is
+ * NULL; returns the workspace bytes it needs. */
+SL_NOINLINE static size_t field_grid(uint32_t width, uint32_t height,
+                                     const symline_field_config *fc, symline_i_fstate *f)
 {
-    const uint32_t nb = (nr * fc->band_pct + 99u) / 100u; /* nr <= 32768: 32 bits */
-    return nb < 1u ? 1u : nb;
+    /* A cell's texture needs a few neighbour differences to be stable: at
+     * least 8 px, 16 px from 1024 px wide on. */
+    const uint32_t s = fc->cell != 0u ? fc->cell : width >= 1024u ? 16u : 8u;
+    const uint32_t sx = s * fc->col_cells;
+    const uint32_t nc = (width + sx - 1u) / sx; /* <= 65535 */
+    const uint32_t nr = (height + s - 1u) / s;
+    /* Grid rows of the carpet model's band; nr <= 32768: 32 bits. */
+    const uint32_t nb0 = (nr * fc->band_pct + 99u) / 100u, nb = nb0 < 1u ? 1u : nb0;
+    if (f != NULL) {
+        f->s = s;
+        f->sx = sx;
+        f->nc = nc;
+        f->nr = nr;
+        f->nb = nb;
+    }
+    return symline_i_align_up(sizeof(symline_i_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
+           (size_t)3u * SL_ALIGN;
 }
 
 size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symline_field_config *fc)
 {
-    uint32_t s, nc, nb;
     if (fc == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
         height > SYMLINE_MAX_DIM || !symline_i_field_config_ok(fc)) {
         return 0u;
     }
-    s = symline_i_field_cell(width, fc);
-    nc = (width + s * fc->col_cells - 1u) / (s * fc->col_cells); /* <= 65535 */
-    nb = band_rows((height + s - 1u) / s, fc);
-    return symline_i_align_up(sizeof(symline_i_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
-           (size_t)3u * SL_ALIGN;
+    return field_grid(width, height, fc, NULL);
 }
 
 /* Middle row of grid row r (0 = the lowest). */
@@ -175,56 +179,54 @@ static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint3
                               uint32_t *mean, uint32_t *tex)
 {
     const uint32_t n = left < f->s ? left : f->s;
-#if !defined(__OPTIMIZE_SIZE__)
-    if (n == 8u) {
+    if (SL_FOR_SPEED && n == 8u) {
         cell_stats_n(p, 8u, mean, tex); /* the usual cell: a constant count, unrolled */
         return;
     }
-#endif
-    cell_stats_n(p, n, mean, tex); /* one loop where the build optimises for size */
+    cell_stats_n(p, n, mean, tex);
 }
 
 /* The cells (mean, texture) of grid row r into out, two bytes per column;
- * a column behind a barrier (col not NULL, gap > gmax) is left out. */
-static void row_cells(const symline_image *img, const symline_i_fstate *f, uint32_t r,
-                      const symline_i_fcol *col, uint32_t gmax, uint8_t *out)
+ * a column behind a barrier (col not NULL, gap > gmax), which the scan
+ * is done with, is left out to save time (SL_FOR_SPEED). */
+static void row_cells(const symline_i_fstate *f, uint32_t r, const symline_i_fcol *col,
+                      uint32_t gmax, uint8_t *out)
 {
+    const symline_image *img = f->img;
     const uint8_t *row = img->data + (size_t)sample_row(f, img->height, r) * img->stride;
     uint32_t c, x0 = 0u;
     for (c = 0; c < f->nc; c++, x0 += f->sx, out += 2) {
-        if (col == NULL || col[c].gap <= gmax) {
-            uint32_t m, t;
-            cell_stats(f, row + x0, img->width - x0, &m, &t);
-            out[0] = (uint8_t)m;
-            out[1] = (uint8_t)t;
+        uint32_t m, t;
+        if (SL_FOR_SPEED && col != NULL && col[c].gap > gmax) {
+            continue;
         }
+        cell_stats(f, row + x0, img->width - x0, &m, &t);
+        out[0] = (uint8_t)m;
+        out[1] = (uint8_t)t;
     }
 }
 
 /* Smallest bin value v with at least half the count at or below it. */
 SL_NOINLINE static uint32_t hist_median(const uint32_t *hist, uint32_t total)
 {
-    uint32_t i, acc = 0u;
-    for (i = 0; i < SL_FIELD_BINS; i++) {
-        acc += hist[i];
-        if (2u * acc >= total) {
-            return i;
-        }
+    uint32_t i = 0u, acc = hist[0];
+    while (2u * acc < total) { /* total is the sum of the bins: ends by the last */
+        acc += hist[++i];
     }
-    return SL_FIELD_BINS - 1u;
+    return i;
 }
 
 /* The carpet model from the lowest band of grid rows. */
-SL_NOINLINE static void carpet_model(const symline_image *img, const symline_field_config *fc,
-                                     symline_i_fstate *f, symline_field_boundary *out)
+SL_NOINLINE static void carpet_model(symline_i_fstate *f, symline_field_boundary *out)
 {
+    const symline_field_config *fc = f->fc;
     uint32_t r, i, total = 0u, tb;
     for (i = 0; i < SL_FIELD_BINS; i++) {
         f->hm[i] = 0u;
         f->ht[i] = 0u;
     }
     for (r = 0; r < f->nb; r++) {
-        row_cells(img, f, r, NULL, 0u, f->band + 2u * (size_t)r * f->nc); /* kept for the scan */
+        row_cells(f, r, NULL, 0u, f->band + 2u * (size_t)r * f->nc); /* kept for the scan */
     }
     for (i = 0; i < f->nb * f->nc; i++) {
         const uint32_t m = f->band[2u * (size_t)i], t = f->band[2u * (size_t)i + 1u];
@@ -234,12 +236,8 @@ SL_NOINLINE static void carpet_model(const symline_image *img, const symline_fie
             total++;
         }
     }
-    if (total == 0u) {
-        /* Only black at the bottom: take it as the carpet (a dark frame). */
-        f->hm[0] = 1u;
-        f->ht[0] = 1u;
-        total = 1u;
-    }
+    /* Only black at the bottom (total 0): both medians are bin 0, the
+     * carpet is taken to be that dark. */
     tb = 2u * hist_median(f->ht, total) + 1u;
     f->mid = 4u * hist_median(f->hm, total) + 2u;
     f->lo = f->mid > fc->mean_tol ? f->mid - fc->mean_tol : 0u;
@@ -247,14 +245,15 @@ SL_NOINLINE static void carpet_model(const symline_image *img, const symline_fie
     out->carpet_mean = (uint8_t)f->mid;
     f->tex_lo = tb * fc->tex_lo_pct / 100u;
     f->tex_hi = tb * fc->tex_hi_pct / 100u + 4u;
-    out->carpet_tex = (uint8_t)(tb > 255u ? 255u : tb);
+    out->carpet_tex = (uint8_t)tb; /* <= 2 * (SL_FIELD_BINS - 1) + 1 */
 }
 
 /* Upward scan of every column: the best-scoring run of carpet; col[].top
  * becomes its top row in pixels (the frame's height: no carpet). */
-SL_NOINLINE static void scan_columns(const symline_image *img, const symline_field_config *fc,
-                                     const symline_i_fstate *f, symline_i_fcol *col)
+SL_NOINLINE static void scan_columns(const symline_i_fstate *f, symline_i_fcol *col)
 {
+    const symline_image *img = f->img;
+    const symline_field_config *fc = f->fc;
     uint32_t r, c;
     const int32_t miss = -(int32_t)fc->miss_cost;
     const int32_t lt = (int32_t)(fc->local_tol << 4);
@@ -262,16 +261,20 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
     for (c = 0; c < f->nc; c++) {
         col[c].cur = 0;
         col[c].best = 0;
-        col[c].top = -1;
+        col[c].top = (int32_t)img->height; /* no carpet: the bottom */
         col[c].ema = (int32_t)(f->mid << 4);
         col[c].gap = 0u;
     }
     for (r = 0; r < f->nr; r++) {
-        /* The band's cells were kept; above it, each row's into the band's first row. */
+        /* The top row of row r's cells, pixels. */
+        const int32_t y = (int32_t)img->height - (int32_t)((r + 1u) * f->s);
+        const int32_t top = y < 0 ? 0 : y;
+        /* The band's cells were kept (to save time, SL_FOR_SPEED); the other
+         * rows' are read into the band's first row. */
         const uint8_t *cells = f->band + 2u * (size_t)r * f->nc;
-        if (r >= f->nb) {
+        if (!SL_FOR_SPEED || r >= f->nb) {
             cells = f->band;
-            row_cells(img, f, r, col, gmax, f->band);
+            row_cells(f, r, col, gmax, f->band);
         }
         for (c = 0; c < f->nc; c++, cells += 2) {
             const uint32_t m = cells[0], t = cells[1];
@@ -308,14 +311,9 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
             q->cur = (q->cur > 0 ? q->cur : 0) + v;
             if (q->cur > q->best) {
                 q->best = q->cur;
-                q->top = (int32_t)r;
+                q->top = top;
             }
         }
-    }
-    for (c = 0; c < f->nc; c++) {
-        /* Top row of the run's highest cell, pixels; no carpet: the bottom. */
-        const int32_t y = (int32_t)img->height - (col[c].top + 1) * (int32_t)f->s;
-        col[c].top = col[c].top < 0 ? (int32_t)img->height : (y < 0 ? 0 : y);
     }
 }
 
@@ -325,40 +323,37 @@ SL_NOINLINE static void scan_columns(const symline_image *img, const symline_fie
  * Reads col[].top, writes col[].ema. */
 SL_NOINLINE static void support_filter(const symline_i_fstate *f, uint32_t k, symline_i_fcol *col)
 {
-    int32_t best[SL_FIELD_MAX_SUPPORT]; /* the k smallest rows so far, ascending */
     uint32_t c, i, j;
     for (c = 0; c < f->nc; c++) {
         const uint32_t lo = c >= k ? c - k : 0u;
         const uint32_t hi = c + k < f->nc ? c + k : f->nc - 1u;
-        for (i = 0; i < k; i++) {
-            best[i] = 0x7FFFFFFF;
-        }
-        for (j = lo; j <= hi; j++) {
-            const int32_t y = col[j].top;
-            if (y < best[k - 1u]) {
-                for (i = k - 1u; i > 0u && best[i - 1u] > y; i--) {
-                    best[i] = best[i - 1u];
-                }
-                best[i] = y;
-            }
-        }
         /* A window cut by the image edge asks for proportionally fewer:
-         * 1 <= j <= the window's columns, j <= k. */
-        j = (k * (hi - lo + 1u) + 2u * k) / (2u * k + 1u);
-        col[c].ema = best[j - 1u];
+         * 1 <= rank <= the window's columns, rank <= k. */
+        const uint32_t rank = (k * (hi - lo + 1u) + 2u * k) / (2u * k + 1u);
+        int32_t pick = 0x7FFFFFFF;
+        /* The rank-th smallest row: the smallest top with at least rank
+         * tops of the window at or above it (a window of at most 17). */
+        for (i = lo; i <= hi; i++) {
+            const int32_t y = col[i].top;
+            uint32_t le = 0u;
+            if (y >= pick) {
+                continue; /* cannot be smaller */
+            }
+            for (j = lo; j <= hi; j++) {
+                le += col[j].top <= y ? 1u : 0u;
+            }
+            pick = le >= rank ? y : pick;
+        }
+        col[c].ema = pick;
     }
 }
 
+/* Pixel column of grid column c (frame w px wide): the first and the last
+ * lie at the image edges, the others at their centres, inside the frame
+ * ((nc - 1) * sx < w, so (nc - 2) * sx + sx / 2 < w - sx / 2). */
 SL_NOINLINE static int32_t col_x(const symline_i_fstate *f, uint32_t c, uint32_t w)
 {
-    uint32_t x = c * f->sx + f->sx / 2u;
-    if (c == 0u) {
-        return 0;
-    }
-    if (c + 1u == f->nc || x > w - 1u) {
-        x = w - 1u;
-    }
-    return (int32_t)x;
+    return c == 0u ? 0 : (int32_t)(c + 1u == f->nc ? w - 1u : c * f->sx + f->sx / 2u);
 }
 
 /* Row of the chord a-b at column x (a.x < x < b.x), rounded toward the top. */
@@ -376,9 +371,11 @@ static int32_t chord_y(const symline_field_vertex *a, const symline_field_vertex
 /* Column tops -> boundary polyline (upper hull, thinned). col[c].ema holds
  * the filtered top row in pixels. The hull is built in place over col[].cur
  * (x) and col[].best (y). */
-SL_NOINLINE static void hull(const symline_image *img, const symline_i_fstate *f, uint32_t edge_pct,
-                             symline_i_fcol *col, symline_field_boundary *out)
+SL_NOINLINE static void hull(const symline_i_fstate *f, symline_i_fcol *col,
+                             symline_field_boundary *out)
 {
+    const symline_image *img = f->img;
+    const uint32_t edge_pct = f->fc->edge_slope_pct;
     const int32_t h = (int32_t)img->height, xr = (int32_t)img->width - 1;
     uint32_t c, n = 0u, i, k = 0u;
     for (c = 0; c < f->nc; c++) {
@@ -387,12 +384,7 @@ SL_NOINLINE static void hull(const symline_image *img, const symline_i_fstate *f
         if (y >= h) {
             continue; /* no field in this column (a lens's black corner, say) */
         }
-        if (n > 0u && x == col[n - 1u].cur) {
-            if (y >= col[n - 1u].best) {
-                continue; /* the same column again (a frame narrower than the grid) */
-            }
-            n--;
-        }
+        /* x grows strictly from column to column (col_x()). */
         /* Andrew's monotone chain, upper part (smaller y is higher): pop while
          * the last vertex lies on or below the chord from its predecessor. */
         while (n >= 2u) {
@@ -478,21 +470,19 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
     if (f == NULL) {
         return; /* not reached: the workspace size was checked */
     }
-    f->s = symline_i_field_cell(img->width, fc);
-    f->sx = f->s * fc->col_cells;
-    f->nc = (img->width + f->sx - 1u) / f->sx;
-    f->nr = (img->height + f->s - 1u) / f->s;
+    (void)field_grid(img->width, img->height, fc, f);
     col = (symline_i_fcol *)symline_i_carve(&cur, end, (size_t)f->nc * sizeof(symline_i_fcol));
-    f->nb = band_rows(f->nr, fc);
     f->band = (uint8_t *)symline_i_carve(&cur, end, 2u * (size_t)f->nb * f->nc);
     if (col == NULL || f->band == NULL) {
         return;
     }
     out->cell = (uint8_t)f->s;
-    carpet_model(img, fc, f, out);
-    scan_columns(img, fc, f, col);
+    f->fc = fc;
+    f->img = img;
+    carpet_model(f, out);
+    scan_columns(f, col);
     support_filter(f, fc->support, col);
-    hull(img, f, fc->edge_slope_pct, col, out);
+    hull(f, col, out);
     if (fc->restore_cells != 0u) {
         /* The support filter lowers peaks (a field corner) by a few columns'
          * slope: every column's own top counts again, but no higher than
@@ -510,7 +500,7 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
             }
             col[c].ema = t;
         }
-        hull(img, f, fc->edge_slope_pct, col, out);
+        hull(f, col, out);
     }
 }
 
@@ -559,48 +549,56 @@ int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
 void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
                           uint32_t width, uint32_t margin, uint16_t *rows)
 {
-    /* symline_field_y() at every grid column's centre; the centres only move
-     * right, so the chord is found by stepping on from the last one. */
+    /* symline_field_y() at every grid column's centre; to save time
+     * (SL_FOR_SPEED), the chord is found by stepping on from the last one:
+     * the centres only move right. */
     const uint32_t s = 1u << level, last = b->count - 1u;
     uint32_t x, i = 0u;
     for (x = 0; x < w; x++) {
         /* Keep grid row y when its centre y*s + s/2 >= boundary - margin. */
         const int32_t xc = (int32_t)(x * s + s / 2u < width ? x * s + s / 2u : width - 1u);
         int32_t y;
-        while (i < last && xc > b->v[i + 1u].x) {
-            i++;
-        }
-        if (xc <= b->v[0].x) {
-            y = b->v[0].y;
-        } else if (i >= last) {
-            y = b->v[last].y;
+        if (!SL_FOR_SPEED) {
+            y = symline_field_y(b, xc);
         } else {
-            y = chord_y(&b->v[i], &b->v[i + 1u], xc);
+            while (i < last && xc > b->v[i + 1u].x) {
+                i++;
+            }
+            if (xc <= b->v[0].x) {
+                y = b->v[0].y;
+            } else if (i >= last) {
+                y = b->v[last].y;
+            } else {
+                y = chord_y(&b->v[i], &b->v[i + 1u], xc);
+            }
         }
         y -= (int32_t)(margin + s / 2u);
-        y = y <= 0 ? 0 : (y + (int32_t)s - 1) >> level;
-        rows[x] = (uint16_t)(y > 0xFFFF ? 0xFFFF : y);
+        /* The boundary lies at most at the frame's height: y <= 65535. */
+        rows[x] = (uint16_t)(y <= 0 ? 0 : (y + (int32_t)s - 1) >> level);
     }
 }
 
 uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *pts,
                               uint32_t *row_start, uint32_t h)
 {
+    /* To save time (SL_FOR_SPEED): the rows wholly above the boundary (y < lo)
+     * are dropped unseen, and from its lowest row (hi) on the rest stays
+     * where it is. */
     uint32_t y, i = 0u, k = 0u, lo = 0xFFFFu, hi = 0u;
-    for (y = 0; y < w; y++) {
+    for (y = 0; SL_FOR_SPEED && y < w; y++) {
         lo = rows[y] < lo ? rows[y] : lo;
         hi = rows[y] > hi ? rows[y] : hi;
     }
     for (y = 0; y < h; y++) {
         const uint32_t end = row_start[y + 1u];
-        if (y >= hi && k == i) {
+        if (SL_FOR_SPEED && y >= hi && k == i) {
             return row_start[h]; /* the rest is field and stays where it is */
         }
         row_start[y] = k;
-        if (y < lo) {
+        if (SL_FOR_SPEED && y < lo) {
             i = end; /* the whole row lies above the field */
         }
-        for (; i < end; i++) {
+        for (; i < end; i++) { /* the points of row y */
             if (pts[i].y >= rows[pts[i].x]) {
                 /* Field by field (no memcpy call); the offsets fx, fy are
                  * not set before the sub-pixel stage. */

@@ -11,9 +11,6 @@
 #include "symline/field.h"
 #include "common.h"
 
-/* Grid step for a frame `width` wide under fc (fc->cell or the automatic one). */
-uint32_t symline_i_field_cell(uint32_t width, const symline_field_config *fc);
-
 /* symline_field_find() without the argument checks (valid image, config,
  * workspace of symline_field_workspace_size() bytes). */
 void symline_i_field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,

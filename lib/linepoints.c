@@ -36,9 +36,18 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     const uint32_t span = w * s;
     uint32_t x, d;
     const uint8_t *src = img->data + (size_t)(y * s) * img->stride;
-    if (p->level == 0u) {
-        for (x = 0; x < w; x++) {
-            out[x] = src[x];
+    if (!SL_FOR_SPEED) {
+        /* One block at a time: the same sums without the accumulator's lane
+         * loops, which only save time. */
+        for (x = 0; x < w; x++, src += s) {
+            const uint8_t *b = src;
+            uint32_t sum = 1u << (shift - 1u), i;
+            for (d = 0; d < s; d++, b += img->stride) {
+                for (i = 0; i < s; i++) {
+                    sum += b[i];
+                }
+            }
+            out[x] = (uint8_t)(sum >> shift);
         }
         return;
     }
@@ -81,13 +90,14 @@ static uint32_t h_gray_rows(const symline_i_pass *p)
     return h_delta(p) + p->k + p->m + 1u;
 }
 
-/* State of the horizontal-axis rings (kept in the workspace). */
+/* State of the rings (kept in the workspace). Along rows (vertical axis)
+ * every ring holds one row: a grid row is decided as soon as it is in. */
 typedef struct hring {
     const symline_image *img;
     const symline_i_pass *p;
     uint8_t *gray; /* gray_rows rows of w (levels > 0) */
     uint32_t gray_rows;
-    symline_i_coldown cd; /* extrema down the columns into the map ring (cd.ring rows of w) */
+    symline_i_coldown cd; /* extrema (down the columns) into the map ring (cd.ring rows of w) */
 } hring;
 
 /* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 6 bytes per extremum and 8 per
@@ -100,7 +110,7 @@ typedef char
 
 size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
 {
-    size_t n = (size_t)6u * SL_ALIGN;
+    size_t n = (size_t)6u * SL_ALIGN + symline_i_align_up(sizeof(hring));
     const size_t w = p->w;
     n += symline_i_align_up(w * sizeof(uint32_t)); /* energies */
     if (p->level > 0u) {
@@ -113,7 +123,6 @@ size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
         }
         return n;
     }
-    n += symline_i_align_up(sizeof(hring));
     n += symline_i_align_up(2u * w * sizeof(uint32_t)); /* two more rows of energies */
     n += symline_i_align_up(w * sizeof(uint16_t)) + symline_i_align_up(w); /* plateau state */
     /* 2 B per column unused since the column extrema need no event list; kept
@@ -178,75 +187,7 @@ SL_NOINLINE static void drop_dim_s(const symline_i_linefilter *f, const uint8_t 
 }
 #endif
 
-/* ---- vertical axis: along rows ---- */
-
-SL_NOINLINE static symline_status collect_vertical(const symline_image *img,
-                                                   const symline_i_pass *p, uint8_t *cur,
-                                                   uint8_t *end, symline_point *pts, uint32_t cap,
-                                                   uint32_t *n, uint32_t *row_start,
-                                                   uint32_t *dropped)
-{
-    uint32_t *E = (uint32_t *)symline_i_carve(&cur, end, (size_t)p->w * sizeof(uint32_t));
-    uint8_t *map = (uint8_t *)symline_i_carve(&cur, end, p->w);
-    uint16_t *acc = NULL;
-    uint8_t *grow = NULL;
-    uint32_t y, x;
-    /* The level read once: the scratch rows exist exactly when it is above 0
-     * (GCC's -fanalyzer cannot tell that p->level stays put across the
-     * stores below, and reported a NULL row otherwise). */
-    const uint32_t w = p->w, k = p->k, level = p->level;
-    if (level > 0u) {
-        acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
-        grow = (uint8_t *)symline_i_carve(&cur, end, p->w);
-        if (acc == NULL || grow == NULL) {
-            return SYMLINE_ERR_BUFFER;
-        }
-    }
-    if (E == NULL || map == NULL) {
-        return SYMLINE_ERR_BUFFER;
-    }
-    for (y = 0; y < p->h; y++) {
-        const uint8_t *row;
-        row_start[y] = *n;
-        if (level == 0u) {
-            row = img->data + (size_t)y * img->stride;
-        } else {
-            SL_STAGE(GRID);
-            symline_i_grid_row(img, p, y, acc, grow);
-            row = grow;
-        }
-        SL_STAGE(OPERATOR);
-        (void)symline_energy_row(row, w, p->m, E);
-        SL_STAGE(EXTREMA);
-        symline_i_extrema_runs(E, w, p->lag, map);
-        SL_STAGE(FILTER);
-#ifdef SL_ROW_PREFILTER
-        if (w > 2u * k) { /* the interior, where both sides lie in the row */
-            drop_dim_s(&p->filter, row + k, row, row + (size_t)2u * k, w - 2u * k, map + k);
-        }
-#endif
-        for (x = 0; x < w; x = SL_NEXT_S(map, x, w)) {
-            if (map[x] != SYMLINE_MAP_S) {
-                continue;
-            }
-            if (!symline_i_linefilter_gray(&p->filter, row[x], row[x >= k ? x - k : 0u],
-                                           row[x + k < w ? x + k : w - 1u])) {
-                continue;
-            }
-            if (p->filter.a_distance != 0u &&
-                !symline_i_linefilter_a_near(&p->filter, map, w, 1u, w, x)) {
-                continue;
-            }
-            push_point(pts, cap, n, x, y, dropped);
-        }
-    }
-    row_start[p->h] = *n;
-    return SYMLINE_OK;
-}
-
-/* ---- horizontal axis: down the columns, over rings ---- */
-
-static const uint8_t *h_row(const hring *r, uint32_t y)
+static const uint8_t *ring_row(const hring *r, uint32_t y)
 {
     if (r->p->level == 0u) {
         return r->img->data + (size_t)y * r->img->stride;
@@ -254,123 +195,66 @@ static const uint8_t *h_row(const hring *r, uint32_t y)
     return r->gray + (size_t)(y % r->gray_rows) * r->p->w;
 }
 
-static uint8_t *h_map(const hring *r, uint32_t y)
+static uint8_t *ring_map(const hring *r, uint32_t y)
 {
     return r->cd.map + (size_t)(y % r->cd.ring) * r->p->w;
 }
 
-static void h_decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap, uint32_t *n,
-                     uint32_t *row_start, uint32_t *dropped)
+/* The line points of grid row y from its map row: S points whose gray
+ * values pass the line filter, with an A point near when it asks for one.
+ * Across the line: k entries either side along a row (vertical axis),
+ * k rows up and down a column (horizontal axis). */
+static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_point *pts,
+                                        uint32_t cap, uint32_t *n, uint32_t *row_start,
+                                        uint32_t *dropped, bool along)
 {
     const symline_i_pass *p = r->p;
-    uint8_t *map = h_map(r, y);
-    const uint8_t *c = h_row(r, y);
-    const uint8_t *lo = h_row(r, y >= p->k ? y - p->k : 0u);
-    const uint8_t *hi = h_row(r, y + p->k < p->h ? y + p->k : p->h - 1u);
+    const uint32_t w = p->w;
+    const uint32_t dk = along ? p->k : 0u, ky = along ? 0u : p->k;
+    uint8_t *map = ring_map(r, y);
+    const uint8_t *c = ring_row(r, y);
+    const uint8_t *lo = ring_row(r, y >= ky ? y - ky : 0u);
+    const uint8_t *hi = ring_row(r, y + ky < p->h ? y + ky : p->h - 1u);
+    /* The A points near: along the map row, or down the map ring's column x. */
+    const uint8_t *amap = along ? map : r->cd.map;
+    const uint32_t aring = along ? w : r->cd.ring, alen = along ? w : p->h;
+    const size_t astep = along ? 1u : w;
     uint32_t x;
     row_start[y] = *n;
 #ifdef SL_ROW_PREFILTER
-    drop_dim_s(&p->filter, c, lo, hi, p->w, map);
+    if (w > 2u * dk) { /* along a row: the interior, where both sides lie in the row */
+        drop_dim_s(&p->filter, c + dk, lo, hi + (size_t)2u * dk, w - 2u * dk, map + dk);
+    }
 #endif
-    for (x = 0; x < p->w; x = SL_NEXT_S(map, x, p->w)) {
+    for (x = 0; x < w; x = SL_NEXT_S(map, x, w)) {
         if (map[x] != SYMLINE_MAP_S) {
             continue;
         }
-        if (!symline_i_linefilter_gray(&p->filter, c[x], lo[x], hi[x])) {
+        if (!symline_i_linefilter_gray(&p->filter, c[x], lo[x >= dk ? x - dk : 0u],
+                                       hi[x + dk < w ? x + dk : w - 1u])) {
             continue;
         }
         if (p->filter.a_distance != 0u &&
-            !symline_i_linefilter_a_near(&p->filter, r->cd.map + x, r->cd.ring, p->w, p->h, y)) {
+            !symline_i_linefilter_a_near(&p->filter, amap + (along ? 0u : x), aring, astep, alen,
+                                         along ? x : y)) {
             continue;
         }
         push_point(pts, cap, n, x, y, dropped);
     }
 }
 
-SL_NOINLINE static symline_status collect_horizontal(const symline_image *img,
-                                                     const symline_i_pass *p, uint8_t *cur,
-                                                     uint8_t *end, symline_point *pts, uint32_t cap,
-                                                     uint32_t *n, uint32_t *row_start,
-                                                     uint32_t *dropped)
+/* The row decision; to save time (SL_FOR_SPEED), one copy per axis. */
+SL_NOINLINE static void decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap,
+                               uint32_t *n, uint32_t *row_start, uint32_t *dropped)
 {
-    hring *rp = (hring *)symline_i_carve(&cur, end, sizeof(hring));
-    const uint32_t w = p->w, h = p->h, m = p->m;
-    const uint32_t delta = h_delta(p);
-    /* Energies of rows t-2, t-1, t in turn (E3 + w * (row % 3)). */
-    uint32_t *E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * w * sizeof(uint32_t));
-    symline_i_coldown *cd;
-    const uint8_t **rows;
-    uint16_t *acc = NULL;
-    uint32_t t, y, produced = 0u;
-    if (rp == NULL) {
-        return SYMLINE_ERR_BUFFER;
+    const bool along = r->p->axis == SYMLINE_AXIS_VERTICAL;
+    if (SL_FOR_SPEED && along) {
+        decide_row(r, y, pts, cap, n, row_start, dropped, true);
+    } else if (SL_FOR_SPEED) {
+        decide_row(r, y, pts, cap, n, row_start, dropped, false);
+    } else {
+        decide_row(r, y, pts, cap, n, row_start, dropped, along);
     }
-    cd = &rp->cd;
-    rp->img = img;
-    rp->p = p;
-    rp->gray_rows = h_gray_rows(p);
-    cd->E3 = E3;
-    cd->stride = w;
-    cd->width = w;
-    cd->ring = h_map_rows(p);
-    cd->lag = p->lag;
-    cd->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * cd->ring);
-    cd->run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint16_t));
-    cd->left = (int8_t *)symline_i_carve(&cur, end, w);
-    rp->gray = NULL;
-    if (p->level > 0u) {
-        rp->gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->gray_rows);
-        acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
-        if (rp->gray == NULL || acc == NULL) {
-            return SYMLINE_ERR_BUFFER;
-        }
-    }
-    rows = (const uint8_t **)symline_i_carve(&cur, end,
-                                             (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
-    if (E3 == NULL || cd->run_start == NULL || cd->left == NULL || cd->map == NULL ||
-        rows == NULL) {
-        return SYMLINE_ERR_BUFFER;
-    }
-    for (t = 0; t < h; t++) {
-        uint32_t j;
-        uint32_t *E = E3 + (size_t)(t % 3u) * w;
-        if (p->level > 0u) {
-            const uint32_t need = (t + m < h) ? t + m : h - 1u;
-            SL_STAGE(GRID);
-            while (produced <= need) {
-                symline_i_grid_row(img, p, produced, acc,
-                                   rp->gray + (size_t)(produced % rp->gray_rows) * w);
-                produced++;
-            }
-        }
-        for (j = 0; j <= 2u * m; j++) {
-            const uint32_t yy = t + j; /* row t - m + j, offset by m to stay unsigned */
-            rows[j] = (yy >= m && yy - m < h) ? h_row(rp, yy - m) : NULL;
-        }
-        SL_STAGE(OPERATOR);
-        (void)symline_energy_across(rows, m, w, E);
-        SL_STAGE(EXTREMA);
-        if (t >= 1u) {
-            symline_i_extrema_down(cd, E, t);
-        }
-        if (t >= delta) {
-            SL_STAGE(FILTER);
-            h_decide(rp, t - delta, pts, cap, n, row_start, dropped);
-        }
-    }
-    SL_STAGE(FILTER);
-    {
-        uint8_t *mr = h_map(rp, h - 1u);
-        uint32_t i;
-        for (i = 0; i < w; i++) {
-            mr[i] = SYMLINE_MAP_NONE;
-        }
-    }
-    for (y = (h > delta) ? h - delta : 0u; y < h; y++) {
-        h_decide(rp, y, pts, cap, n, row_start, dropped);
-    }
-    row_start[h] = *n;
-    return SYMLINE_OK;
 }
 
 symline_status symline_i_collect(const symline_image *img, const symline_i_pass *p, void *ws,
@@ -378,13 +262,101 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
                                  uint32_t *row_start, uint32_t *dropped)
 {
     uint8_t *cur = (uint8_t *)ws;
-    uint8_t *end = cur + ws_size;
+    uint8_t *const end = cur + ws_size;
+    hring *rp = (hring *)symline_i_carve(&cur, end, sizeof(hring));
+    const uint32_t w = p->w, h = p->h, m = p->m;
+    const bool along = p->axis == SYMLINE_AXIS_VERTICAL;
+    /* Down the columns, row t's extrema are known once row t + lag + 1 is in,
+     * and its decision waits for a_distance more rows of extrema. */
+    const uint32_t delta = along ? 0u : h_delta(p);
+    /* Energies of rows t-2, t-1, t in turn (E3 + w * (row % 3)); one row along rows. */
+    const uint32_t erows = along ? 1u : 3u;
+    uint32_t *E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)erows * w * sizeof(uint32_t));
+    symline_i_coldown *cd;
+    const uint8_t **rows = NULL;
+    uint16_t *acc = NULL;
+    uint32_t t, produced = 0u;
     *n = 0u;
-    if (p->w == 0u || p->h == 0u) {
+    if (w == 0u || h == 0u) {
         return SYMLINE_ERR_SIZE;
     }
-    if (p->axis == SYMLINE_AXIS_VERTICAL) {
-        return collect_vertical(img, p, cur, end, pts, cap, n, row_start, dropped);
+    if (rp == NULL) {
+        return SYMLINE_ERR_BUFFER;
     }
-    return collect_horizontal(img, p, cur, end, pts, cap, n, row_start, dropped);
+    cd = &rp->cd;
+    rp->img = img;
+    rp->p = p;
+    rp->gray_rows = along ? 1u : h_gray_rows(p);
+    cd->E3 = E3;
+    cd->stride = w;
+    cd->width = w;
+    cd->ring = along ? 1u : h_map_rows(p);
+    cd->lag = p->lag;
+    cd->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * cd->ring);
+    if (p->level > 0u) { /* else the frame's rows are read (ring_row()) */
+        rp->gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->gray_rows);
+        acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+        if (rp->gray == NULL || acc == NULL) {
+            return SYMLINE_ERR_BUFFER;
+        }
+    }
+    if (!along) {
+        cd->run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint16_t));
+        cd->left = (int8_t *)symline_i_carve(&cur, end, w);
+        rows = (const uint8_t **)symline_i_carve(&cur, end,
+                                                 (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
+        if (cd->run_start == NULL || cd->left == NULL || rows == NULL) {
+            return SYMLINE_ERR_BUFFER;
+        }
+    }
+    if (E3 == NULL || cd->map == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    /* Rows t >= h only decide the last delta rows. */
+    for (t = 0; t < h + delta; t++) {
+        uint32_t *E = E3 + (size_t)(t % erows) * w;
+        if (t >= h) {
+            if (t == h) {
+                /* The last row touches the bottom: never marked. */
+                uint8_t *mr = ring_map(rp, h - 1u);
+                uint32_t x;
+                for (x = 0; x < w; x++) {
+                    mr[x] = SYMLINE_MAP_NONE;
+                }
+            }
+        } else {
+            if (p->level > 0u) {
+                const uint32_t need = along ? t : (t + m < h) ? t + m : h - 1u;
+                SL_STAGE(GRID);
+                while (produced <= need) {
+                    symline_i_grid_row(img, p, produced, acc,
+                                       rp->gray + (size_t)(produced % rp->gray_rows) * w);
+                    produced++;
+                }
+            }
+            SL_STAGE(OPERATOR);
+            if (along) {
+                (void)symline_energy_row(ring_row(rp, t), w, m, E);
+                SL_STAGE(EXTREMA);
+                symline_i_extrema_runs(E, w, p->lag, cd->map);
+            } else {
+                uint32_t j;
+                for (j = 0; j <= 2u * m; j++) {
+                    const uint32_t yy = t + j; /* row t - m + j, offset by m to stay unsigned */
+                    rows[j] = (yy >= m && yy - m < h) ? ring_row(rp, yy - m) : NULL;
+                }
+                (void)symline_energy_across(rows, m, w, E);
+                SL_STAGE(EXTREMA);
+                if (t >= 1u) {
+                    symline_i_extrema_down(cd, E, t);
+                }
+            }
+        }
+        if (t >= delta) {
+            SL_STAGE(FILTER);
+            decide(rp, t - delta, pts, cap, n, row_start, dropped);
+        }
+    }
+    row_start[h] = *n;
+    return SYMLINE_OK;
 }

@@ -23,8 +23,9 @@ typedef struct symline_i_pass {
     symline_i_linefilter filter;
 } symline_i_pass;
 
-/* Box-downsampled row y of the pass grid into out (p->w bytes);
- * acc: scratch of img->width uint16_t. Level 0 copies the row. */
+/* Box-downsampled row y of the pass grid into out (p->w bytes), level >= 1
+ * (level 0 reads the frame's rows themselves); acc: scratch of img->width
+ * uint16_t. */
 void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
                         uint16_t *acc, uint8_t *out);
 

@@ -102,22 +102,18 @@ static void chain(symline_i_run *d, const symline_i_pass *p, const symline_i_seg
                   uint32_t at, uint32_t n)
 {
     const symline_point *c = d->r->points + at;
-    uint32_t i = 0u;
-    while (i < n) {
-        uint32_t j, s;
-        while (i < n && covered(d, ix, &c[i], p->level)) {
-            i++;
+    uint32_t i, s, from = 0u;
+    for (i = 0; i <= n; i++) {
+        /* The uncovered runs [from, i), each cut at its corners. */
+        if (i < n && !covered(d, ix, &c[i], p->level)) {
+            continue;
         }
-        j = i;
-        while (j < n && !covered(d, ix, &c[j], p->level)) {
-            j++;
-        }
-        for (s = i; s < j;) {
-            const uint32_t len = symline_i_corner_cut(c + s, j - s);
+        for (s = from; s < i;) {
+            const uint32_t len = symline_i_corner_cut(c + s, i - s);
             emit(d, p, at + s, len);
             s += len;
         }
-        i = j;
+        from = i + 1u;
     }
 }
 
@@ -227,8 +223,10 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, const symline_i_pass
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         /* Above the field: nothing to trace. */
         SL_STAGE(FIELD);
-        if (p->axis == SYMLINE_AXIS_HORIZONTAL || d->cfg->axes != SYMLINE_AXES_BOTH) {
-            /* The rows depend on the level alone: once per level (horizontal first). */
+        if (!SL_FOR_SPEED || p->axis == SYMLINE_AXIS_HORIZONTAL ||
+            d->cfg->axes != SYMLINE_AXES_BOTH) {
+            /* The rows depend on the level alone: to save time (SL_FOR_SPEED),
+             * once per level (horizontal first). */
             symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
                                  d->field_rows);
         }
