@@ -237,34 +237,15 @@ symline_status symline_s8_row(const uint32_t *E, uint32_t n, uint32_t m, uint8_t
             return SYMLINE_ERR_RANGE;
         }
     }
-#if defined(__OPTIMIZE_SIZE__)
-    {
-        /*
-         * Where the build optimises for size, one loop for every radius:
-         * S8 = floor(num / emax) with num = 255 (emax - E) + floor(emax / 2)
-         * (numerator and denominator of the form below halved; den is even),
-         * num < 2^39 in 64 bits. R = floor(2^47 / emax) < 2^32 makes the
-         * estimate low by at most one (num / 2^47 < 2^-8), num * R < 2^55,
-         * and the remainder below 2 emax < 2^32 fits the 32-bit compare. No
-         * 64-bit division per pixel for m > 15 either.
-         */
-        const uint32_t r = (uint32_t)(((uint64_t)1 << 47) / emax);
-        for (i = 0; i < n; i++) {
-            const uint64_t num = 255u * (uint64_t)(emax - E[i]) + (emax >> 1);
-            uint32_t q = (uint32_t)((num * r) >> 47);
-            q += (uint32_t)((uint32_t)num - q * emax >= emax);
-            out[i] = (uint8_t)q;
-        }
-    }
-#else
-    if (emax <= UINT32_MAX / 511u) {
-        /*
-         * m <= 15: the numerator fits 32 bits. Divide by multiplying with
-         * R = floor(2^48 / den): the estimate is low by at most one (the
-         * error is below N / 2^48 < 2^-16), fixed by one compare, so the
-         * result is the exact quotient without a division per pixel (there
-         * is no divide instruction on Cortex-M0+).
-         */
+    /*
+     * S8 = floor((510 (emax - E) + emax) / (2 emax)) without a division per
+     * pixel (there is no divide instruction on Cortex-M0+): multiply with a
+     * reciprocal R, whose estimate is low by at most one, and fix it by one
+     * compare.
+     */
+    if (SL_FOR_SPEED && emax <= UINT32_MAX / 511u) {
+        /* m <= 15, a shortcut: the numerator fits 32 bits. R = floor(2^48 /
+         * den); the error is below N / 2^48 < 2^-16. */
         const uint32_t den = 2u * emax;
         const uint64_t r = ((uint64_t)1 << 48) / den;
         for (i = 0; i < n; i++) {
@@ -274,12 +255,19 @@ symline_status symline_s8_row(const uint32_t *E, uint32_t n, uint32_t m, uint8_t
             out[i] = (uint8_t)q;
         }
     } else {
-        const uint64_t den = 2u * (uint64_t)emax;
+        /* Every radius: numerator and denominator halved (2 emax is even),
+         * S8 = floor(num / emax) with num = 255 (emax - E) + floor(emax / 2)
+         * < 2^39 in 64 bits. R = floor(2^47 / emax) < 2^32; the error is
+         * below num / 2^47 < 2^-8, num * R < 2^55, and the remainder, below
+         * 2 emax < 2^32, fits the 32-bit compare. */
+        const uint32_t r = (uint32_t)(((uint64_t)1 << 47) / emax);
         for (i = 0; i < n; i++) {
-            out[i] = (uint8_t)((510u * (uint64_t)(emax - E[i]) + emax) / den);
+            const uint64_t num = 255u * (uint64_t)(emax - E[i]) + (emax >> 1);
+            uint32_t q = (uint32_t)((num * r) >> 47);
+            q += (uint32_t)((uint32_t)num - q * emax >= emax);
+            out[i] = (uint8_t)q;
         }
     }
-#endif
     return SYMLINE_OK;
 }
 
