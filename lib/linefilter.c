@@ -39,20 +39,25 @@ void symline_i_linefilter_setup(symline_i_linefilter *f, const symline_config *c
 SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const uint16_t *top,
                                                uint32_t *hist, symline_i_frame_stats *st)
 {
+    const size_t step = (size_t)img->stride * SL_STATS_STEP;
     uint32_t x, i, n = 0u, half, acc, med, mad, lo, hi;
     for (i = 0; i < 256u; i++) {
         hist[i] = 0u;
     }
     for (x = 0; x < img->width; x += SL_STATS_STEP) {
-        /* From the first sampled row at or below top[x] down. */
-        uint32_t y =
+        /* The first sampled row at or below top[x], and the samples from it down. */
+        const uint32_t y0 =
             top == NULL ? 0u : ((uint32_t)top[x] + SL_STATS_STEP - 1u) & ~(SL_STATS_STEP - 1u);
-        for (; y < img->height; y += SL_STATS_STEP) {
-            hist[img->data[(size_t)y * img->stride + x]]++;
+        uint32_t cnt;
+        size_t at;
+        if (y0 >= img->height) {
+            continue;
         }
-    }
-    for (i = 0; i < 256u; i++) {
-        n += hist[i];
+        cnt = (img->height - y0 + SL_STATS_STEP - 1u) / SL_STATS_STEP;
+        n += cnt;
+        for (at = (size_t)y0 * img->stride + x; cnt > 0u; cnt--, at += step) {
+            hist[img->data[at]]++;
+        }
     }
     st->mean = 0u;
     st->sigma_q4 = 0u;
