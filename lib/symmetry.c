@@ -124,36 +124,35 @@ symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint
 
 /*
  * The rows a and b of pair j (1..m) of a sum across: from the window
- * rows[0..2m] (NULL outside the image), or, rows NULL, from the frame around
- * row c (stride s), whose partners lie within jmax rows. False when a partner
- * lies outside the image.
+ * rows[0..2m] (NULL outside the image), or, rows NULL, from the frame img
+ * around its row y. False when a partner lies outside the image.
  */
-static bool pair_rows(const uint8_t *const *rows, const uint8_t *c, size_t s, uint32_t jmax,
-                      uint32_t m, uint32_t j, const uint8_t **a, const uint8_t **b)
+static bool pair_rows(const uint8_t *const *rows, const symline_image *img, uint32_t y, uint32_t m,
+                      uint32_t j, const uint8_t **a, const uint8_t **b)
 {
     if (rows != NULL) {
         *a = rows[m - j];
         *b = rows[m + j];
         return *a != NULL && *b != NULL;
     }
-    if (j > jmax) {
+    if (j > edge_distance(y, img->height)) {
         return false;
     }
-    *a = c - (size_t)j * s;
-    *b = c + (size_t)j * s;
+    *a = img->data + (size_t)(y - j) * img->stride;
+    *b = img->data + (size_t)(y + j) * img->stride;
     return true;
 }
 
 /* The sum across, with the rows as pair_rows() takes them: the body of
  * symline_energy_across() and symline_energy_across_image(). */
-static void across(const uint8_t *const *rows, const uint8_t *c, size_t s, uint32_t jmax,
-                   uint32_t m, uint32_t width, uint32_t *E)
+static void across(const uint8_t *const *rows, const symline_image *img, uint32_t y, uint32_t m,
+                   uint32_t width, uint32_t *E)
 {
     uint32_t j, border = 0u;
     const uint8_t *a, *b;
     fill(E, width, 0u);
     for (j = 1u; j <= m; j++) {
-        if (pair_rows(rows, c, s, jmax, m, j, &a, &b)) {
+        if (pair_rows(rows, img, y, m, j, &a, &b)) {
             add_pair(a, b, m + 1u - j, width, E);
         } else {
             border += (m + 1u - j) * SL_DMAX2;
@@ -173,7 +172,7 @@ static void across(const uint8_t *const *rows, const uint8_t *c, size_t s, uint3
 SL_ENERGY_REF void SL_ENERGY_ACROSS_REF(const uint8_t *const *rows, uint32_t m, uint32_t width,
                                         uint32_t *E)
 {
-    across(rows, NULL, 0u, 0u, m, width, E);
+    across(rows, NULL, 0u, m, width, E);
 }
 
 symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width,
@@ -212,10 +211,8 @@ symline_status symline_energy_across_image(const symline_image *img, uint32_t y,
         return SYMLINE_ERR_RANGE;
     }
     /* Same sum as symline_energy_across(), with the rows taken from the frame
-     * directly so no pointer window (up to 511 entries) has to live on the stack:
-     * the pairs j > edge_distance(y) leave the frame. */
-    across(NULL, img->data + (size_t)y * img->stride, img->stride, edge_distance(y, img->height), m,
-           img->width, E);
+     * directly so no pointer window (up to 511 entries) has to live on the stack. */
+    across(NULL, img, y, m, img->width, E);
     return SYMLINE_OK;
 }
 
