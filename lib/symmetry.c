@@ -259,7 +259,9 @@ symline_status symline_s8_row(const uint32_t *E, uint32_t n, uint32_t m, uint8_t
          * 2 emax < 2^32, fits the 32-bit compare. */
         const uint32_t r = (uint32_t)(((uint64_t)1 << 47) / emax);
         for (i = 0; i < n; i++) {
-            const uint64_t num = 255u * (uint64_t)(emax - E[i]) + (emax >> 1);
+            const uint32_t d = emax - E[i];
+            /* 255 d as a shift: no 64-bit multiply call on Cortex-M0+ */
+            const uint64_t num = ((uint64_t)d << 8) - d + (emax >> 1);
             uint32_t q = (uint32_t)((num * r) >> 47);
             q += (uint32_t)((uint32_t)num - q * emax >= emax);
             out[i] = (uint8_t)q;
