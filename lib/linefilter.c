@@ -59,12 +59,8 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
             hist[img->data[at]]++;
         }
     }
-    st->mean = 0u;
-    st->sigma_q4 = 0u;
-    if (n == 0u) {
-        return;
-    }
-    /* Both scans stop within the histogram: its entries sum to n >= half. */
+    /* Both scans stop within the histogram: its entries sum to n >= half
+     * (with no sample at once, giving 0 and 0). */
     half = (n + 1u) / 2u;
     for (med = 0u, acc = 0u; acc + hist[med] < half; med++) {
         acc += hist[med];
@@ -150,7 +146,7 @@ SL_NOINLINE bool symline_i_linefilter_piece_fails(const symline_i_linefilter *f,
     const size_t across = horiz ? img->stride : 1u;
     const uint32_t lim = horiz ? img->height : img->width;
     const uint32_t len = n << level;
-    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side, cnt = 0u;
+    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side, ridge, cnt = 0u;
     for (i = 0; i < n; i += step, cnt++) {
         /* Grid points map inside the frame: (v << level) + half < size. */
         const uint32_t x = ((uint32_t)q[i].x << level) + half;
@@ -162,14 +158,16 @@ SL_NOINLINE bool symline_i_linefilter_piece_fails(const symline_i_linefilter *f,
         sum_hi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
     }
     side = sum_lo > sum_hi ? sum_lo : sum_hi;
+    if (sum_centre <= side) {
+        return true;
+    }
+    ridge = sum_centre - side;
+    /* Sides alike: |lo - hi| = 2 max(lo, hi) - lo - hi. */
+    if ((2u * side - sum_lo - sum_hi) * (2u * f->asym_pct) > ridge * 100u) {
+        return true;
+    }
     /* A short piece must stand out more than a long one: the carpet's grain
      * forms short ridges just over the per-point threshold, a faint painted
      * line runs on. Mean ridge >= ridge_min * (len + SL_SHORT_PX) / len. */
-    if (sum_centre > side &&
-        (uint64_t)(sum_centre - side) * len < (uint64_t)f->ridge_min * cnt * (len + SL_SHORT_PX)) {
-        return true;
-    }
-    return sum_centre <= side ||
-           (sum_lo > sum_hi ? sum_lo - sum_hi : sum_hi - sum_lo) * (2u * f->asym_pct) >
-               (sum_centre - side) * 100u;
+    return (uint64_t)ridge * len < (uint64_t)f->ridge_min * cnt * (len + SL_SHORT_PX);
 }
