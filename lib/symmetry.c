@@ -218,7 +218,7 @@ symline_status symline_energy_across_image(const symline_image *img, uint32_t y,
 
 symline_status symline_s8_row(const uint32_t *E, uint32_t n, uint32_t m, uint8_t *out)
 {
-    uint32_t i;
+    uint32_t i, r;
     const uint32_t emax = symline_emax(m);
     if (E == NULL || out == NULL) {
         return SYMLINE_ERR_NULL;
@@ -235,37 +235,22 @@ symline_status symline_s8_row(const uint32_t *E, uint32_t n, uint32_t m, uint8_t
         }
     }
     /*
-     * S8 = floor((510 (emax - E) + emax) / (2 emax)) without a division per
-     * pixel (there is no divide instruction on Cortex-M0+): multiply with a
-     * reciprocal R, whose estimate is low by at most one, and fix it by one
-     * compare.
+     * S8 = floor((510 d + emax) / (2 emax)), d = emax - E, without a division
+     * per pixel (there is no divide instruction on Cortex-M0+). It equals
+     * floor(255 d / emax + 1/2), estimated as the high word of d R + 2^31
+     * with R = floor(255 * 2^32 / emax) < 2^24: low by at most one (d < 2^31,
+     * so the error is below d / 2^32 < 1/2), fixed by one compare. The
+     * compare uses the halved numerator 255 d + floor(emax / 2) (the same
+     * quotient by emax), whose remainder, below 2 emax < 2^32, is exact in
+     * 32-bit arithmetic. R is a 32-bit division: emax = 255 * 255 T, so
+     * R = floor(2^32 / (255 T)), and 255 T never divides 2^32.
      */
-    if (SL_FOR_SPEED && emax <= UINT32_MAX / 511u) {
-        /* m <= 15, a shortcut: the numerator fits 32 bits. R = floor(2^48 /
-         * den); the error is below N / 2^48 < 2^-16. */
-        const uint32_t den = 2u * emax;
-        const uint64_t r = ((uint64_t)1 << 48) / den;
-        for (i = 0; i < n; i++) {
-            const uint32_t num = 510u * (emax - E[i]) + emax;
-            uint32_t q = (uint32_t)(((uint64_t)num * r) >> 48);
-            q += (uint32_t)(num - q * den >= den);
-            out[i] = (uint8_t)q;
-        }
-    } else {
-        /* Every radius: numerator and denominator halved (2 emax is even),
-         * S8 = floor(num / emax) with num = 255 (emax - E) + floor(emax / 2)
-         * < 2^39 in 64 bits. R = floor(2^47 / emax) < 2^32; the error is
-         * below num / 2^47 < 2^-8, num * R < 2^55, and the remainder, below
-         * 2 emax < 2^32, fits the 32-bit compare. */
-        const uint32_t r = (uint32_t)(((uint64_t)1 << 47) / emax);
-        for (i = 0; i < n; i++) {
-            const uint32_t d = emax - E[i];
-            /* 255 d as a shift: no 64-bit multiply call on Cortex-M0+ */
-            const uint64_t num = ((uint64_t)d << 8) - d + (emax >> 1);
-            uint32_t q = (uint32_t)((num * r) >> 47);
-            q += (uint32_t)((uint32_t)num - q * emax >= emax);
-            out[i] = (uint8_t)q;
-        }
+    r = UINT32_MAX / (emax / 255u);
+    for (i = 0; i < n; i++) {
+        const uint32_t d = emax - E[i];
+        uint32_t q = (uint32_t)(((uint64_t)d * r + 0x80000000u) >> 32);
+        q += (uint32_t)(255u * d + (emax >> 1) - q * emax >= emax);
+        out[i] = (uint8_t)q;
     }
     return SYMLINE_OK;
 }
