@@ -45,7 +45,9 @@ static bool continues(const symline_segment *s, const symline_segment *c, const 
         const int32_t at = (e & 1) ? last : 0, in = (e & 1) ? last - j : j;
         const int32_t cdx = (int32_t)p[at].x - p[in].x, cdy = (int32_t)p[at].y - p[in].y;
         int32_t gx, gy; /* the gap between the two ends, Q8 */
-        symline_i_pt_off(&p[at], 0u, (e & 2) ? s->x1 : s->x0, (e & 2) ? s->y1 : s->y0, &gx, &gy);
+        symline_i_pt_off(&p[at], 0u, NULL, &gx, &gy);
+        gx -= (e & 2) ? s->x1 : s->x0;
+        gy -= (e & 2) ? s->y1 : s->y0;
         /* s leaves its end x1 along +dir, its end x0 along -dir; continuing c
          * means leaving against c's outward direction. */
         const int32_t dot = (e & 2) ? -(ldx * cdx + ldy * cdy) : ldx * cdx + ldy * cdy;

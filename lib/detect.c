@@ -157,6 +157,21 @@ symline_axis symline_i_axis_of(const symline_config *c, uint32_t index)
     return c->axes == SYMLINE_AXES_VERTICAL ? SYMLINE_AXIS_VERTICAL : SYMLINE_AXIS_HORIZONTAL;
 }
 
+/* Sets up pass k of a detection (fine scale first, horizontal before
+ * vertical at each); false after the last. */
+SL_NOINLINE static bool pass_nth(symline_i_pass *p, const symline_config *cfg, uint32_t k,
+                                 uint32_t width, uint32_t height)
+{
+    const uint32_t axes = symline_i_axis_count(cfg);
+    if (k >= axes * symline_i_level_count(cfg, width, height)) {
+        return false;
+    }
+    /* axes is 1 or 2: k's axis and level by a mask and a shift. */
+    symline_i_pass_setup(p, cfg, symline_i_axis_of(cfg, k & (axes - 1u)), k >> (axes - 1u), width,
+                         height);
+    return true;
+}
+
 /* Workspace of the detection's own state (symline_i_run), within the fixed part of
  * SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) on every target. */
 #define SL_RUN_WS_SIZE (symline_i_align_up(sizeof(symline_i_run)) + SL_ALIGN)
@@ -172,21 +187,16 @@ static size_t field_rows_size(uint32_t width)
 SL_NOINLINE size_t symline_detect_workspace_size(uint32_t width, uint32_t height,
                                                  const symline_config *cfg)
 {
-    uint32_t levels, level, axis;
+    symline_i_pass p;
+    uint32_t k;
     size_t best = 0u;
     if (cfg == NULL || width == 0u || height == 0u || width > SYMLINE_MAX_DIM ||
         height > SYMLINE_MAX_DIM || symline_config_check(cfg, NULL) != SYMLINE_OK) {
         return 0u;
     }
-    levels = symline_i_level_count(cfg, width, height);
-    for (level = 0; level < levels; level++) {
-        for (axis = 0; axis < symline_i_axis_count(cfg); axis++) {
-            symline_i_pass p;
-            size_t n;
-            symline_i_pass_setup(&p, cfg, symline_i_axis_of(cfg, axis), level, width, height);
-            n = symline_i_pass_ws_size(&p, width, height);
-            best = n > best ? n : best;
-        }
+    for (k = 0; pass_nth(&p, cfg, k, width, height); k++) {
+        const size_t n = symline_i_pass_ws_size(&p, width, height);
+        best = n > best ? n : best;
     }
     if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
         /* The boundary is found first, in the same workspace. */
@@ -234,7 +244,7 @@ SL_NOINLINE static void field_stats(const symline_image *img, const symline_fiel
 SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_t ws_size,
                                    symline_i_run *d)
 {
-    uint32_t levels, level, axis;
+    uint32_t k;
     uint8_t *cur = ws, *const end = ws + ws_size;
     symline_i_pass *p;
     /* The field boundary's rows stay through the passes (the boundary's own
@@ -244,18 +254,16 @@ SL_NOINLINE static void run_passes(const symline_config *cfg, uint8_t *ws, size_
             ? (uint16_t *)symline_i_carve(&cur, end, (size_t)d->img->width * sizeof(uint16_t))
             : NULL;
     p = (symline_i_pass *)symline_i_carve(&cur, end, sizeof(symline_i_pass));
-    levels = symline_i_level_count(cfg, d->img->width, d->img->height);
-    for (level = 0; level < levels && p != NULL; level++) {
-        for (axis = 0; axis < symline_i_axis_count(cfg); axis++) {
-            SL_STAGE(SETUP);
-            symline_i_pass_setup(p, cfg, symline_i_axis_of(cfg, axis), level, d->img->width,
-                                 d->img->height);
-            if (cfg->adaptive) {
-                symline_i_linefilter_adapt(&p->filter, cfg, &d->stats, level);
-            }
-            if (symline_i_pass_run(d, p, cur, end) != SYMLINE_OK) {
-                return; /* not reached: the workspace size was checked */
-            }
+    for (k = 0; p != NULL; k++) {
+        SL_STAGE(SETUP);
+        if (!pass_nth(p, cfg, k, d->img->width, d->img->height)) {
+            return;
+        }
+        if (cfg->adaptive) {
+            symline_i_linefilter_adapt(&p->filter, cfg, &d->stats, p->level);
+        }
+        if (symline_i_pass_run(d, p, cur, end) != SYMLINE_OK) {
+            return; /* not reached: the workspace size was checked */
         }
     }
 }

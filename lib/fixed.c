@@ -37,11 +37,11 @@ uint32_t symline_i_div_q8(uint64_t cross, uint64_t len)
     return (uint32_t)cross / (uint32_t)len;
 }
 
-void symline_i_pt_off(const symline_point *q, uint32_t level, int32_t ox, int32_t oy, int32_t *x,
+void symline_i_pt_off(const symline_point *q, uint32_t level, const int32_t *o, int32_t *x,
                       int32_t *y)
 {
-    *x = symline_i_pt_q8x(q, level) - ox;
-    *y = symline_i_pt_q8y(q, level) - oy;
+    *x = symline_i_pt_q8x(q, level) - (o != NULL ? o[0] : 0);
+    *y = symline_i_pt_q8y(q, level) - (o != NULL ? o[1] : 0);
 }
 
 /* Makes grid point q at `level` a full-resolution point: the nearest pixel
@@ -49,10 +49,10 @@ void symline_i_pt_off(const symline_point *q, uint32_t level, int32_t ox, int32_
 void symline_i_pt_to_full(symline_point *q, uint32_t level)
 {
     int32_t x8, y8, x7, y7, x, y;
-    symline_i_pt_off(q, level, 0, 0, &x8, &y8);
+    symline_i_pt_off(q, level, NULL, &x8, &y8);
     /* Q7 full-resolution coordinates: half the Q8 ones (always even). */
-    x7 = x8 / 2;
-    y7 = y8 / 2;
+    x7 = x8 >> 1; /* exact: x8, y8 are even */
+    y7 = y8 >> 1;
     x = (x7 + 64) >> 7;
     y = (y7 + 64) >> 7;
     q->x = (uint16_t)x;

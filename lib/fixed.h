@@ -52,8 +52,9 @@ static inline int32_t symline_i_pt_q8y(const symline_point *q, uint32_t level)
 }
 
 /* (*x, *y) = the Q8 full-resolution position of grid point q at `level`
- * minus (ox, oy). Out of line: one copy for the stages that need both. */
-void symline_i_pt_off(const symline_point *q, uint32_t level, int32_t ox, int32_t oy, int32_t *x,
+ * minus the origin (o[0], o[1]) (Q8; NULL: (0, 0)). Out of line: one copy
+ * for the stages that need both. */
+void symline_i_pt_off(const symline_point *q, uint32_t level, const int32_t *o, int32_t *x,
                       int32_t *y);
 
 /* Makes grid point q at `level` a full-resolution point: the nearest pixel

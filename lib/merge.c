@@ -19,8 +19,9 @@
 
 static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
 {
-    const int64_t dx = (int64_t)ax - bx, dy = (int64_t)ay - by;
-    return (uint64_t)(dx * dx + dy * dy);
+    /* Ends within 2^25 Q8 of the frame (merge.h): differences fit 32 bits. */
+    const int32_t dx = ax - bx, dy = ay - by;
+    return (uint64_t)((int64_t)dx * dx + (int64_t)dy * dy);
 }
 
 /* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
@@ -33,9 +34,9 @@ static void end_of(const symline_segment *a, const symline_segment *b, uint32_t 
 }
 
 /* Whether line b may join line a: close ends, each piece on the other's line.
- * Sets the joined ends (the extreme ends along the longer piece). */
-SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b, uint64_t gap2,
-                                  uint32_t dev_q8, int32_t ends[4])
+ * Sets the joined ends (the extreme ends along the longer piece) as j's. */
+SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b,
+                                  uint32_t gap_q8, uint32_t dev_q8, symline_segment *j)
 {
     const int32_t adx = a->x1 - a->x0, ady = a->y1 - a->y0;
     const int32_t bdx = b->x1 - b->x0, bdy = b->y1 - b->y0;
@@ -60,7 +61,7 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
         t = dist2(x, y, ox, oy);
         g = t < g ? t : g;
     }
-    if (g > gap2) {
+    if (g > (uint64_t)gap_q8 * gap_q8) {
         return false;
     }
     for (i = 0; i < 4u; i++) {
@@ -79,35 +80,16 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
         proj = (int64_t)x * dx + (int64_t)y * dy;
         if (i == 0u || proj < lo) {
             lo = proj;
-            ends[0] = x;
-            ends[1] = y;
+            j->x0 = x;
+            j->y0 = y;
         }
         if (i == 0u || proj > hi) {
             hi = proj;
-            ends[2] = x;
-            ends[3] = y;
+            j->x1 = x;
+            j->y1 = y;
         }
     }
     return true;
-}
-
-/* The joined piece's max_dev, or SL_NO_JOIN when it would be a curve
- * (ap, bp: the pieces' points). Kept apart from mergeable() so their frames
- * are never on the stack together. */
-SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_point *ap,
-                                       const symline_segment *b, const symline_point *bp,
-                                       const int32_t ends[4], uint32_t curve_q8)
-{
-    uint32_t d = 0u, sm = 0u, k;
-    for (k = 0; k < 2u; k++) {
-        const symline_point *p = k ? bp : ap;
-        const uint32_t n = k ? b->count : a->count;
-        const uint32_t dk = symline_i_max_dev(p, n, 0u, ends[0], ends[1], ends[2], ends[3]);
-        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, ends[0], ends[1], ends[2], ends[3]);
-        d = dk > d ? dk : d;
-        sm = sk > sm ? sk : sm;
-    }
-    return symline_i_is_curve(ends[0], ends[1], ends[2], ends[3], sm, curve_q8) ? SL_NO_JOIN : d;
 }
 
 /* A line may join; so may a piece taken for a curve whose points (p),
@@ -116,40 +98,22 @@ SL_NOINLINE static uint32_t joined_dev(const symline_segment *a, const symline_p
 static bool joinable(const symline_segment *s, const symline_point *p, uint32_t curve_q8)
 {
     return s->kind == SYMLINE_KIND_LINE ||
-           symline_i_smooth_dev(p, s->count, 0u, s->x0, s->y0, s->x1, s->y1) <= curve_q8 / 2u;
+           symline_i_smooth_dev(p, s->count, 0u, s) <= curve_q8 / 2u;
 }
 
-/* A segment's ends, Q8. */
-static void set_ends(symline_segment *s, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+/* Byte by byte: a struct assignment or memcpy may become a libc call. */
+static void copy_bytes(void *d, const void *s, size_t n)
 {
-    s->x0 = x0;
-    s->y0 = y0;
-    s->x1 = x1;
-    s->y1 = y1;
-}
-
-/* Field-by-field copy (a struct assignment may become a libc memcpy call). */
-static void copy_segment(symline_segment *d, const symline_segment *s)
-{
-    set_ends(d, s->x0, s->y0, s->x1, s->y1);
-    d->max_dev = s->max_dev;
-    d->first = s->first;
-    d->count = s->count;
-    d->kind = s->kind;
-    d->axis = s->axis;
-    d->level = s->level;
-    d->merged = s->merged;
+    uint8_t *o = (uint8_t *)d;
+    const uint8_t *i = (const uint8_t *)s;
+    while (n-- != 0u) {
+        *o++ = *i++;
+    }
 }
 
 static void copy_points(symline_point *d, const symline_point *s, uint32_t n)
 {
-    uint32_t k;
-    for (k = 0; k < n; k++) {
-        d[k].x = s[k].x;
-        d[k].y = s[k].y;
-        d[k].fx = s[k].fx;
-        d[k].fy = s[k].fy;
-    }
+    copy_bytes(d, s, (size_t)n * sizeof(symline_point));
 }
 
 /* A slot whose segment was absorbed (kind is a symline_kind otherwise); the
@@ -181,7 +145,6 @@ static void copy_points(symline_point *d, const symline_point *s, uint32_t n)
 typedef struct merger {
     symline_result *r;
     uint32_t n; /* slots */
-    uint64_t gap2;
     uint32_t gap_q8, dev_q8, curve_q8;
     uint32_t cols, rows; /* of the grid; cols 0: no grid, every later piece is tried */
     int32_t margin;      /* Q8, across i's line */
@@ -191,9 +154,9 @@ typedef struct merger {
     symline_point *ap;  /* the piece in hand's points (in out, or in place) */
 } merger;
 
-/* Piece j joins piece i (i < j): the joined ends and max_dev, j's points
+/* Piece j joins piece i (i < j): the joined ends and max_dev (e's), j's points
  * right behind i's, slot j gone. */
-static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uint32_t dev)
+static void absorb(merger *m, uint32_t i, uint32_t j, const symline_segment *e)
 {
     symline_result *r = m->r;
     symline_segment *a = &r->segments[i];
@@ -201,8 +164,7 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uin
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
     const uint8_t lb = r->segments[j].level;
-    set_ends(a, ends[0], ends[1], ends[2], ends[3]);
-    a->max_dev = dev;
+    copy_bytes(a, e, offsetof(symline_segment, first)); /* the ends and max_dev */
     a->kind = SYMLINE_KIND_LINE;
     a->level = a->level > lb ? a->level : lb;
     a->merged = true; /* points piece after piece (curvejoin.c) */
@@ -221,9 +183,29 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const int32_t ends[4], uin
     r->segments[j].kind = SL_GONE;
 }
 
-/* The joined piece's max_dev when piece j may join piece i (ends: the
- * joined ends), else SL_NO_JOIN. */
-static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, int32_t ends[4])
+/* The joined piece's max_dev, or SL_NO_JOIN when it would be a curve by
+ * the curve threshold plus half a block of level (j: the joined ends; the
+ * pieces' points: a's in hand, b's in place). Kept apart from mergeable() so
+ * their frames are never on the stack together. */
+SL_NOINLINE static uint32_t joined_dev(const merger *m, const symline_segment *a,
+                                       const symline_segment *b, const symline_segment *j,
+                                       uint32_t level)
+{
+    uint32_t d = 0u, sm = 0u, k;
+    for (k = 0; k < 2u; k++) {
+        const symline_point *p = k ? m->r->points + b->first : m->ap;
+        const uint32_t n = k ? b->count : a->count;
+        const uint32_t dk = symline_i_max_dev(p, n, 0u, j);
+        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, j);
+        d = dk > d ? dk : d;
+        sm = sk > sm ? sk : sm;
+    }
+    return symline_i_is_curve(j, sm, m->curve_q8 + symline_i_block_half_q8(level)) ? SL_NO_JOIN : d;
+}
+
+/* The joined piece's max_dev when piece j may join piece i (e: the joined
+ * ends), else SL_NO_JOIN. */
+static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segment *e)
 {
     const symline_segment *a = &m->r->segments[i];
     const symline_segment *b = &m->r->segments[j];
@@ -232,11 +214,11 @@ static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, int32_t ends[4
     /* The cheap geometric test first; both are pure, so the order changes
      * nothing but the cost. */
     if (b->kind == SL_GONE ||
-        !mergeable(a, b, m->gap2, m->dev_q8 + symline_i_block_half_q8(level), ends) ||
+        !mergeable(a, b, m->gap_q8, m->dev_q8 + symline_i_block_half_q8(level), e) ||
         !joinable(b, bp, m->curve_q8)) {
         return SL_NO_JOIN;
     }
-    return joined_dev(a, m->ap, b, bp, ends, m->curve_q8 + symline_i_block_half_q8(level));
+    return joined_dev(m, a, b, e, level);
 }
 
 /*
@@ -257,8 +239,6 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
     q.cols = m->cols;
     q.rows = m->rows;
     q.mode = SL_WALK_GATHER;
-    q.px0 = 1u; /* no previous piece */
-    q.px1 = 0u;
     q.head = m->head;
     q.next = m->next;
     q.cand = m->cand;
@@ -273,7 +253,7 @@ SL_NOINLINE static int32_t candidates(merger *m, const symline_segment *a)
  * or false when none does. */
 static bool join_first(merger *m, uint32_t i)
 {
-    int32_t ends[4];
+    symline_segment e; /* the joined ends */
     uint32_t j = i + 1u;
     if (m->cols != 0u) {
         const int32_t nc = candidates(m, &m->r->segments[i]);
@@ -284,7 +264,7 @@ static bool join_first(merger *m, uint32_t i)
              * in the grid. */
             for (k = 0; k < (uint32_t)nc; k++) {
                 const uint32_t c = m->cand[k];
-                if (c > i && c < best && pair_dev(m, i, c, ends) != SL_NO_JOIN) {
+                if (c > i && c < best && pair_dev(m, i, c, &e) != SL_NO_JOIN) {
                     best = c;
                 }
             }
@@ -292,9 +272,9 @@ static bool join_first(merger *m, uint32_t i)
         }
     }
     for (; j < m->n; j++) {
-        const uint32_t dev = pair_dev(m, i, j, ends);
-        if (dev != SL_NO_JOIN) {
-            absorb(m, i, j, ends, dev);
+        e.max_dev = pair_dev(m, i, j, &e);
+        if (e.max_dev != SL_NO_JOIN) {
+            absorb(m, i, j, &e);
             return true;
         }
     }
@@ -304,17 +284,17 @@ static bool join_first(merger *m, uint32_t i)
 /* The grid's lists of the slots in it, in their ends' cells. */
 static void grid_build(merger *m)
 {
-    const symline_segment *segs = m->r->segments;
-    uint32_t c, s, e;
+    uint32_t c, node;
     for (c = 0; c < m->cols * m->rows; c++) {
         m->head[c] = SL_NO_NODE;
     }
-    for (s = 0; s < m->indexed; s++) {
-        for (e = 0; e < 2u && segs[s].kind != SL_GONE; e++) {
-            const int32_t x = e ? segs[s].x1 : segs[s].x0, y = e ? segs[s].y1 : segs[s].y0;
-            c = symline_i_cell_of(y, m->rows) * m->cols + symline_i_cell_of(x, m->cols);
-            m->next[2u * s + e] = m->head[c];
-            m->head[c] = 2u * s + e;
+    for (node = 0; node < 2u * m->indexed; node++) { /* end node & 1 of slot node / 2 */
+        const symline_segment *g = &m->r->segments[node >> 1];
+        if (g->kind != SL_GONE) {
+            c = symline_i_cell_at(m->cols, m->rows, (node & 1u) ? g->x1 : g->x0,
+                                  (node & 1u) ? g->y1 : g->y0);
+            m->next[node] = m->head[c];
+            m->head[c] = node;
         }
     }
 }
@@ -326,11 +306,10 @@ static void grid_init(merger *m, void *ws, size_t bytes, uint32_t width, uint32_
 {
     uint8_t *cur = (uint8_t *)ws;
     size_t e;
-    m->cols = ((width - 1u) >> SL_CELL_SHIFT) + 1u;
-    m->rows = ((height - 1u) >> SL_CELL_SHIFT) + 1u;
+    const uint32_t cells = symline_i_grid_dims(width, height, &m->cols, &m->rows);
     m->head = ws == NULL ? NULL
-                         : (uint32_t *)symline_i_carve(
-                               &cur, cur + bytes, (size_t)m->cols * m->rows * sizeof(uint32_t));
+                         : (uint32_t *)symline_i_carve(&cur, cur + bytes,
+                                                       (size_t)cells * sizeof(uint32_t));
     if (m->head == NULL) {
         m->cols = 0u;
         return;
@@ -359,7 +338,6 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
     m.r = r;
     m.n = r->segment_count;
     m.gap_q8 = gap_px << SL_Q8_SHIFT; /* gap_px <= SYMLINE_MAX_DIM: no wrap */
-    m.gap2 = (uint64_t)m.gap_q8 * m.gap_q8;
     m.dev_q8 = cfg->merge_dev_q8;
     m.curve_q8 = cfg->curve_dev_q8;
     /* Room for the layout: as many points again as there are. */
@@ -402,7 +380,7 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
     }
     for (i = 0, w = 0; i < m.n; i++) {
         if (r->segments[i].kind != SL_GONE) {
-            copy_segment(&r->segments[w++], &r->segments[i]);
+            copy_bytes(&r->segments[w++], &r->segments[i], sizeof(symline_segment));
         }
     }
     r->segment_count = w;

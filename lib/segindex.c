@@ -19,19 +19,23 @@
 #include "fixed.h"
 #include "segments.h"
 
-static uint32_t cells_across(uint32_t n)
+uint32_t symline_i_grid_dims(uint32_t width, uint32_t height, uint32_t *cols, uint32_t *rows)
 {
-    return ((n - 1u) >> SL_CELL_SHIFT) + 1u;
+    *cols = ((width - 1u) >> SL_CELL_SHIFT) + 1u;
+    *rows = ((height - 1u) >> SL_CELL_SHIFT) + 1u;
+    return *cols * *rows;
 }
 
 size_t symline_i_segindex_ws_size(uint32_t width, uint32_t height)
 {
-    const size_t cells = (size_t)cells_across(width) * cells_across(height);
+    uint32_t cols, rows;
+    const size_t cells = symline_i_grid_dims(width, height, &cols, &rows);
     return symline_i_align_up(cells * sizeof(uint32_t)) + SL_ALIGN +
            symline_i_align_up(cells * SL_IDS_PER_CELL * sizeof(uint32_t));
 }
 
-uint32_t symline_i_cell_of(int32_t v_q8, uint32_t n)
+/* The cell (column or row) of a Q8 coordinate, clamped to 0 .. n-1. */
+static uint32_t cell_of(int32_t v_q8, uint32_t n)
 {
     uint32_t c;
     if (v_q8 < 0) {
@@ -41,20 +45,13 @@ uint32_t symline_i_cell_of(int32_t v_q8, uint32_t n)
     return c < n ? c : n - 1u;
 }
 
-static uint32_t scaled(uint32_t u, uint32_t k, uint32_t sh)
-{
-    return (u >> sh) * k + (((u & ((1u << sh) - 1u)) * k) >> sh);
-}
-
 static void visit_cell(symline_i_cellwalk *w, uint32_t c)
 {
     uint32_t node;
     /* if/else rather than a switch: no jump table helper on small cores. */
     if (w->mode == SL_WALK_COUNT) {
-        w->end[c] += w->width;
+        w->end[c] += w->width * w->sign;
         w->added += w->width;
-    } else if (w->mode == SL_WALK_UNCOUNT) {
-        w->end[c] -= w->width;
     } else if (w->mode == SL_WALK_FILL) {
         w->ids[w->end[c]++] = w->seg;
         if (w->width == 2u) {
@@ -70,37 +67,60 @@ static void visit_cell(symline_i_cellwalk *w, uint32_t c)
     }
 }
 
+uint32_t symline_i_cell_at(uint32_t cols, uint32_t rows, int32_t x_q8, int32_t y_q8)
+{
+    return cell_of(y_q8, rows) * cols + cell_of(x_q8, cols);
+}
+
+/* The cells c[0] .. c[1] (of n) within margin of the span from p to q. */
+static void cell_span(int32_t p, int32_t q, int32_t margin, uint32_t n, uint32_t c[2])
+{
+    c[0] = cell_of((p < q ? p : q) - margin, n);
+    c[1] = cell_of((p > q ? p : q) + margin, n);
+}
+
+/* a + d k / 2^sh, d's magnitude rounded down, in 32 bits: |d| < 2^26 and
+ * k <= 2^sh <= 2^13 keep both products below 2^26. */
+SL_NOINLINE static int32_t split_at(int32_t a, int32_t d, uint32_t k, uint32_t sh)
+{
+    const uint32_t u = (uint32_t)(d < 0 ? -d : d);
+    const int32_t o = (int32_t)((u >> sh) * k + (((u & ((1u << sh) - 1u)) * k) >> sh));
+    return d < 0 ? a - o : a + o;
+}
+
 void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
                               int32_t margin)
 {
-    const uint32_t ux = (uint32_t)(bx > ax ? bx - ax : ax - bx);
-    const uint32_t uy = (uint32_t)(by > ay ? by - ay : ay - by);
+    const int32_t dx = bx - ax, dy = by - ay;
+    const uint32_t ux = (uint32_t)(dx < 0 ? -dx : dx), uy = (uint32_t)(dy < 0 ? -dy : dy);
     const uint32_t len = ux > uy ? ux : uy;
-    uint32_t sh = 0u, k;
+    /* The previous piece's cells: none before the first. */
+    uint32_t sh = 0u, k, px0 = 1u, px1 = 0u, py0 = 0u, py1 = 0u;
     int32_t px = ax, py = ay;
-    margin += (int32_t)((len + (uint32_t)margin) >> 10) + SL_PX_Q8(1);
+    margin += (int32_t)((len + (uint32_t)margin) >> 10) + (int32_t)SL_PX_Q8(1u);
     while ((len >> sh) > (SL_PX_Q8(1u) << SL_CELL_SHIFT)) {
         sh++;
     }
+    /* 2^sh pieces of at most a cell; any split of the chord covers it. */
     for (k = 1u; k <= (1u << sh); k++) {
-        const int32_t ox = (int32_t)scaled(ux, k, sh), oy = (int32_t)scaled(uy, k, sh);
-        const int32_t qx = bx >= ax ? ax + ox : ax - ox, qy = by >= ay ? ay + oy : ay - oy;
-        const uint32_t cx0 = symline_i_cell_of((px < qx ? px : qx) - margin, w->cols);
-        const uint32_t cx1 = symline_i_cell_of((px > qx ? px : qx) + margin, w->cols);
-        const uint32_t cy0 = symline_i_cell_of((py < qy ? py : qy) - margin, w->rows);
-        const uint32_t cy1 = symline_i_cell_of((py > qy ? py : qy) + margin, w->rows);
-        uint32_t cx, cy;
-        for (cy = cy0; cy <= cy1; cy++) {
-            for (cx = cx0; cx <= cx1; cx++) {
-                if (cx < w->px0 || cx > w->px1 || cy < w->py0 || cy > w->py1) {
-                    visit_cell(w, cy * w->cols + cx);
+        /* The last piece ends at b (a short chord is one piece). */
+        const bool last = k == 1u << sh;
+        const int32_t qx = last ? bx : split_at(ax, dx, k, sh);
+        const int32_t qy = last ? by : split_at(ay, dy, k, sh);
+        uint32_t cx[2], cy[2], x, y;
+        cell_span(px, qx, margin, w->cols, cx);
+        cell_span(py, qy, margin, w->rows, cy);
+        for (y = cy[0]; y <= cy[1]; y++) {
+            for (x = cx[0]; x <= cx[1]; x++) {
+                if (x < px0 || x > px1 || y < py0 || y > py1) {
+                    visit_cell(w, y * w->cols + x);
                 }
             }
         }
-        w->px0 = cx0;
-        w->px1 = cx1;
-        w->py0 = cy0;
-        w->py1 = cy1;
+        px0 = cx[0];
+        px1 = cx[1];
+        py0 = cy[0];
+        py1 = cy[1];
         px = qx;
         py = qy;
     }
@@ -110,17 +130,15 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
  * id, a curve piece by piece (a cell then asks only the pieces near it, not
  * a long curve along its whole length), each piece in every cell it
  * touches. Point indices from 2^31 on (16 GiB of points) list the curve whole. */
-static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32_t id, int32_t tol)
+static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32_t id)
 {
     const symline_segment *s = &r->segments[id];
     const symline_point *p = r->points + s->first;
     uint32_t i;
-    v->px0 = 1u; /* no previous piece */
-    v->px1 = 0u;
     v->seg = id;
     v->width = 1u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
-        symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, tol);
+        symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, v->margin);
         return;
     }
     v->width = 2u;
@@ -128,15 +146,13 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
         v->seg = SL_PIECE | (s->first + i);
         v->piece_end = s->first + j;
-        v->px0 = 1u;
-        v->px1 = 0u;
         symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
-                                 (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, tol);
+                                 (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, v->margin);
     }
 }
 
 /* The start of an area, aligned for uint32_t ids, and how many it holds. */
-static uint32_t *id_area(void *mem, size_t bytes, uint32_t *n)
+SL_NOINLINE static uint32_t *id_area(void *mem, size_t bytes, uint32_t *n)
 {
     uint8_t *cur = (uint8_t *)mem;
     const size_t skip = (SL_ALIGN - ((uintptr_t)cur & (SL_ALIGN - 1u))) & (SL_ALIGN - 1u);
@@ -154,12 +170,10 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
                               const symline_result *r, uint32_t nseg, int32_t tol_q8)
 {
     uint8_t *cur = (uint8_t *)mem, *const lim = (uint8_t *)mem + bytes;
-    const uint32_t cells = cells_across(width) * cells_across(height);
+    const uint32_t cells = symline_i_grid_dims(width, height, &ix->cols, &ix->rows);
     uint32_t c, s, cap, cap2, total = 0u, sum = 0u;
     uint32_t *ids2;
     symline_i_cellwalk v;
-    ix->cols = cells_across(width);
-    ix->rows = cells_across(height);
     ix->end = (uint32_t *)symline_i_carve(&cur, lim, (size_t)cells * sizeof(uint32_t));
     ix->indexed = 0u;
     if (ix->end == NULL) {
@@ -180,14 +194,16 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
         ix->end[c] = 0u;
     }
     /* Count, segment by segment, while the ids fit. */
+    v.margin = tol_q8;
     v.mode = SL_WALK_COUNT;
+    v.sign = 1u;
     for (s = 0; s < nseg && s < SL_PIECE; s++) {
         v.added = 0u;
-        visit_segment(&v, r, s, tol_q8);
+        visit_segment(&v, r, s);
         if (v.added > cap - total) {
             /* Does not fit: take its counts back; it and later ones stay out. */
-            v.mode = SL_WALK_UNCOUNT;
-            visit_segment(&v, r, s, tol_q8);
+            v.sign = UINT32_MAX;
+            visit_segment(&v, r, s);
             break;
         }
         total += v.added;
@@ -201,31 +217,33 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
     v.mode = SL_WALK_FILL;
     for (s = 0; s < ix->indexed; s++) {
-        visit_segment(&v, r, s, tol_q8);
+        visit_segment(&v, r, s);
     }
 }
 
 bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
                              int32_t x, int32_t y, int32_t tol_q8)
 {
+    symline_i_near q;
     uint32_t i = 0u;
+    q.x = x;
+    q.y = y;
+    q.tol = tol_q8;
     if (ix != NULL && ix->cols != 0u) {
-        const uint32_t c =
-            symline_i_cell_of(y, ix->rows) * ix->cols + symline_i_cell_of(x, ix->cols);
+        const uint32_t c = symline_i_cell_at(ix->cols, ix->rows, x, y);
         uint32_t k;
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
             const uint32_t e = ix->ids[k];
             if ((e & SL_PIECE) != 0u
-                    ? symline_i_near_piece(&r->points[e - SL_PIECE], &r->points[ix->ids[++k]], x, y,
-                                           tol_q8)
-                    : symline_i_near_segment(&r->segments[e], r->points, x, y, tol_q8)) {
+                    ? symline_i_near_piece(&r->points[e - SL_PIECE], &r->points[ix->ids[++k]], &q)
+                    : symline_i_near_segment(&r->segments[e], r->points, &q)) {
                 return true;
             }
         }
         i = ix->indexed;
     }
     for (; i < nseg; i++) {
-        if (symline_i_near_segment(&r->segments[i], r->points, x, y, tol_q8)) {
+        if (symline_i_near_segment(&r->segments[i], r->points, &q)) {
             return true;
         }
     }

@@ -33,20 +33,20 @@ typedef struct symline_i_segindex {
  * of at most a cell; each cell is visited once per piece (a cell the
  * previous piece touched is skipped). What a visit does depends on the
  * mode: the two sweeps of symline_i_segindex_build(), or the merge's gathering of
- * the segment ends listed in the cells (endgrid.c). A switch rather than a
+ * the segment ends listed in the cells (merge.c). A switch rather than a
  * function pointer, so that the firmware's stack analysis can follow it. */
 typedef enum symline_i_walk_mode {
-    SL_WALK_COUNT,   /* end[c]++ and added++ */
-    SL_WALK_UNCOUNT, /* end[c]-- */
-    SL_WALK_FILL,    /* ids[end[c]++] = seg */
-    SL_WALK_GATHER   /* every node of cell c's list (head, next) appended to cand */
+    SL_WALK_COUNT, /* end[c] += width * sign (-1: a count taken back), added += width */
+    SL_WALK_FILL,  /* ids[end[c]++] = seg */
+    SL_WALK_GATHER /* every node of cell c's list (head, next) appended to cand */
 } symline_i_walk_mode;
 
 typedef struct symline_i_cellwalk {
     uint32_t cols, rows;
+    int32_t margin; /* COUNT, FILL: the segment grid's tolerance (Q8) */
     symline_i_walk_mode mode;
-    uint32_t px0, py0, px1, py1;     /* the previous piece's cells; set px0 > px1 to start */
-    uint32_t *end, *ids, seg, added; /* COUNT, UNCOUNT, FILL */
+    uint32_t *end, *ids, seg, added; /* COUNT, FILL */
+    uint32_t sign;                   /* COUNT: 1, or UINT32_MAX (-1) */
     uint32_t piece_end, width;       /* FILL: a curve piece's second entry; 2 then, else 1 */
     const uint32_t *head, *next;     /* GATHER */
     uint32_t *cand, cand_cap, n;     /* GATHER: n found; cap + 1 when full */
@@ -55,8 +55,11 @@ typedef struct symline_i_cellwalk {
 void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
                               int32_t margin);
 
-/* The cell (column or row) of a Q8 coordinate, clamped to 0 .. n-1. */
-uint32_t symline_i_cell_of(int32_t v_q8, uint32_t n);
+/* The grid of a width x height frame: *cols x *rows cells (returned). */
+uint32_t symline_i_grid_dims(uint32_t width, uint32_t height, uint32_t *cols, uint32_t *rows);
+
+/* The cell of a Q8 position, each coordinate clamped to the grid. */
+uint32_t symline_i_cell_at(uint32_t cols, uint32_t rows, int32_t x_q8, int32_t y_q8);
 
 /* Bytes of workspace symline_i_segindex_build() uses for a width x height frame. */
 size_t symline_i_segindex_ws_size(uint32_t width, uint32_t height);

@@ -53,10 +53,11 @@ uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
     return best;
 }
 
-/* The length of (dx, dy), rounded down; 32-bit operands, 64-bit squares. */
-SL_NOINLINE static uint64_t hypot_q(int32_t dx, int32_t dy)
+/* The length of (dx, dy), rounded down; 32-bit operands, 64-bit squares, a
+ * length below 2^31.5 (32 bits). */
+SL_NOINLINE static uint32_t hypot_q(int32_t dx, int32_t dy)
 {
-    return symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
+    return (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)dx * dx + (int64_t)dy * dy));
 }
 
 uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
@@ -64,11 +65,11 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
 {
     /* Differences of Q8 coordinates of one frame fit 25 bits; products 64. */
     const int32_t wx = px - ax, wy = py - ay;
-    uint64_t len = hypot_q(dx, dy);
+    const uint32_t len = hypot_q(dx, dy);
     int64_t c;
     uint64_t cross;
     if (len == 0u) {
-        return (uint32_t)hypot_q(wx, wy);
+        return hypot_q(wx, wy);
     }
     c = (int64_t)wx * dy - (int64_t)wy * dx;
     cross = (uint64_t)(c < 0 ? -c : c);
@@ -79,26 +80,26 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
  * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, int32_t x0,
-                                       int32_t y0, int32_t dx, int32_t dy)
+SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, const int32_t g[4])
 {
+    const int32_t dx = g[2], dy = g[3];
     int32_t wx, wy;
-    symline_i_pt_off(q, level, x0, y0, &wx, &wy);
+    symline_i_pt_off(q, level, g, &wx, &wy);
     return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
                           : (int64_t)wx * dy - (int64_t)wy * dx;
 }
 
 /* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]. */
-static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
-                           int32_t y0, int32_t dx, int32_t dy, uint32_t win)
+static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, const int32_t g[4],
+                           uint32_t win)
 {
     int64_t sum = 0;
     uint64_t best = 0u;
     uint32_t i;
     for (i = 0; i < n; i++) {
-        sum += chord_cross(&p[i], level, x0, y0, dx, dy);
+        sum += chord_cross(&p[i], level, g);
         if (i >= win) {
-            sum -= chord_cross(&p[i - win], level, x0, y0, dx, dy);
+            sum -= chord_cross(&p[i - win], level, g);
         }
         if (i + 1u >= win) {
             const uint64_t m = (uint64_t)(sum < 0 ? -sum : sum);
@@ -109,10 +110,10 @@ static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, i
 }
 
 SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level,
-                                         int32_t x0, int32_t y0, int32_t x1, int32_t y1,
-                                         uint32_t win)
+                                         const symline_segment *c, uint32_t win)
 {
-    const int32_t dx = x1 - x0, dy = y1 - y0;
+    /* The chord: its first end and its direction (x0, y0, dx, dy). */
+    const int32_t dx = c->x1 - c->x0, dy = c->y1 - c->y0, g[4] = {c->x0, c->y0, dx, dy};
     uint64_t best, len;
     if (n == 0u) {
         return 0u;
@@ -122,7 +123,7 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
      * one division at the end. With no direction: the distance to the end
      * itself, point by point. */
     win = (dx | dy) == 0 || win < 1u ? 1u : (win > n ? n : win);
-    best = window_max(p, n, level, x0, y0, dx, dy, win);
+    best = window_max(p, n, level, g, win);
     if ((dx | dy) == 0) {
         return (uint32_t)symline_i_isqrt64(best);
     }
@@ -135,11 +136,11 @@ SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uin
 /* A curve bends away from its chord by more than the threshold and by more
  * than 1/32 of the chord: a straight line's pixel steps and noise stay near
  * 1-2 px however long it is, while an arc's sagitta grows with its chord. */
-bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
-                        uint32_t thr)
+bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr)
 {
-    const int32_t dx = x1 - x0, dy = y1 - y0; /* 25 bits: Q8 coordinates of one frame */
-    const uint64_t chord = hypot_q(dx, dy);
+    /* 25 bits: Q8 coordinates of one frame */
+    const int32_t dx = c->x1 - c->x0, dy = c->y1 - c->y0;
+    const uint32_t chord = hypot_q(dx, dy);
     return max_dev > thr && (uint64_t)max_dev * 32u > chord;
 }
 
@@ -153,13 +154,20 @@ bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t
  */
 #define SL_FIT_SAMPLES 2048u
 
-/* Point q in Q4 full resolution relative to (ox, oy) (Q8) minus (mx, my) (Q4). */
-SL_NOINLINE static void rel_q4(const symline_point *q, uint32_t level, int32_t ox, int32_t oy,
-                               int32_t mx, int32_t my, int32_t *x, int32_t *y)
+/* The fit's frame: the points' level, the origin o (Q8 full
+ * resolution) and the mean (mx, my) (Q4, relative to the origin). */
+typedef struct symline_i_fitframe {
+    uint32_t level;
+    int32_t o[2], mx, my;
+} symline_i_fitframe;
+
+/* Point q in Q4 full resolution relative to the origin, minus the mean. */
+SL_NOINLINE static void rel_q4(const symline_point *q, const symline_i_fitframe *f, int32_t *x,
+                               int32_t *y)
 {
-    symline_i_pt_off(q, level, ox, oy, x, y);
-    *x = *x / 16 - mx;
-    *y = *y / 16 - my;
+    symline_i_pt_off(q, f->level, f->o, x, y);
+    *x = *x / 16 - f->mx;
+    *y = *y / 16 - f->my;
 }
 
 SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t level,
@@ -167,25 +175,31 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
 {
     /* Coordinates in Q4 full resolution, relative to the first point. */
     const uint32_t step = n / SL_FIT_SAMPLES + 1u;
-    int32_t ox, oy, sx = 0, sy = 0, mx, my, ux, uy, len;
+    symline_i_fitframe f;
+    int32_t ux, uy, len;
+    uint32_t sx = 0u, sy = 0u; /* the second sweep's sums wrap unused */
     int64_t a = 0, b = 0, c = 0;
-    uint32_t i, cnt = 0u;
-    symline_i_pt_off(&p[0], level, 0, 0, &ox, &oy);
-    for (i = 0; i < n; i += step) {
-        int32_t qx, qy;
-        rel_q4(&p[i], level, ox, oy, 0, 0, &qx, &qy);
-        sx += qx;
-        sy += qy;
-        cnt++;
-    }
-    mx = sx / (int32_t)cnt;
-    my = sy / (int32_t)cnt;
-    for (i = 0; i < n; i += step) {
-        int32_t dx, dy;
-        rel_q4(&p[i], level, ox, oy, mx, my, &dx, &dy);
-        a += (int64_t)dx * dx;
-        b += (int64_t)dx * dy;
-        c += (int64_t)dy * dy;
+    uint32_t i, k, cnt = 0u;
+    f.level = level;
+    symline_i_pt_off(&p[0], level, NULL, &f.o[0], &f.o[1]);
+    /* Two sweeps: the mean (mx, my still 0), then the scatter about it. */
+    f.mx = f.my = 0;
+    for (k = 0; k < 2u; k++) {
+        for (i = 0; i < n; i += step) {
+            int32_t dx, dy;
+            rel_q4(&p[i], &f, &dx, &dy);
+            sx += (uint32_t)dx;
+            sy += (uint32_t)dy;
+            cnt++;
+            a += (int64_t)dx * dx;
+            b += (int64_t)dx * dy;
+            c += (int64_t)dy * dy;
+        }
+        if (k == 0u) {
+            f.mx = (int32_t)sx / (int32_t)cnt;
+            f.my = (int32_t)sy / (int32_t)cnt;
+            a = b = c = 0;
+        }
     }
     /* Until a, c (never negative) and |b| are below 2^30. */
     while ((a | c) >= ((int64_t)1 << 30) ||
@@ -199,9 +213,9 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
          * the halvings' rounding) keeps the larger eigenvalue lam = (a + c) / 2
          * + r within a + c + 1 < 2^31. */
         const int32_t a32 = (int32_t)a, c32 = (int32_t)c, ac = a32 - c32, b32 = (int32_t)b;
-        const uint32_t lam =
-            (uint32_t)((a32 + c32) / 2) +
-            (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac / 4 + (int64_t)b32 * b32));
+        const uint32_t lam = (uint32_t)(a32 + c32) / 2u +
+                             (uint32_t)symline_i_isqrt64((uint64_t)((int64_t)ac * ac) / 4u +
+                                                         (uint64_t)((int64_t)b32 * b32));
         ux = a32 >= c32 ? (int32_t)(lam - (uint32_t)c32) : b32;
         uy = a32 >= c32 ? b32 : (int32_t)(lam - (uint32_t)a32);
     }
@@ -210,7 +224,7 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
         ux /= 2;
         uy /= 2;
     }
-    len = (int32_t)symline_i_isqrt64((uint32_t)(ux * ux + uy * uy));
+    len = (int32_t)hypot_q(ux, uy);
     if (len == 0) {
         return false;
     }
@@ -220,11 +234,11 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     for (i = 0; i < 2u; i++) {
         int32_t qx, qy;
         int64_t t;
-        rel_q4(&p[i == 0u ? 0u : n - 1u], level, ox, oy, mx, my, &qx, &qy);
+        rel_q4(&p[i == 0u ? 0u : n - 1u], &f, &qx, &qy);
         t = (int64_t)qx * ux + (int64_t)qy * uy; /* Q4 * Q15 */
         /* Back to Q8 absolute: mean + t*u, Q4*Q15*Q15 -> Q8 is a shift by 26. */
-        const int32_t ex = ox + mx * 16 + (int32_t)((t * ux) >> 26);
-        const int32_t ey = oy + my * 16 + (int32_t)((t * uy) >> 26);
+        const int32_t ex = f.o[0] + f.mx * 16 + (int32_t)((t * ux) >> 26);
+        const int32_t ey = f.o[1] + f.my * 16 + (int32_t)((t * uy) >> 26);
         if (i == 0u) {
             s->x0 = ex;
             s->y0 = ey;
@@ -245,7 +259,7 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
  * even where its largest deviation stays under the curve threshold.
  */
 /* sum / (cnt len) in Q7 grid pixels, signed (Q7 keeps a difference of two in range). */
-SL_NOINLINE static int32_t mean_q7(int64_t sum, uint32_t cnt, uint64_t len)
+SL_NOINLINE static int32_t mean_q7(int64_t sum, uint32_t cnt, uint32_t len)
 {
     const uint32_t a =
         symline_i_div_q8((uint64_t)(sum < 0 ? -sum : sum) << SL_Q8_SHIFT, (uint64_t)cnt * len);
@@ -258,7 +272,8 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     const int32_t x0 = p[0].x, y0 = p[0].y;
     const int32_t dx = (int32_t)p[n - 1u].x - x0, dy = (int32_t)p[n - 1u].y - y0;
     const int64_t dd = (int64_t)dx * dx + (int64_t)dy * dy;
-    const uint64_t len = symline_i_isqrt64((uint64_t)dd);
+    /* Below 2^17: grid coordinates are 16-bit. */
+    const uint32_t len = (uint32_t)symline_i_isqrt64((uint64_t)dd);
     int64_t sm = 0, so = 0;
     uint32_t nm = 0u, no = 0u, i;
     int32_t d;
@@ -282,11 +297,12 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     return (uint32_t)d << 1;
 }
 
-/* The chord of p[0..n-1]'s first and last point as s's ends. */
+/* The chord of p[0..n-1]'s first and last point as s's ends, and its max_dev. */
 static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
-    symline_i_pt_off(&p[0], level, 0, 0, &s->x0, &s->y0);
-    symline_i_pt_off(&p[n - 1u], level, 0, 0, &s->x1, &s->y1);
+    symline_i_pt_off(&p[0], level, NULL, &s->x0, &s->y0);
+    symline_i_pt_off(&p[n - 1u], level, NULL, &s->x1, &s->y1);
+    s->max_dev = symline_i_max_dev(p, n, level, s);
 }
 
 void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
@@ -295,21 +311,20 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
     bool curve;
     chord_ends(p, n, level, s);
-    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
-    curve = symline_i_is_curve(s->x0, s->y0, s->x1, s->y1,
-                               symline_i_smooth_dev(p, n, level, s->x0, s->y0, s->x1, s->y1), thr);
+    curve = symline_i_is_curve(s, symline_i_smooth_dev(p, n, level, s), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
-        s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
+        s->max_dev = symline_i_max_dev(p, n, level, s);
     }
     s->level = (uint8_t)level;
     s->merged = false;
 }
 
 /* True when (px, py) lies within tol of the segment a-b (all Q8). */
-static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, int32_t px,
-                              int32_t py, int32_t tol)
+static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by,
+                              const symline_i_near *q)
 {
+    const int32_t px = q->x, py = q->y, tol = q->tol;
     /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
     int32_t dx, dy, wx, wy, t2, c;
     int64_t t, dd;
@@ -346,25 +361,24 @@ static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by, in
            (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
 }
 
-bool symline_i_near_piece(const symline_point *a, const symline_point *b, int32_t x, int32_t y,
-                          int32_t tol_q8)
+bool symline_i_near_piece(const symline_point *a, const symline_point *b, const symline_i_near *q)
 {
     /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
     return near_chord((int32_t)a->x << SL_Q8_SHIFT, (int32_t)a->y << SL_Q8_SHIFT,
-                      (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, x, y, tol_q8);
+                      (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, q);
 }
 
-bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,
-                            int32_t y, int32_t tol_q8)
+bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
+                            const symline_i_near *q)
 {
     uint32_t i;
     const symline_point *p = pts + s->first;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
-        return near_chord(s->x0, s->y0, s->x1, s->y1, x, y, tol_q8);
+        return near_chord(s->x0, s->y0, s->x1, s->y1, q);
     }
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
-        if (symline_i_near_piece(&p[i], &p[j], x, y, tol_q8)) {
+        if (symline_i_near_piece(&p[i], &p[j], q)) {
             return true;
         }
     }
@@ -380,5 +394,4 @@ void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, ui
     /* A curve keeps the chord of its first and last point (no line fit). */
     s->kind = SYMLINE_KIND_CURVE;
     chord_ends(p, n, level, s);
-    s->max_dev = symline_i_max_dev(p, n, level, s->x0, s->y0, s->x1, s->y1);
 }

@@ -33,12 +33,13 @@ void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, ui
 uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
                                 int32_t py);
 
-/* Largest distance (Q8) to the chord (x0,y0)-(x1,y1) (Q8) of the mean of
- * every `win` consecutive points of p[0..n-1] (grid coordinates at `level`;
- * level 0 for full-resolution points); win 1: of every point. With equal
- * chord ends: the distance to that end. 0 for no points. */
-uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level, int32_t x0,
-                             int32_t y0, int32_t x1, int32_t y1, uint32_t win);
+/* Largest distance (Q8) to the chord of c (its ends x0,y0-x1,y1, Q8; nothing
+ * else of c is read) of the mean of every `win` consecutive points of
+ * p[0..n-1] (grid coordinates at `level`; level 0 for full-resolution
+ * points); win 1: of every point. With equal chord ends: the distance to that
+ * end. 0 for no points. */
+uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level,
+                             const symline_segment *c, uint32_t win);
 
 /* Points per window of the smoothed deviation: a traced ridge on turf jitters
  * by a pixel or two from point to point, an arc's sagitta does not average out. */
@@ -46,34 +47,38 @@ uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level,
 
 /* Largest distance (Q8) of the points to the chord: a segment's max_dev. */
 static inline uint32_t symline_i_max_dev(const symline_point *p, uint32_t n, uint32_t level,
-                                         int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+                                         const symline_segment *c)
 {
-    return symline_i_chord_dev(p, n, level, x0, y0, x1, y1, 1u);
+    return symline_i_chord_dev(p, n, level, c, 1u);
 }
 
 /* The same for the mean of every SL_SMOOTH_WIN consecutive points: the bend
  * of the piece without the point-to-point jitter of its ridge. */
 static inline uint32_t symline_i_smooth_dev(const symline_point *p, uint32_t n, uint32_t level,
-                                            int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+                                            const symline_segment *c)
 {
-    return symline_i_chord_dev(p, n, level, x0, y0, x1, y1, SL_SMOOTH_WIN);
+    return symline_i_chord_dev(p, n, level, c, SL_SMOOTH_WIN);
 }
 
-/* Curve test: max_dev above thr and above 1/32 of the chord. */
-bool symline_i_is_curve(int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint32_t max_dev,
-                        uint32_t thr);
+/* Curve test: max_dev above thr and above 1/32 of c's chord (its ends). */
+bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr);
 
 /* Curves are followed through every SL_POLY_STEP-th point (symline_i_near_segment(),
  * and the grid of earlier segments, segindex.c). */
 #define SL_POLY_STEP 4u
 
-/* True when (x, y) (Q8) lies within tol_q8 of the curve piece a-b (whole
- * pixels): one step of symline_i_near_segment()'s polyline. */
-bool symline_i_near_piece(const symline_point *a, const symline_point *b, int32_t x, int32_t y,
-                          int32_t tol_q8);
-/* True when the full-resolution point (x, y) (Q8) lies within tol_q8 of segment s
- * (its chord for lines, its points for curves). */
-bool symline_i_near_segment(const symline_segment *s, const symline_point *pts, int32_t x,
-                            int32_t y, int32_t tol_q8);
+/* A nearness query: is the full-resolution point (x, y) (Q8) within tol
+ * (Q8) of a segment or piece? */
+typedef struct symline_i_near {
+    int32_t x, y, tol;
+} symline_i_near;
+
+/* True when q's point lies within q's tolerance of the curve piece a-b
+ * (whole pixels): one step of symline_i_near_segment()'s polyline. */
+bool symline_i_near_piece(const symline_point *a, const symline_point *b, const symline_i_near *q);
+/* True when q's point lies within q's tolerance of segment s (its chord for
+ * lines, its points for curves). */
+bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
+                            const symline_i_near *q);
 
 #endif /* SYMLINE_LIB_SEGMENTS_H */

@@ -4,37 +4,30 @@
  */
 #include "common.h"
 
-/* The names of SYMLINE_OK (0) down to SYMLINE_ERR_CONFIG (-8) in one string,
- * and where each begins: a byte per name instead of a pointer. */
-#define SL_S0 "ok"
-#define SL_S1 "NULL pointer"
-#define SL_S2 "width or height is 0 or larger than 65535"
-#define SL_S3 "stride smaller than the row length"
-#define SL_S4 "radius outside 1..255"
-#define SL_S5 "unknown axis"
-#define SL_S6 "buffer or workspace too small"
-#define SL_S7 "index or value out of range"
-#define SL_S8 "configuration value out of range"
-#define SL_S9 "unknown status"
-static const char NAMES[] = SL_S0 "\0" SL_S1 "\0" SL_S2 "\0" SL_S3 "\0" SL_S4 "\0" SL_S5 "\0" SL_S6
-                                  "\0" SL_S7 "\0" SL_S8 "\0" SL_S9;
-#define SL_O1 sizeof(SL_S0)
-#define SL_O2 (SL_O1 + sizeof(SL_S1))
-#define SL_O3 (SL_O2 + sizeof(SL_S2))
-#define SL_O4 (SL_O3 + sizeof(SL_S3))
-#define SL_O5 (SL_O4 + sizeof(SL_S4))
-#define SL_O6 (SL_O5 + sizeof(SL_S5))
-#define SL_O7 (SL_O6 + sizeof(SL_S6))
-#define SL_O8 (SL_O7 + sizeof(SL_S7))
-#define SL_O9 (SL_O8 + sizeof(SL_S8))
-static const uint8_t AT[10] = {0u, SL_O1, SL_O2, SL_O3, SL_O4, SL_O5, SL_O6, SL_O7, SL_O8, SL_O9};
+/* The names of SYMLINE_OK (0) down to SYMLINE_ERR_CONFIG (-8), then of
+ * anything else, in one string: the i-th follows the i-th NUL. */
+static const char NAMES[] = "ok\0"
+                            "NULL pointer\0"
+                            "width or height is 0 or larger than 65535\0"
+                            "stride smaller than the row length\0"
+                            "radius outside 1..255\0"
+                            "unknown axis\0"
+                            "buffer or workspace too small\0"
+                            "index or value out of range\0"
+                            "configuration value out of range\0"
+                            "unknown status";
 
 const char *symline_status_str(symline_status st)
 {
     /* -st for the codes, 9 (unknown) for anything else a caller may pass. */
-    const uint32_t i = 0u - (uint32_t)st;
+    uint32_t i = 0u - (uint32_t)st;
+    const char *s = NAMES;
     /* cppcheck-suppress knownConditionTrueFalse */
-    return NAMES + AT[i <= 8u ? i : 9u];
+    for (i = i <= 8u ? i : 9u; i > 0u; i--) {
+        while (*s++ != '\0') {
+        }
+    }
+    return s;
 }
 
 symline_status symline_image_check(const symline_image *img)
@@ -42,8 +35,8 @@ symline_status symline_image_check(const symline_image *img)
     if (img == NULL || img->data == NULL) {
         return SYMLINE_ERR_NULL;
     }
-    if (img->width == 0u || img->height == 0u || img->width > SYMLINE_MAX_DIM ||
-        img->height > SYMLINE_MAX_DIM) {
+    /* 0 wraps: one compare per dimension for 1 .. SYMLINE_MAX_DIM. */
+    if (img->width - 1u >= SYMLINE_MAX_DIM || img->height - 1u >= SYMLINE_MAX_DIM) {
         return SYMLINE_ERR_SIZE;
     }
     if (img->stride < img->width) {

@@ -27,10 +27,9 @@
  */
 #include "tracer.h"
 
+/* The x step of direction d (0: +x, 2: +y, 4: -x, 6: -y); its
+ * y step is DX[(d + 6) & 7] (90 degrees on). */
 static const int8_t DX[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-static const int8_t DY[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-/* Search order relative to the last direction: straight, 45-degree, 90-degree turns. */
-static const int8_t TURN[5] = {0, 1, -1, 2, -2};
 
 void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
                            const uint32_t *row_start, uint32_t h)
@@ -123,8 +122,11 @@ static bool follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, syml
             return true;
         }
         for (o = 0; o < tries; o++) {
-            const uint32_t d = dir == SL_ANY_DIR ? o : (uint32_t)((int32_t)dir + TURN[o]) & 7u;
-            const int32_t nx = x + DX[d], ny = y + DY[d];
+            /* Relative to the last direction: straight, 45-degree, then
+             * 90-degree turns, counter-clockwise first (0, +1, -1, +2, -2). */
+            const uint32_t d =
+                dir == SL_ANY_DIR ? o : (o & 1u ? dir + (o + 1u) / 2u : dir - o / 2u) & 7u;
+            const int32_t nx = x + DX[d], ny = y + DX[(d + 6u) & 7u];
             const int32_t idx = find(t, lb, x, y, nx, ny);
             if (unvisited(t, idx)) {
                 if (*pos >= cap) {

@@ -119,9 +119,22 @@ static void bend_tells_flat_arc_from_line(void **state)
     assert_true(symline_i_bend_q8(p, 60) >= 80u); /* ... but it bends */
 }
 
+/* c with the chord (x0, y0)-(x1, y1), Q8. */
+static const symline_segment *chord(symline_segment *c, int32_t x0, int32_t y0, int32_t x1,
+                                    int32_t y1)
+{
+    memset(c, 0, sizeof(*c));
+    c->x0 = x0;
+    c->y0 = y0;
+    c->x1 = x1;
+    c->y1 = y1;
+    return c;
+}
+
 static void distances(void **state)
 {
     symline_point p[4];
+    symline_segment c;
     (void)state;
     memset(p, 0, sizeof(p)); /* no sub-pixel offsets */
     /* (3, 4) px from the line through the origin along x: 4 px (Q8). */
@@ -135,13 +148,26 @@ static void distances(void **state)
     p[1].y = 2;
     p[2].x = 10;
     p[2].y = 0;
-    assert_int_equal(symline_i_max_dev(p, 3, 0, 0, 0, 10 * 256, 0), 2u * 256u);
-    assert_int_equal(symline_i_max_dev(p, 3, 1, 128, 128, 20 * 256 + 128, 128), 4u * 256u);
+    assert_int_equal(symline_i_max_dev(p, 3, 0, chord(&c, 0, 0, 10 * 256, 0)), 2u * 256u);
+    assert_int_equal(symline_i_max_dev(p, 3, 1, chord(&c, 128, 128, 20 * 256 + 128, 128)),
+                     4u * 256u);
     /* Curve test: above the threshold and above 1/32 of the chord. */
-    assert_true(symline_i_is_curve(0, 0, 64 * 256, 0, 3u * 256u, 512u));
-    assert_false(symline_i_is_curve(0, 0, 64 * 256, 0, 512u, 512u)); /* not above the threshold */
-    assert_false(
-        symline_i_is_curve(0, 0, 200 * 256, 0, 6u * 256u, 512u)); /* under 1/32 of 200 px */
+    assert_true(symline_i_is_curve(chord(&c, 0, 0, 64 * 256, 0), 3u * 256u, 512u));
+    /* not above the threshold */
+    assert_false(symline_i_is_curve(chord(&c, 0, 0, 64 * 256, 0), 512u, 512u));
+    /* under 1/32 of 200 px */
+    assert_false(symline_i_is_curve(chord(&c, 0, 0, 200 * 256, 0), 6u * 256u, 512u));
+}
+
+/* symline_i_near_segment() of s for the point (x, y) and tolerance tol (Q8). */
+static bool near(const symline_segment *s, const symline_point *pts, int32_t x, int32_t y,
+                 int32_t tol)
+{
+    symline_i_near q;
+    q.x = x;
+    q.y = y;
+    q.tol = tol;
+    return symline_i_near_segment(s, pts, &q);
 }
 
 static void near_segment(void **state)
@@ -159,10 +185,10 @@ static void near_segment(void **state)
     s.y1 = 10 * 256;
     s.kind = SYMLINE_KIND_LINE;
     s.count = 2;
-    assert_true(symline_i_near_segment(&s, pts, 30 * 256, 11 * 256, 512));  /* 1 px off the chord */
-    assert_false(symline_i_near_segment(&s, pts, 30 * 256, 13 * 256, 512)); /* 3 px off */
-    assert_true(symline_i_near_segment(&s, pts, 51 * 256, 10 * 256, 512));  /* 1 px beyond an end */
-    assert_false(symline_i_near_segment(&s, pts, 53 * 256, 10 * 256, 512)); /* 3 px beyond it */
+    assert_true(near(&s, pts, 30 * 256, 11 * 256, 512));  /* 1 px off the chord */
+    assert_false(near(&s, pts, 30 * 256, 13 * 256, 512)); /* 3 px off */
+    assert_true(near(&s, pts, 51 * 256, 10 * 256, 512));  /* 1 px beyond an end */
+    assert_false(near(&s, pts, 53 * 256, 10 * 256, 512)); /* 3 px beyond it */
     /* A curve is followed along its points, not its chord: an L of points. */
     for (i = 0; i < 8u; i++) {
         pts[i].x = 10;
@@ -177,8 +203,8 @@ static void near_segment(void **state)
     s.y0 = 10 * 256;
     s.x1 = 24 * 256;
     s.y1 = 24 * 256;
-    assert_true(symline_i_near_segment(&s, pts, 10 * 256, 17 * 256, 256)); /* on the vertical arm */
-    assert_false(symline_i_near_segment(&s, pts, 17 * 256, 17 * 256, 256)); /* on the chord only */
+    assert_true(near(&s, pts, 10 * 256, 17 * 256, 256));  /* on the vertical arm */
+    assert_false(near(&s, pts, 17 * 256, 17 * 256, 256)); /* on the chord only */
 }
 
 int main(void)
