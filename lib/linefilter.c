@@ -40,7 +40,7 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
                                                uint32_t *hist, symline_i_frame_stats *st)
 {
     const size_t step = (size_t)img->stride * SL_STATS_STEP;
-    uint32_t x, i, n = 0u, half, acc, med, mad;
+    uint32_t x, i, n = 0u, half, acc, med, mad, lo, hi;
     for (i = 0; i < 256u; i++) {
         hist[i] = 0u;
     }
@@ -59,21 +59,22 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
             hist[img->data[at]]++;
         }
     }
-    st->mean = 0u;
-    st->sigma_q4 = 0u;
-    if (n == 0u) {
-        return;
-    }
+    /* Both scans stop within the histogram: its entries sum to n >= half
+     * (with no sample at once, giving 0 and 0). */
     half = (n + 1u) / 2u;
-    for (med = 0u, acc = 0u; med < 255u && acc + hist[med] < half; med++) {
+    for (med = 0u, acc = 0u; acc + hist[med] < half; med++) {
         acc += hist[med];
     }
     /* Median absolute deviation: widen a window around the median until it
      * holds half of the samples. */
     acc = hist[med];
-    for (mad = 0u; mad < 255u && acc < half;) {
-        mad++;
-        acc += (med >= mad ? hist[med - mad] : 0u) + (med + mad <= 255u ? hist[med + mad] : 0u);
+    for (mad = 0u, lo = med, hi = med; acc < half; mad++) {
+        if (lo > 0u) {
+            acc += hist[--lo];
+        }
+        if (hi < 255u) {
+            acc += hist[++hi];
+        }
     }
     st->mean = med;
     /* sigma = 1.4826 MAD for normal noise, Q4: MAD * 23.7. */
@@ -90,10 +91,12 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
  * more at level 0 (docs/detector.md, the overexposed synthetic scenes). */
 #define SL_SIDE_FULL_RES_SIGMA10 10
 
-/* mean + s10 / 10 sigma, clamped to a gray value. */
-SL_NOINLINE static uint32_t sigma_gray(uint32_t mean, int32_t s10, uint32_t sigma_q4)
+/* mean + s10 / 10 sigma, clamped to a gray value. |s10| <= 110 (a checked
+ * config, plus SL_SIDE_FULL_RES_SIGMA10) and sigma_q4 <= 255 * 23.72: the
+ * product fits 32 bits. */
+static uint32_t sigma_gray(uint32_t mean, int32_t s10, uint32_t sigma_q4)
 {
-    const int64_t t = (int64_t)mean + (int64_t)s10 * sigma_q4 / SL_SIGMA10_Q4_DIV;
+    const int32_t t = (int32_t)mean + s10 * (int32_t)sigma_q4 / SL_SIGMA10_Q4_DIV;
     return t < 0 ? 0u : (t > 255 ? 255u : (uint32_t)t);
 }
 
@@ -101,9 +104,9 @@ void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *c
                                 const symline_i_frame_stats *st, uint32_t level)
 {
     const uint32_t mean = st->mean, sigma_q4 = st->sigma_q4;
+    /* ridge_sigma10 <= 100 (a checked config): 32 bits hold the product. */
     const uint32_t ridge =
-        (uint32_t)(((uint64_t)cfg->ridge_sigma10 * sigma_q4 + SL_SIGMA10_Q4_DIV / 2u) /
-                   SL_SIGMA10_Q4_DIV);
+        (cfg->ridge_sigma10 * sigma_q4 + SL_SIGMA10_Q4_DIV / 2u) / SL_SIGMA10_Q4_DIV;
     const uint32_t bright = sigma_gray(mean, cfg->bright_sigma10, sigma_q4);
     if (bright > f->min_gray) {
         f->min_gray = bright;
@@ -143,7 +146,7 @@ SL_NOINLINE bool symline_i_linefilter_piece_fails(const symline_i_linefilter *f,
     const size_t across = horiz ? img->stride : 1u;
     const uint32_t lim = horiz ? img->height : img->width;
     const uint32_t len = n << level;
-    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side, cnt = 0u;
+    uint32_t sum_lo = 0u, sum_hi = 0u, sum_centre = 0u, i, side, ridge, cnt = 0u;
     for (i = 0; i < n; i += step, cnt++) {
         /* Grid points map inside the frame: (v << level) + half < size. */
         const uint32_t x = ((uint32_t)q[i].x << level) + half;
@@ -155,14 +158,16 @@ SL_NOINLINE bool symline_i_linefilter_piece_fails(const symline_i_linefilter *f,
         sum_hi += *(c + (size_t)(pos + off < lim ? off : lim - 1u - pos) * across);
     }
     side = sum_lo > sum_hi ? sum_lo : sum_hi;
+    if (sum_centre <= side) {
+        return true;
+    }
+    ridge = sum_centre - side;
+    /* Sides alike: |lo - hi| = 2 max(lo, hi) - lo - hi. */
+    if ((2u * side - sum_lo - sum_hi) * (2u * f->asym_pct) > ridge * 100u) {
+        return true;
+    }
     /* A short piece must stand out more than a long one: the carpet's grain
      * forms short ridges just over the per-point threshold, a faint painted
      * line runs on. Mean ridge >= ridge_min * (len + SL_SHORT_PX) / len. */
-    if (sum_centre > side &&
-        (uint64_t)(sum_centre - side) * len < (uint64_t)f->ridge_min * cnt * (len + SL_SHORT_PX)) {
-        return true;
-    }
-    return sum_centre <= side ||
-           (sum_lo > sum_hi ? sum_lo - sum_hi : sum_hi - sum_lo) * (2u * f->asym_pct) >
-               (sum_centre - side) * 100u;
+    return (uint64_t)ridge * len < (uint64_t)f->ridge_min * cnt * (len + SL_SHORT_PX);
 }

@@ -32,12 +32,20 @@
 /* 255^2: the squared difference counted for a pair that leaves the image. */
 #define SL_DMAX2 65025u
 
+/* sum_{j=1..t} j * 255^2: the energy of t pairs of weights 1..t that differ
+ * by 255 (a pair that leaves the image counts as such): Emax for t = m, and
+ * what the pairs beyond the border add at m - t pixels from the nearer end. */
+static uint32_t border_energy(uint32_t t)
+{
+    return SL_DMAX2 * (t * (t + 1u) / 2u);
+}
+
 uint32_t symline_emax(uint32_t m)
 {
     if (symline_i_check_radius(m) != SYMLINE_OK) {
         return 0u;
     }
-    return SL_DMAX2 * (m * (m + 1u) / 2u);
+    return border_energy(m);
 }
 
 /* Distance of index i to the nearer end of 0..n-1. */
@@ -46,25 +54,15 @@ static uint32_t edge_distance(uint32_t i, uint32_t n)
     return i < n - 1u - i ? i : n - 1u - i;
 }
 
-/* sum_{j=k+1..m} (m+1-j) * 255^2: what the pairs beyond the border add at
- * k pixels from the nearer end. */
-static uint32_t border_energy(uint32_t m, uint32_t k)
-{
-    uint32_t t;
-    if (k >= m) {
-        return 0u;
-    }
-    t = m - k;
-    return SL_DMAX2 * (t * (t + 1u) / 2u);
-}
-
 /* E[x] += w * (a[x] - b[x])^2 over a row; the vectorised hot loop. Where the
  * compiler has vector lanes (SSE2, NEON) in 16-bit lanes up to the last
  * multiply: |d| and w * |d| <= 255 * 255 fit 16 bits, and |d| * (w * |d|) is a
  * widening 16 x 16 -> 32-bit multiply, which SSE2 and NEON have (a 32-bit
  * lane multiply SSE2 has not). Scalar cores (Cortex-M) keep the plain form,
- * which is shorter there. */
-static void add_pair(const uint8_t *a, const uint8_t *b, uint32_t w, uint32_t count, uint32_t *E)
+ * which is shorter there. Out of line: the row and the two across sums share
+ * one copy; the call is per pair offset, not per pixel. */
+SL_NOINLINE static void add_pair(const uint8_t *a, const uint8_t *b, uint32_t w, uint32_t count,
+                                 uint32_t *E)
 {
     uint32_t x;
 #if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__)
@@ -93,19 +91,15 @@ static void fill(uint32_t *E, uint32_t count, uint32_t value)
 /* The portable body of symline_energy_row(), on checked arguments. */
 SL_ENERGY_REF void SL_ENERGY_ROW_REF(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
 {
-    uint32_t i, j, edge;
+    uint32_t i, j;
     /*
      * Border term: pairs j > min(i, n-1-i) leave the row, so it is nonzero only
-     * within m pixels of either end; the middle starts at 0. (The two ends
-     * overlap when n < 2m; both loops then write the same values.)
+     * within m pixels of either end; the middle starts at 0. Index i and its
+     * mirror n-1-i share the distance i up to the middle (2i < n).
      */
     fill(E, n, 0u);
-    edge = (m < n) ? m : n;
-    for (i = 0; i < edge; i++) {
-        E[i] = border_energy(m, edge_distance(i, n));
-    }
-    for (i = n - edge; i < n; i++) {
-        E[i] = border_energy(m, edge_distance(i, n));
+    for (i = 0; i < m && 2u * i < n; i++) {
+        E[i] = E[n - 1u - i] = border_energy(m - i);
     }
     /* In-image pairs: for offset j, indices j .. n-1-j have both partners. */
     for (j = 1u; j <= m && 2u * j < n; j++) {
@@ -128,23 +122,57 @@ symline_status symline_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint
     return SYMLINE_OK;
 }
 
+/*
+ * The rows a and b of pair j (1..m) of a sum across: from the window
+ * rows[0..2m] (NULL outside the image), or, rows NULL, from the frame img
+ * around its row y. False when a partner lies outside the image.
+ */
+static bool pair_rows(const uint8_t *const *rows, const symline_image *img, uint32_t y, uint32_t m,
+                      uint32_t j, const uint8_t **a, const uint8_t **b)
+{
+    if (rows != NULL) {
+        *a = rows[m - j];
+        *b = rows[m + j];
+        return *a != NULL && *b != NULL;
+    }
+    if (j > edge_distance(y, img->height)) {
+        return false;
+    }
+    *a = img->data + (size_t)(y - j) * img->stride;
+    *b = img->data + (size_t)(y + j) * img->stride;
+    return true;
+}
+
+/* The sum across, with the rows as pair_rows() takes them: the body of
+ * symline_energy_across() and symline_energy_across_image(). */
+static void across(const uint8_t *const *rows, const symline_image *img, uint32_t y, uint32_t m,
+                   uint32_t width, uint32_t *E)
+{
+    uint32_t j, border = 0u;
+    const uint8_t *a, *b;
+    fill(E, width, 0u);
+    for (j = 1u; j <= m; j++) {
+        if (pair_rows(rows, img, y, m, j, &a, &b)) {
+            add_pair(a, b, m + 1u - j, width, E);
+        } else {
+            border += (m + 1u - j) * SL_DMAX2;
+        }
+    }
+    /* A pair with a partner outside the image adds the same 255^2 to every
+     * column; only rows within m of the top or bottom have such pairs. */
+    if (border != 0u) {
+        uint32_t x;
+        for (x = 0; x < width; x++) {
+            E[x] += border;
+        }
+    }
+}
+
 /* The portable body of symline_energy_across(), on checked arguments. */
 SL_ENERGY_REF void SL_ENERGY_ACROSS_REF(const uint8_t *const *rows, uint32_t m, uint32_t width,
                                         uint32_t *E)
 {
-    uint32_t j, border = 0u;
-    /* A pair with a partner outside the image adds the same 255^2 to every column. */
-    for (j = 1u; j <= m; j++) {
-        if (rows[m - j] == NULL || rows[m + j] == NULL) {
-            border += (m + 1u - j) * SL_DMAX2;
-        }
-    }
-    fill(E, width, border);
-    for (j = 1u; j <= m; j++) {
-        if (rows[m - j] != NULL && rows[m + j] != NULL) {
-            add_pair(rows[m - j], rows[m + j], m + 1u - j, width, E);
-        }
-    }
+    across(rows, NULL, 0u, m, width, E);
 }
 
 symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width,
@@ -169,7 +197,6 @@ symline_status symline_energy_across(const uint8_t *const *rows, uint32_t m, uin
 symline_status symline_energy_across_image(const symline_image *img, uint32_t y, uint32_t m,
                                            uint32_t *E)
 {
-    uint32_t j;
     symline_status st = symline_image_check(img);
     if (st != SYMLINE_OK) {
         return st;
@@ -184,19 +211,14 @@ symline_status symline_energy_across_image(const symline_image *img, uint32_t y,
         return SYMLINE_ERR_RANGE;
     }
     /* Same sum as symline_energy_across(), with the rows taken from the frame
-     * directly so no pointer window (up to 511 entries) has to live on the stack:
-     * the pairs j > edge_distance(y) leave the frame. */
-    fill(E, img->width, border_energy(m, edge_distance(y, img->height)));
-    for (j = 1u; j <= m && j <= y && y + j < img->height; j++) {
-        add_pair(img->data + (size_t)(y - j) * img->stride,
-                 img->data + (size_t)(y + j) * img->stride, m + 1u - j, img->width, E);
-    }
+     * directly so no pointer window (up to 511 entries) has to live on the stack. */
+    across(NULL, img, y, m, img->width, E);
     return SYMLINE_OK;
 }
 
 symline_status symline_s8_row(const uint32_t *E, uint32_t n, uint32_t m, uint8_t *out)
 {
-    uint32_t i;
+    uint32_t i, r;
     const uint32_t emax = symline_emax(m);
     if (E == NULL || out == NULL) {
         return SYMLINE_ERR_NULL;
@@ -212,27 +234,23 @@ symline_status symline_s8_row(const uint32_t *E, uint32_t n, uint32_t m, uint8_t
             return SYMLINE_ERR_RANGE;
         }
     }
-    if (emax <= UINT32_MAX / 511u) {
-        /*
-         * m <= 15: the numerator fits 32 bits. Divide by multiplying with
-         * R = floor(2^48 / den): the estimate is low by at most one (the
-         * error is below N / 2^48 < 2^-16), fixed by one compare, so the
-         * result is the exact quotient without a division per pixel (there
-         * is no divide instruction on Cortex-M0+).
-         */
-        const uint32_t den = 2u * emax;
-        const uint64_t r = ((uint64_t)1 << 48) / den;
-        for (i = 0; i < n; i++) {
-            const uint32_t num = 510u * (emax - E[i]) + emax;
-            uint32_t q = (uint32_t)(((uint64_t)num * r) >> 48);
-            q += (uint32_t)(num - q * den >= den);
-            out[i] = (uint8_t)q;
-        }
-    } else {
-        const uint64_t den = 2u * (uint64_t)emax;
-        for (i = 0; i < n; i++) {
-            out[i] = (uint8_t)((510u * (uint64_t)(emax - E[i]) + emax) / den);
-        }
+    /*
+     * S8 = floor((510 d + emax) / (2 emax)), d = emax - E, without a division
+     * per pixel (there is no divide instruction on Cortex-M0+). It equals
+     * floor(255 d / emax + 1/2), estimated as the high word of d R + 2^31
+     * with R = floor(255 * 2^32 / emax) < 2^24: low by at most one (d < 2^31,
+     * so the error is below d / 2^32 < 1/2), fixed by one compare. The
+     * compare uses the halved numerator 255 d + floor(emax / 2) (the same
+     * quotient by emax), whose remainder, below 2 emax < 2^32, is exact in
+     * 32-bit arithmetic. R is a 32-bit division: emax = 255 * 255 T, so
+     * R = floor(2^32 / (255 T)), and 255 T never divides 2^32.
+     */
+    r = UINT32_MAX / (emax / 255u);
+    for (i = 0; i < n; i++) {
+        const uint32_t d = emax - E[i];
+        uint32_t q = (uint32_t)(((uint64_t)d * r + 0x80000000u) >> 32);
+        q += (uint32_t)(255u * d + (emax >> 1) - q * emax >= emax);
+        out[i] = (uint8_t)q;
     }
     return SYMLINE_OK;
 }
@@ -247,27 +265,33 @@ static symline_status energy_of_row(const symline_image *img, symline_axis axis,
     return symline_energy_across_image(img, y, m, E);
 }
 
-static symline_status check_frame(const symline_image *img, symline_axis axis, uint32_t m)
+/* The checks every whole-frame call starts with: the image, axis and radius,
+ * the caller's pointers a and b, and an output plane of height rows of width
+ * elements (out_stride, out_len). */
+static symline_status check_frame(const symline_image *img, symline_axis axis, uint32_t m,
+                                  const void *a, const void *b, uint32_t out_stride, size_t out_len)
 {
     symline_status st = symline_image_check(img);
     if (st == SYMLINE_OK) {
         st = symline_i_check_axis(axis);
     }
-    return (st == SYMLINE_OK) ? symline_i_check_radius(m) : st;
+    if (st == SYMLINE_OK) {
+        st = symline_i_check_radius(m);
+    }
+    if (st != SYMLINE_OK) {
+        return st;
+    }
+    if (a == NULL || b == NULL) {
+        return SYMLINE_ERR_NULL;
+    }
+    return symline_i_check_plane(img->width, img->height, out_stride, out_len);
 }
 
 symline_status symline_i_frame_begin(const symline_image *img, symline_axis axis, uint32_t m,
                                      const void *out, uint32_t out_stride, size_t out_len, void *ws,
                                      size_t ws_size, uint8_t **cur, uint8_t **end, uint32_t **E)
 {
-    symline_status st = check_frame(img, axis, m);
-    if (st != SYMLINE_OK) {
-        return st;
-    }
-    if (out == NULL || ws == NULL) {
-        return SYMLINE_ERR_NULL;
-    }
-    st = symline_i_check_plane(img->width, img->height, out_stride, out_len);
+    const symline_status st = check_frame(img, axis, m, out, ws, out_stride, out_len);
     if (st != SYMLINE_OK) {
         return st;
     }
@@ -281,18 +305,8 @@ symline_status symline_energy_frame(const symline_image *img, symline_axis axis,
                                     uint32_t *E, uint32_t e_stride, size_t e_len)
 {
     uint32_t y;
-    symline_status st = check_frame(img, axis, m);
-    if (st != SYMLINE_OK) {
-        return st;
-    }
-    if (E == NULL) {
-        return SYMLINE_ERR_NULL;
-    }
-    st = symline_i_check_plane(img->width, img->height, e_stride, e_len);
-    if (st != SYMLINE_OK) {
-        return st;
-    }
-    for (y = 0; y < img->height && st == SYMLINE_OK; y++) {
+    symline_status st = check_frame(img, axis, m, E, E, e_stride, e_len);
+    for (y = 0; st == SYMLINE_OK && y < img->height; y++) {
         st = energy_of_row(img, axis, m, y, E + (size_t)y * e_stride);
     }
     return st;

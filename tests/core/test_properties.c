@@ -370,6 +370,38 @@ static void test_s8_exhaustive(void **state)
     }
 }
 
+/* S8 around every step of the quotient (E where it changes, +-3) for every
+ * radius 1..255, against the 64-bit formula: the radii above 20 that the
+ * exhaustive test leaves out. */
+static void test_s8_steps_every_radius(void **state)
+{
+    uint32_t E[7 * 257];
+    uint8_t out[7 * 257];
+    uint32_t m;
+    (void)state;
+    for (m = 1; m <= 255; m++) {
+        const uint64_t emax = symline_emax(m);
+        uint32_t n = 0, i, q;
+        int32_t d;
+        for (q = 0; q <= 256; q++) {
+            /* 510 D + emax = q * 2 emax at D = (2q - 1) emax / 510. */
+            const int64_t d0 = ((int64_t)(2 * q) - 1) * (int64_t)emax / 510;
+            for (d = -3; d <= 3; d++) {
+                if (d0 + d >= 0 && d0 + d <= (int64_t)emax) {
+                    E[n++] = (uint32_t)(emax - (uint64_t)(d0 + d));
+                }
+            }
+        }
+        assert_int_equal(symline_s8_row(E, n, m, out), SYMLINE_OK);
+        for (i = 0; i < n; i++) {
+            const uint64_t want = (510u * (emax - E[i]) + emax) / (2u * emax);
+            if (out[i] != want) {
+                fail_msg("m=%u E=%u: S8 %u, want %u", m, E[i], out[i], (unsigned)want);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -381,6 +413,7 @@ int main(void)
         cmocka_unit_test(test_s_points_never_adjacent),
         cmocka_unit_test(test_row_window_matches_frame),
         cmocka_unit_test(test_s8_exhaustive),
+        cmocka_unit_test(test_s8_steps_every_radius),
     };
     return cmocka_run_group_tests_name("core_properties", tests, NULL, NULL);
 }
