@@ -41,7 +41,7 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
          * loops, which only save time. */
         for (x = 0; x < w; x++, src += s) {
             const uint8_t *b = src;
-            uint32_t sum = 1u << (shift - 1u), i;
+            uint32_t sum = (1u << shift) >> 1, i; /* half a block: rounds; 0 at level 0 */
             for (d = 0; d < s; d++, b += img->stride) {
                 for (i = 0; i < s; i++) {
                     sum += b[i];
@@ -72,7 +72,7 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
         for (d = 0; d < s; d++) {
             sum += acc[x * s + d];
         }
-        out[x] = (uint8_t)((sum + (1u << (shift - 1u))) >> shift);
+        out[x] = (uint8_t)((sum + ((1u << shift) >> 1)) >> shift);
     }
 }
 

@@ -189,14 +189,14 @@ awk -v opt="$optional" '{ printf "  %-14s %6d B%s\n", $1, $2, index(opt, " " $1 
 figure "core code (Cortex-M4 -Os, without the optional modules)" "$core" B
 quote README.md '\*\*Small:\*\* \([0-9.]*\) KiB of code' KiB
 quote docs/porting.md '^ *\([0-9,]*\) B measured, the field boundary'
-quote docs/detector.md 'the workspace it is \([0-9,]*\) B'
+quote docs/detector.md 'work with byte-identical output brought it to \([0-9,]*\) B'
 figure "field boundary code (fieldboundary.c)" "$(module fieldboundary)" B
 quote README.md '(the field boundary \([0-9.]*\) KiB of it' KiB
 quote docs/porting.md 'the field boundary \([0-9.]*\) KiB of it, the index' KiB
 # shellcheck disable=SC2016 # backquotes of Markdown, not commands
 quote docs/detector.md '`fieldboundary.c` \([0-9,]*\) B'
 figure "index of earlier segments code (segindex.c)" "$(module segindex)" B
-quote docs/porting.md '^ *segments \([0-9.]*\) KiB; the optional' KiB
+quote docs/porting.md '^ *segments \([0-9.]*\) KiB, the merge' KiB
 figure "intersections code (intersections.c, optional)" "$(module intersections)" B
 quote README.md 'intersections \([0-9.]*\) KiB and the paper' KiB
 quote docs/detector.md '): \([0-9,]*\) B of code on Cortex-M4 -Os, listed with the'

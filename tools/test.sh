@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # The whole test suite, as CI runs it:
 #   1. host build and every CTest test but the qemu one of step 4 (preset default);
-#   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (preset asan);
+#   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (preset asan,
+#      built with -Os, so it runs the size forms of lib/ that SL_FOR_SPEED selects);
 #   3. firmware checks: cross builds, no float / no malloc on the symbol table,
 #      stack and size budgets, static analysis, tests on an emulated Cortex-M4;
 #   4. the capture integration test on real kernel drivers (vivid, vimc) under qemu;
