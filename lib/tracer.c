@@ -42,10 +42,36 @@ void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
     t->phase = 0u;
 }
 
-/* Index of the first point of row y (< h) at x or right of it. */
-static uint32_t first_at(const symline_i_tracer *t, int32_t x, uint32_t y)
+/* Index of the first point of row y (< h) at x or right of it. off: the
+ * caller's own index within its row; rows of line points are alike from one
+ * row to the next, so where speed counts the search gallops out from that
+ * place in row y and bisects only the bracket it finds (same index). */
+static uint32_t first_at(const symline_i_tracer *t, int32_t x, uint32_t y, uint32_t off)
 {
     uint32_t lo = t->row_start[y], hi = t->row_start[y + 1];
+    if (SL_FOR_SPEED) {
+        const uint32_t g = off < hi - lo ? lo + off : hi;
+        uint32_t s = 1u;
+        if (g < hi && (int32_t)t->pts[g].x < x) { /* answer right of g */
+            lo = g + 1u;
+            while (s < hi - g && (int32_t)t->pts[g + s].x < x) {
+                lo = g + s + 1u;
+                s *= 2u;
+            }
+            if (s < hi - g) {
+                hi = g + s;
+            }
+        } else { /* answer at g or left of it */
+            hi = g;
+            while (s <= g - lo && (int32_t)t->pts[g - s].x >= x) {
+                hi = g - s;
+                s *= 2u;
+            }
+            if (s <= g - lo) {
+                lo = g - s + 1u;
+            }
+        }
+    }
     while (lo < hi) {
         const uint32_t mid = lo + (hi - lo) / 2u;
         if ((int32_t)t->pts[mid].x < x) {
@@ -62,15 +88,15 @@ static uint32_t first_at(const symline_i_tracer *t, int32_t x, uint32_t y)
  * points from x - 1 on start, searched once per step and row (SL_NO_ROW
  * until then), not once per direction. */
 #define SL_NO_ROW 0xFFFFFFFFu
-static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t y, int32_t nx,
-                    int32_t ny)
+static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t y, uint32_t off,
+                    int32_t nx, int32_t ny)
 {
     uint32_t *k = &lb[ny - y + 1], i;
     if ((uint32_t)ny >= t->h) { /* negatives wrap: out too */
         return -1;
     }
     if (*k == SL_NO_ROW) {
-        *k = first_at(t, x - 1, (uint32_t)ny);
+        *k = first_at(t, x - 1, (uint32_t)ny, off);
     }
     for (i = *k; i < t->row_start[ny + 1] && t->pts[i].x <= nx; i++) {
         if (t->pts[i].x == nx) {
@@ -80,17 +106,23 @@ static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t 
     return -1;
 }
 
-uint32_t symline_i_neighbours(const symline_i_tracer *t, uint32_t x, uint32_t y)
+/* off: the point's index within its row, a guess for the searches. */
+static uint32_t neighbours(const symline_i_tracer *t, uint32_t x, uint32_t y, uint32_t off)
 {
     /* One search per row (rows hold each x once), not one per direction. */
     uint32_t r, i, c = 0u;
     for (r = y - 1u; r != y + 2u; r++) {
-        for (i = r < t->h ? first_at(t, (int32_t)x - 1, r) : 0u;
+        for (i = r < t->h ? first_at(t, (int32_t)x - 1, r, off) : 0u;
              r < t->h && i < t->row_start[r + 1] && t->pts[i].x <= x + 1u; i++) {
             c += r != y || t->pts[i].x != x;
         }
     }
     return c;
+}
+
+uint32_t symline_i_neighbours(const symline_i_tracer *t, uint32_t x, uint32_t y)
+{
+    return neighbours(t, x, y, 0u);
 }
 
 static bool unvisited(const symline_i_tracer *t, int32_t idx)
@@ -109,8 +141,8 @@ static void visit(symline_i_tracer *t, int32_t idx)
 /* Follows the line from (x, y), last step direction dir (or SL_ANY_DIR);
  * appends to dst from *pos. False when a start point (SL_ANY_DIR) has no
  * unvisited neighbour. */
-static bool follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, symline_point *dst,
-                   uint32_t cap, uint32_t *pos, bool *cut)
+static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint32_t dir,
+                   symline_point *dst, uint32_t cap, uint32_t *pos, bool *cut)
 {
     bool moved = false;
     for (;;) {
@@ -127,7 +159,7 @@ static bool follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, syml
             const uint32_t d =
                 dir == SL_ANY_DIR ? o : (o & 1u ? dir + (o + 1u) / 2u : dir - o / 2u) & 7u;
             const int32_t nx = x + DX[d], ny = y + DX[(d + 6u) & 7u];
-            const int32_t idx = find(t, lb, x, y, nx, ny);
+            const int32_t idx = find(t, lb, x, y, SL_FOR_SPEED ? at - t->row_start[y] : 0u, nx, ny);
             if (unvisited(t, idx)) {
                 if (*pos >= cap) {
                     *cut = true;
@@ -137,6 +169,7 @@ static bool follow(symline_i_tracer *t, int32_t x, int32_t y, uint32_t dir, syml
                 dst[*pos].x = (uint16_t)nx;
                 dst[*pos].y = (uint16_t)ny;
                 (*pos)++;
+                at = (uint32_t)idx;
                 x = nx;
                 y = ny;
                 dir = d;
@@ -178,11 +211,13 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
             const uint32_t i = t->scan++;
             const uint32_t x = t->pts[i].x, y = t->pts[i].y;
             uint32_t pos = 1u;
-            if (y == SL_VISITED || (t->phase == 0u && symline_i_neighbours(t, x, y) != 1u)) {
+            if (y == SL_VISITED ||
+                (t->phase == 0u && (SL_FOR_SPEED ? neighbours(t, x, y, i - t->row_start[y])
+                                                 : symline_i_neighbours(t, x, y)) != 1u)) {
                 continue;
             }
             visit(t, (int32_t)i);
-            if (!follow(t, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
+            if (!follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
                 continue; /* nothing left to follow from here: a lone rest of a traced line */
             }
             dst[0].x = (uint16_t)x;
@@ -191,7 +226,7 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
                 /* Started inside a line: trace the other half and put it in
                  * front (nothing there: both reversals undo each other). */
                 const uint32_t fwd = pos;
-                (void)follow(t, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut);
+                (void)follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut);
                 symline_i_reverse_points(dst, pos);
                 symline_i_reverse_points(dst + (pos - fwd), fwd);
             }
