@@ -46,7 +46,13 @@ void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
  * caller's own index within its row; rows of line points are alike from one
  * row to the next, so where speed counts the search gallops out from that
  * place in row y and bisects only the bracket it finds (same index). */
-static uint32_t first_at(const symline_i_tracer *t, int32_t x, uint32_t y, uint32_t off)
+#if SL_FOR_SPEED /* in each caller, as the plain search was: no call per row */
+#define SL_FIRST_AT_INLINE SL_ALWAYS_INLINE
+#else
+#define SL_FIRST_AT_INLINE
+#endif
+static SL_FIRST_AT_INLINE uint32_t first_at(const symline_i_tracer *t, int32_t x, uint32_t y,
+                                            uint32_t off)
 {
     uint32_t lo = t->row_start[y], hi = t->row_start[y + 1];
     if (SL_FOR_SPEED) {
