@@ -5,98 +5,127 @@
  * Both directions compare each energy with its two neighbours over whole
  * rows in 32-bit lanes (along a row: the row shifted by one; down the
  * columns: three rows of energies), which decides every entry that is not
- * part of a plateau. Plateaus (runs of equal energies) are rare and take a
- * slow path, only in the 64-entry blocks that have one; down the columns a
- * small per-column state (where the run began, how it was entered) follows
- * them, so a frame is processed row by row holding three rows of energies.
+ * part of a plateau, and marks where runs of equal energies begin and end.
+ * Plateaus are rare and take a slow path at those marks only; down the
+ * columns a small per-column state (where the run began, how it was entered)
+ * follows them, so a frame is processed row by row holding three rows of
+ * energies.
  */
 #include "extrema.h"
 
 #include "symmetry.h"
 
 uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
+                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map,
+                                   uint32_t *restrict ev)
 {
-    uint32_t x, flat = 0u;
-    /* E < 2^31 for every radius (symline_emax(255) < 2^31), so the sign of
-     * a difference is its top bit: mid is an S point when both up - mid and
-     * dn - mid are positive (mid - up and mid - dn negative), an A point when
-     * both are negative. Subtractions and shifts only: baseline SSE2 has no
-     * unsigned 32-bit compare or min/max. */
-    for (x = 0; x < n; x++) {
-        const uint32_t a = up[x], b = mid[x], c = dn[x];
-        const uint32_t s = ((b - a) & (b - c)) >> 31;
-        const uint32_t l = ((a - b) & (c - b)) >> 31;
-        map[x] = (uint8_t)((0u - s) | (l << 7));
-        flat |= (uint32_t)(a == b) | (uint32_t)(b == c);
+    uint32_t x0, x, any = 0u;
+    for (x0 = 0; x0 < n; x0 += 32u) {
+        const uint32_t x1 = (n - x0 > 32u) ? x0 + 32u : n;
+        uint32_t flat = 0u, bits = 0u;
+        /* E < 2^31 for every radius (symline_emax(255) < 2^31), so the sign
+         * of a difference is its top bit: mid is an S point when both up - mid
+         * and dn - mid are positive (mid - up and mid - dn negative), an A
+         * point when both are negative. Subtractions and shifts only: baseline
+         * SSE2 has no unsigned 32-bit compare or min/max. */
+        for (x = x0; x < x1; x++) {
+            const uint32_t a = up[x], b = mid[x], c = dn[x];
+            const uint32_t s = ((b - a) & (b - c)) >> 31;
+            const uint32_t l = ((a - b) & (c - b)) >> 31;
+            map[x] = (uint8_t)((0u - s) | (l << 7));
+            flat |= (uint32_t)(a == b) | (uint32_t)(b == c);
+        }
+        /* The plateau mask only where some energy equals a neighbour. */
+        if (flat != 0u) {
+            for (x = x0; x < x1; x++) {
+                bits |= (uint32_t)((up[x] == mid[x]) != (mid[x] == dn[x])) << (x - x0);
+            }
+        }
+        ev[x0 / 32u] = bits;
+        any |= bits;
     }
-    return flat;
+    return any;
 }
 
 #ifndef SYMLINE_PORT_EXTREMA_KINDS
 uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
+                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map,
+                                 uint32_t *restrict ev)
 {
-    return symline_i_extrema_kinds_c(up, mid, dn, n, map);
+    return symline_i_extrema_kinds_c(up, mid, dn, n, map, ev);
 }
 #endif
 
+/* Index of the lowest set bit of v != 0: one instruction where the target
+ * has it, a multiply and a table lookup elsewhere (no library call). */
+static inline uint32_t lowest_bit(uint32_t v)
+{
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__) || defined(__aarch64__) ||      \
+                          (defined(__ARM_FEATURE_CLZ) && defined(__ARM_ARCH) && __ARM_ARCH >= 7))
+    return (uint32_t)__builtin_ctz(v);
+#else
+    static const uint8_t debruijn[32] = {0,  1,  28, 2,  29, 14, 24, 3,  30, 22, 20,
+                                         15, 25, 17, 4,  8,  31, 27, 13, 23, 21, 19,
+                                         16, 7,  26, 12, 18, 6,  11, 5,  10, 9};
+    return debruijn[((v & (0u - v)) * 0x077CB531u) >> 27];
+#endif
+}
+
 /*
  * The run rule over a row. Every entry with unequal neighbours is decided in
- * blocks by symline_i_extrema_kinds(); what is left are the runs of two or
- * more equal energies, looked for only in blocks that have some. A run is
- * decided where it ends, at i: it began at a (the last entry that differs
- * from its left neighbour; a run lies in blocks that all have equal pairs,
- * so a was seen), and is marked at its middle, which no later block
- * overwrites, unless it touches either end or is longer than the plateau
- * limit allows.
+ * blocks by symline_i_extrema_kinds(), which also marks the entries where a
+ * run of two or more equal energies begins (differs from its left neighbour)
+ * or ends (differs from its right one). A run is decided at its end i: it
+ * began at a, the last begin mark (runs touching entry 0 have none: a stays
+ * 0), and is marked at its middle, which no later block overwrites, unless
+ * it touches either end or is longer than the plateau limit allows.
  */
 void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
 {
-    uint32_t x0, x1, i, a = 0u;
+    uint32_t x0, x1, k, a = 0u, ev[SL_KINDS_WORDS];
     map[0] = SYMLINE_MAP_NONE;
     map[n - 1u] = SYMLINE_MAP_NONE;
     for (x0 = 1u; x0 + 1u < n; x0 = x1) {
-        x1 = x0 + SL_PLATEAU_SPAN(n - 1u - x0);
-        if (symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0) == 0u) {
+        x1 = x0 + ((n - 1u - x0 > SL_KINDS_MAX) ? SL_KINDS_MAX : n - 1u - x0);
+        if (symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0, ev) ==
+            0u) {
             continue;
         }
-        for (i = x0; i < x1; i++) { /* i + 1 < n */
-            const uint32_t v = E[i];
-            if (v != E[i - 1u]) {
-                a = i;
-            } else if (E[i + 1u] != v && a >= 1u && i - (a + i) / 2u <= lag) {
-                /* Neither neighbour equals v: larger on both sides S, smaller A. */
-                const bool left_up = E[a - 1u] > v, right_up = E[i + 1u] > v;
-                map[(a + i) / 2u] = left_up != right_up ? (uint8_t)SYMLINE_MAP_NONE
-                                    : left_up           ? (uint8_t)SYMLINE_MAP_S
-                                                        : (uint8_t)SYMLINE_MAP_A;
+        for (k = 0; 32u * k < x1 - x0; k++) {
+            uint32_t bits;
+            for (bits = ev[k]; bits != 0u; bits &= bits - 1u) {
+                const uint32_t i = x0 + 32u * k + lowest_bit(bits); /* i + 1 < n */
+                const uint32_t v = E[i];
+                if (v != E[i - 1u]) {
+                    a = i; /* a run begins */
+                } else if (a >= 1u && i - (a + i) / 2u <= lag) {
+                    /* Neither neighbour equals v: larger on both sides S, smaller A. */
+                    const bool left_up = E[a - 1u] > v, right_up = E[i + 1u] > v;
+                    map[(a + i) / 2u] = left_up != right_up ? (uint8_t)SYMLINE_MAP_NONE
+                                        : left_up           ? (uint8_t)SYMLINE_MAP_S
+                                                            : (uint8_t)SYMLINE_MAP_A;
+                }
             }
         }
     }
 }
 
-/* The slow path of symline_i_extrema_down(): columns x .. x_end-1 where a
- * run of equal energies begins or ends at row t-1. A run begins when
- * mid == dn != up (or t = 1); left says whether the row above it is larger
- * (+1), smaller (-1) or absent (0). It ends when up == mid != dn, and is an
+/* Column x, where a run of equal energies begins or ends at row t-1 >= 1. A
+ * run begins when mid == dn != up; left says whether the row above it is
+ * larger (+1) or smaller (-1). It ends when up == mid != dn, and is an
  * extremum at its middle row when the row below is on the same side. */
-static void plateaus_down(const symline_i_coldown *cd, const uint32_t *up, const uint32_t *mid,
-                          const uint32_t *dn, uint32_t t, uint32_t x, uint32_t x_end)
+static void plateau_down(const symline_i_coldown *cd, const uint32_t *up, const uint32_t *mid,
+                         const uint32_t *dn, uint32_t t, uint32_t x)
 {
-    for (; x < x_end; x++) {
-        if (mid[x] == dn[x]) {
-            if (up[x] != mid[x] || t == 1u) {
-                cd->run_start[x] = (uint16_t)(t - 1u);
-                cd->left[x] = (int8_t)((up[x] > mid[x]) - (up[x] < mid[x]));
-            }
-        } else if (up[x] == mid[x] && t >= 2u) {
-            const int8_t right = (int8_t)((dn[x] > mid[x]) ? 1 : -1);
-            const uint32_t y = ((uint32_t)cd->run_start[x] + t - 1u) / 2u;
-            if (cd->left[x] == right && t - 1u - y <= cd->lag) {
-                cd->map[(size_t)(y % cd->ring) * cd->stride + x] =
-                    (uint8_t)((right > 0) ? SYMLINE_MAP_S : SYMLINE_MAP_A);
-            }
+    if (mid[x] == dn[x]) {
+        cd->run_start[x] = (uint16_t)(t - 1u);
+        cd->left[x] = (int8_t)((up[x] > mid[x]) ? 1 : -1);
+    } else {
+        const int8_t right = (int8_t)((dn[x] > mid[x]) ? 1 : -1);
+        const uint32_t y = ((uint32_t)cd->run_start[x] + t - 1u) / 2u;
+        if (cd->left[x] == right && t - 1u - y <= cd->lag) {
+            cd->map[(size_t)(y % cd->ring) * cd->stride + x] =
+                (uint8_t)((right > 0) ? SYMLINE_MAP_S : SYMLINE_MAP_A);
         }
     }
 }
@@ -109,12 +138,26 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
     const uint32_t *mid = cd->E3 + (size_t)((t + 2u) % 3u) * w;
     const uint32_t *up = (t >= 2u) ? cd->E3 + (size_t)((t + 1u) % 3u) * w : mid;
     uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
-    uint32_t i, nb;
-    /* In blocks, so that a plateau sends only its block down the slow path. */
+    uint32_t i, nb, k, ev[SL_KINDS_WORDS];
     for (i = 0; i < w; i += nb) {
-        nb = SL_PLATEAU_SPAN(w - i);
-        if (symline_i_extrema_kinds(up + i, mid + i, E + i, nb, mr + i) != 0u) {
-            plateaus_down(cd, up, mid, E, t, i, i + nb);
+        nb = (w - i > SL_KINDS_MAX) ? SL_KINDS_MAX : w - i;
+        if (symline_i_extrema_kinds(up + i, mid + i, E + i, nb, mr + i, ev) == 0u || t == 1u) {
+            continue;
+        }
+        for (k = 0; 32u * k < nb; k++) {
+            uint32_t bits;
+            for (bits = ev[k]; bits != 0u; bits &= bits - 1u) {
+                plateau_down(cd, up, mid, E, t, i + 32u * k + lowest_bit(bits));
+            }
+        }
+    }
+    if (t == 1u) {
+        /* The runs that start at row 0. */
+        for (i = 0; i < w; i++) {
+            if (mid[i] == E[i]) {
+                cd->run_start[i] = 0u;
+                cd->left[i] = 0;
+            }
         }
     }
 }

@@ -14,21 +14,32 @@
 /* Plateau limit of symline_i_extrema_runs() that marks runs of any length. */
 #define SL_RUN_ANY_LENGTH UINT32_MAX
 
+/* Entries of one call of symline_i_extrema_kinds() at most, and the 32-bit
+ * words of its plateau mask. */
+#define SL_KINDS_MAX 256u
+#define SL_KINDS_WORDS (SL_KINDS_MAX / 32u)
+
 /*
  * The run rule where runs are single entries, over whole rows in 32-bit
  * lanes: map[x] = S where mid[x] is below both up[x] and dn[x], A where it
- * is above both, NONE otherwise (n entries). Returns nonzero when some mid[x]
- * equals up[x] or dn[x]: a plateau, which the caller decides on its slow path
- * (map[x] is NONE there). Rows of a frame (extrema down the columns) or one
- * row shifted by one entry (along it). Energies below 2^31.
+ * is above both, NONE otherwise (1 <= n <= SL_KINDS_MAX entries). The
+ * plateau mask ev[0 .. (n+31)/32 - 1]: bit x % 32 of ev[x / 32] is set where
+ * mid[x] equals exactly one of up[x] and dn[x], that is where a run of equal
+ * energies begins or ends, which the caller decides on its slow path (map[x]
+ * is NONE there); the bits of a run's inner entries stay clear. Returns the
+ * OR of those words: nonzero when the block has such an entry. Rows of a
+ * frame (extrema down the columns) or one row shifted by one entry (along
+ * it). Energies below 2^31.
  * symline_i_extrema_kinds_c() is the portable reference; symline_i_extrema_kinds()
  * is the build's choice: a SIMD version from port/ (SYMLINE_PORT_EXTREMA_KINDS,
  * CMake option SYMLINE_SIMD) with the same output, or the reference.
  */
 uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map);
+                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map,
+                                   uint32_t *restrict ev);
 uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map);
+                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map,
+                                 uint32_t *restrict ev);
 
 /*
  * Extrema of a row of n >= 1 energies into map (n entries: NONE, A or S) by
@@ -39,14 +50,6 @@ uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *re
  * either (the detector's plateau limit; SL_RUN_ANY_LENGTH for none).
  */
 void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map);
-
-/* Entries decided together by symline_i_extrema_runs() and columns by
- * symline_i_extrema_down(); a plateau sends only its block down the slow
- * path. SL_PLATEAU_SPAN(left): the next block of the `left` still to do;
- * the blocks only save time (SL_FOR_SPEED; else all of them). */
-#define SL_PLATEAU_BLOCK 64u
-#define SL_PLATEAU_SPAN(left)                                                                      \
-    (SL_FOR_SPEED && (left) > SL_PLATEAU_BLOCK ? SL_PLATEAU_BLOCK : (left))
 
 /*
  * Extrema down the columns, one row at a time: the state of a frame's or a

@@ -10,16 +10,18 @@
  * So 16 entries are decided at once in byte lanes. Compilers cannot do that
  * from the C (SSE2 has no truncating pack), which costs them more than half
  * of the loop in shuffles. A row whose length is not a multiple of 16 ends
- * with its last 16 entries decided once more (the same values again).
+ * with its last 16 entries decided once more (the same values again). The
+ * plateau mask comes from the same byte lanes: zero where mid equals a
+ * neighbour, one movemask per 16 entries.
  */
 #include <emmintrin.h>
 
 #include "extrema.h"
 
-/* The kinds of 16 entries at x into map + x; flat |= the entries equal to a neighbour. */
-static inline void kinds16(const uint32_t *restrict up, const uint32_t *restrict mid,
-                           const uint32_t *restrict dn, size_t x, uint8_t *restrict map,
-                           __m128i *flat)
+/* The kinds of 16 entries at x into map + x; returns their plateau mask
+ * (bit i: mid[x + i] equals exactly one neighbour). */
+static inline uint32_t kinds16(const uint32_t *restrict up, const uint32_t *restrict mid,
+                               const uint32_t *restrict dn, size_t x, uint8_t *restrict map)
 {
     const __m128i zero = _mm_setzero_si128();
     __m128i d1[2], d2[2], b1, b2;
@@ -38,27 +40,44 @@ static inline void kinds16(const uint32_t *restrict up, const uint32_t *restrict
     }
     b1 = _mm_packs_epi16(d1[0], d1[1]);
     b2 = _mm_packs_epi16(d2[0], d2[1]);
-    *flat = _mm_or_si128(*flat, _mm_or_si128(_mm_cmpeq_epi8(b1, zero), _mm_cmpeq_epi8(b2, zero)));
     _mm_storeu_si128((__m128i *)(void *)(map + x),
                      _mm_or_si128(_mm_cmpgt_epi8(zero, _mm_and_si128(b1, b2)), /* both below: S */
                                   _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi8(b1, zero),
                                                               _mm_cmpgt_epi8(b2, zero)),
                                                 _mm_set1_epi8((char)SYMLINE_MAP_A))));
+    return (uint32_t)_mm_movemask_epi8(
+        _mm_xor_si128(_mm_cmpeq_epi8(b1, zero), _mm_cmpeq_epi8(b2, zero)));
 }
 
 uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
+                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map,
+                                 uint32_t *restrict ev)
 {
-    __m128i flat = _mm_setzero_si128();
+    uint32_t any = 0u, w;
     size_t x = 0u;
     if (n < 16u) {
-        return symline_i_extrema_kinds_c(up, mid, dn, n, map);
+        return symline_i_extrema_kinds_c(up, mid, dn, n, map, ev);
     }
-    for (; x + 16u <= n; x += 16u) {
-        kinds16(up, mid, dn, x, map, &flat);
+    for (; x + 32u <= n; x += 32u) {
+        w = kinds16(up, mid, dn, x, map) | (kinds16(up, mid, dn, x + 16u, map) << 16);
+        ev[x / 32u] = w;
+        any |= w;
     }
     if (x < n) {
-        kinds16(up, mid, dn, n - 16u, map, &flat);
+        /* Entries x .. n-1 (fewer than 32): 16 at x if there are, then the
+         * last 16 once more, their mask shifted to its place in word x / 32
+         * (entries below x are in the word before, already set). */
+        const size_t o = n - 16u;
+        w = 0u;
+        if (x + 16u <= n) {
+            w = kinds16(up, mid, dn, x, map);
+        }
+        if (x + 16u != n) {
+            const uint32_t m = kinds16(up, mid, dn, o, map);
+            w |= (o >= x) ? m << (o - x) : m >> (x - o);
+        }
+        ev[x / 32u] = w;
+        any |= w;
     }
-    return (uint32_t)_mm_movemask_epi8(flat);
+    return any;
 }

@@ -110,29 +110,54 @@ static void routine_is_the_rule(void **state)
     }
 }
 
+/* The plateau mask by its definition: bit x where mid[x] equals exactly one neighbour. */
+static void plateau_mask(const uint32_t *up, const uint32_t *mid, const uint32_t *dn, uint32_t n,
+                         uint32_t *ev)
+{
+    uint32_t x;
+    memset(ev, 0, SL_KINDS_WORDS * sizeof *ev);
+    for (x = 0; x < n; x++) {
+        if ((up[x] == mid[x]) != (mid[x] == dn[x])) {
+            ev[x / 32u] |= 1u << (x % 32u);
+        }
+    }
+}
+
 /* The build's row decision (a SIMD version from port/ where built) gives the
- * portable reference's output, flat flag included, at every length and
- * alignment, for energies up to 2^31 - 1. */
+ * portable reference's output, plateau mask included, at every length up to
+ * SL_KINDS_MAX and alignment, for energies up to 2^31 - 1; both masks are the
+ * definition's. */
 static void kinds_build_is_reference(void **state)
 {
-    uint32_t up[80], mid[80], dn[80], s = 5u, t, i;
-    uint8_t a[80], b[80];
+    uint32_t up[SL_KINDS_MAX + 8u], mid[SL_KINDS_MAX + 8u], dn[SL_KINDS_MAX + 8u], s = 5u, t, i;
+    uint32_t ea[SL_KINDS_WORDS], eb[SL_KINDS_WORDS], ec[SL_KINDS_WORDS], ra, rb, any;
+    uint8_t a[SL_KINDS_MAX + 8u], b[SL_KINDS_MAX + 8u];
     (void)state;
-    for (t = 0; t < 4000u; t++) {
-        const uint32_t n = tu_rand(&s) % 70u, off = tu_rand(&s) % 8u;
+    for (t = 0; t < 6000u; t++) {
+        const uint32_t n = 1u + tu_rand(&s) % ((t % 2u == 0u) ? 70u : SL_KINDS_MAX);
+        const uint32_t off = tu_rand(&s) % 8u, words = (n + 31u) / 32u;
         const uint32_t big = (t % 3u == 0u) ? 0x7fffffffu - 8u : 0u;
-        const uint32_t range = (t % 2u == 0u) ? 3u : 0x7fffffffu;
-        for (i = 0; i < 80u; i++) {
+        const uint32_t range = (t % 2u == 0u) ? 3u : (t % 5u == 1u) ? 2u : 0x7fffffffu;
+        for (i = 0; i < SL_KINDS_MAX + 8u; i++) {
             up[i] = big + tu_rand(&s) % range % (0x7fffffffu - big + 1u);
             mid[i] = big + tu_rand(&s) % range % (0x7fffffffu - big + 1u);
             dn[i] = big + tu_rand(&s) % range % (0x7fffffffu - big + 1u);
         }
         memset(a, 0x77, sizeof a);
         memset(b, 0x77, sizeof b);
-        assert_int_equal(symline_i_extrema_kinds(up + off, mid + off, dn + off, n, a + off) != 0u,
-                         symline_i_extrema_kinds_c(up + off, mid + off, dn + off, n, b + off) !=
-                             0u);
+        memset(ea, 0x55, sizeof ea);
+        memset(eb, 0x55, sizeof eb);
+        ra = symline_i_extrema_kinds(up + off, mid + off, dn + off, n, a + off, ea);
+        rb = symline_i_extrema_kinds_c(up + off, mid + off, dn + off, n, b + off, eb);
         assert_memory_equal(a, b, sizeof a);
+        plateau_mask(up + off, mid + off, dn + off, n, ec);
+        for (any = 0u, i = 0; i < words; i++) {
+            any |= ec[i];
+        }
+        assert_memory_equal(ea, ec, words * sizeof *ea);
+        assert_memory_equal(eb, ec, words * sizeof *eb);
+        assert_int_equal(ra, any);
+        assert_int_equal(rb, any);
     }
 }
 
