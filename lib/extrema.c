@@ -15,21 +15,31 @@
 
 #include "symmetry.h"
 
-uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map,
+/* The entries of the plateau mask where a neighbour is equal: bit x - x0
+ * (x0 <= x < x1 <= x0 + 32) where eq_up[x] != eq_dn[x]. */
+#define SL_PLATEAU_BITS(bits, x0, x1, eq_up, eq_dn)                                                \
+    do {                                                                                           \
+        uint32_t x_;                                                                               \
+        for (x_ = (x0); x_ < (x1); x_++) {                                                         \
+            (bits) |= (uint32_t)((eq_up) != (eq_dn)) << (x_ - (x0));                               \
+        }                                                                                          \
+    } while (0)
+
+uint32_t symline_i_extrema_along_c(const uint32_t *E, uint32_t n, uint8_t *restrict map,
                                    uint32_t *restrict ev)
 {
+    const uint32_t *const L = E - 1, *const R = E + 1; /* the neighbours */
     uint32_t x0, x, any = 0u;
     for (x0 = 0; x0 < n; x0 += 32u) {
         const uint32_t x1 = (n - x0 > 32u) ? x0 + 32u : n;
         uint32_t flat = 0u, bits = 0u;
         /* E < 2^31 for every radius (symline_emax(255) < 2^31), so the sign
-         * of a difference is its top bit: mid is an S point when both up - mid
-         * and dn - mid are positive (mid - up and mid - dn negative), an A
-         * point when both are negative. Subtractions and shifts only: baseline
-         * SSE2 has no unsigned 32-bit compare or min/max. */
+         * of a difference is its top bit: an S point when both E[x-1] - E[x]
+         * and E[x+1] - E[x] are positive (E[x] - E[x-1] and E[x] - E[x+1]
+         * negative), an A point when both are negative. Subtractions and
+         * shifts only: the loop vectorises without unsigned compares. */
         for (x = x0; x < x1; x++) {
-            const uint32_t a = up[x], b = mid[x], c = dn[x];
+            const uint32_t a = L[x], b = E[x], c = R[x];
             const uint32_t s = ((b - a) & (b - c)) >> 31;
             const uint32_t l = ((a - b) & (c - b)) >> 31;
             map[x] = (uint8_t)((0u - s) | (l << 7));
@@ -37,9 +47,36 @@ uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *
         }
         /* The plateau mask only where some energy equals a neighbour. */
         if (flat != 0u) {
-            for (x = x0; x < x1; x++) {
-                bits |= (uint32_t)((up[x] == mid[x]) != (mid[x] == dn[x])) << (x - x0);
-            }
+            SL_PLATEAU_BITS(bits, x0, x1, L[x_] == E[x_], E[x_] == R[x_]);
+        }
+        ev[x0 / 32u] = bits;
+        any |= bits;
+    }
+    return any;
+}
+
+uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t *restrict dn,
+                                    int8_t *restrict sg, uint32_t n, uint8_t *restrict map,
+                                    uint32_t *restrict ev)
+{
+    uint32_t x0, x, any = 0u;
+    for (x0 = 0; x0 < n; x0 += 32u) {
+        const uint32_t x1 = (n - x0 > 32u) ? x0 + 32u : n;
+        uint32_t flat = 0u, bits = 0u;
+        for (x = x0; x < x1; x++) {
+            const int32_t u = sg[x]; /* sign of mid - up */
+            const uint32_t b = mid[x], c = dn[x];
+            map[x] = (uint8_t)((u < 0 && c > b)   ? SYMLINE_MAP_S
+                               : (u > 0 && c < b) ? SYMLINE_MAP_A
+                                                  : SYMLINE_MAP_NONE);
+            flat |= (uint32_t)(u == 0) | (uint32_t)(b == c);
+        }
+        if (flat != 0u) {
+            SL_PLATEAU_BITS(bits, x0, x1, sg[x_] == 0, mid[x_] == dn[x_]);
+        }
+        /* The next row's signs, once this row's are read. */
+        for (x = x0; x < x1; x++) {
+            sg[x] = (int8_t)((int32_t)(dn[x] > mid[x]) - (int32_t)(dn[x] < mid[x]));
         }
         ev[x0 / 32u] = bits;
         any |= bits;
@@ -48,11 +85,17 @@ uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *
 }
 
 #ifndef SYMLINE_PORT_EXTREMA_KINDS
-uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map,
+uint32_t symline_i_extrema_along(const uint32_t *E, uint32_t n, uint8_t *restrict map,
                                  uint32_t *restrict ev)
 {
-    return symline_i_extrema_kinds_c(up, mid, dn, n, map, ev);
+    return symline_i_extrema_along_c(E, n, map, ev);
+}
+
+uint32_t symline_i_extrema_across(const uint32_t *restrict mid, const uint32_t *restrict dn,
+                                  int8_t *restrict sg, uint32_t n, uint8_t *restrict map,
+                                  uint32_t *restrict ev)
+{
+    return symline_i_extrema_across_c(mid, dn, sg, n, map, ev);
 }
 #endif
 
@@ -73,7 +116,7 @@ static inline uint32_t lowest_bit(uint32_t v)
 
 /*
  * The run rule over a row. Every entry with unequal neighbours is decided in
- * blocks by symline_i_extrema_kinds(), which also marks the entries where a
+ * blocks by symline_i_extrema_along(), which also marks the entries where a
  * run of two or more equal energies begins (differs from its left neighbour)
  * or ends (differs from its right one). A run is decided at its end i: it
  * began at a, the last begin mark (runs touching entry 0 have none: a stays
@@ -87,8 +130,7 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
     map[n - 1u] = SYMLINE_MAP_NONE;
     for (x0 = 1u; x0 + 1u < n; x0 = x1) {
         x1 = x0 + ((n - 1u - x0 > SL_KINDS_MAX) ? SL_KINDS_MAX : n - 1u - x0);
-        if (symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0, ev) ==
-            0u) {
+        if (symline_i_extrema_along(E + x0, x1 - x0, map + x0, ev) == 0u) {
             continue;
         }
         for (k = 0; 32u * k < x1 - x0; k++) {
@@ -119,11 +161,11 @@ static void plateau_down(const symline_i_coldown *cd, const uint32_t *up, const 
 {
     if (mid[x] == dn[x]) {
         cd->run_start[x] = (uint16_t)(t - 1u);
-        cd->left[x] = (int8_t)((up[x] > mid[x]) ? 1 : -1);
+        cd->sg[cd->width + x] = (int8_t)((up[x] > mid[x]) ? 1 : -1);
     } else {
         const int8_t right = (int8_t)((dn[x] > mid[x]) ? 1 : -1);
         const uint32_t y = ((uint32_t)cd->run_start[x] + t - 1u) / 2u;
-        if (cd->left[x] == right && t - 1u - y <= cd->lag) {
+        if (cd->sg[cd->width + x] == right && t - 1u - y <= cd->lag) {
             cd->map[(size_t)(y % cd->ring) * cd->stride + x] =
                 (uint8_t)((right > 0) ? SYMLINE_MAP_S : SYMLINE_MAP_A);
         }
@@ -136,12 +178,17 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
      * never marked, and a run that starts there has no side. */
     const uint32_t w = cd->width;
     const uint32_t *mid = cd->E3 + (size_t)((t + 2u) % 3u) * w;
-    const uint32_t *up = (t >= 2u) ? cd->E3 + (size_t)((t + 1u) % 3u) * w : mid;
+    const uint32_t *up = cd->E3 + (size_t)((t + 1u) % 3u) * w; /* t >= 2 */
     uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
     uint32_t i, nb, k, ev[SL_KINDS_WORDS];
+    if (t == 1u) {
+        for (i = 0; i < w; i++) {
+            cd->sg[i] = 0;
+        }
+    }
     for (i = 0; i < w; i += nb) {
         nb = (w - i > SL_KINDS_MAX) ? SL_KINDS_MAX : w - i;
-        if (symline_i_extrema_kinds(up + i, mid + i, E + i, nb, mr + i, ev) == 0u || t == 1u) {
+        if (symline_i_extrema_across(mid + i, E + i, cd->sg + i, nb, mr + i, ev) == 0u || t == 1u) {
             continue;
         }
         for (k = 0; 32u * k < nb; k++) {
@@ -156,7 +203,7 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
         for (i = 0; i < w; i++) {
             if (mid[i] == E[i]) {
                 cd->run_start[i] = 0u;
-                cd->left[i] = 0;
+                cd->sg[w + i] = 0;
             }
         }
     }
@@ -183,10 +230,9 @@ size_t symline_extrema_workspace_size(uint32_t width, uint32_t height, symline_a
     }
     n = symline_i_align_up((size_t)width * sizeof(uint32_t)) + SL_ALIGN;
     if (axis == SYMLINE_AXIS_HORIZONTAL) {
-        /* three rows of energies and the plateau state (symline_i_coldown) */
+        /* three rows of energies and where the plateaus began (symline_i_coldown) */
         n += symline_i_align_up((size_t)3u * width * sizeof(uint32_t)) +
-             symline_i_align_up((size_t)width * sizeof(uint16_t)) + symline_i_align_up(width) +
-             (size_t)3u * SL_ALIGN;
+             symline_i_align_up((size_t)width * sizeof(uint16_t)) + (size_t)2u * SL_ALIGN;
     }
     return n;
 }
@@ -209,11 +255,13 @@ symline_status symline_extrema(const symline_image *img, symline_axis axis, uint
     cd.stride = map_stride;
     cd.ring = img->height;
     if (axis != SYMLINE_AXIS_VERTICAL) {
+        /* The row of energies along rows (4 B per column) is not needed
+         * here: it holds the signs and plateau sides (2 B per column). */
+        cd.sg = (int8_t *)(void *)E;
         cd.E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)3u * img->width * sizeof(uint32_t));
         cd.run_start =
             (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
-        cd.left = (int8_t *)symline_i_carve(&cur, end, img->width);
-        if (cd.E3 == NULL || cd.run_start == NULL || cd.left == NULL) {
+        if (cd.E3 == NULL || cd.run_start == NULL) {
             return SYMLINE_ERR_BUFFER;
         }
     }
