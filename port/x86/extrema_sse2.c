@@ -37,96 +37,95 @@ static inline __m128i diff16(const uint32_t *a, const uint32_t *b)
     return _mm_packs_epi16(lo, hi);
 }
 
-/* The kinds of 16 entries into map from l (the sign of each energy minus
- * its left or upper neighbour's) and r (the right or lower neighbour's
- * minus the energy's): S where l < 0 < r, A where l > 0 > r. Returns their
- * plateau mask (exactly one of l, r zero). lt_r, gt_r: r < 0, r > 0. */
-static inline uint32_t decide16(__m128i l, __m128i r, __m128i lt_r, __m128i gt_r, uint8_t *map)
+/* The signs -1, 0, +1 of 16 signed bytes. */
+static inline __m128i sign16(__m128i v)
 {
     const __m128i zero = _mm_setzero_si128();
-    const __m128i s = _mm_and_si128(_mm_cmpgt_epi8(zero, l), gt_r);
-    const __m128i a = _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi8(l, zero), lt_r),
-                                    _mm_set1_epi8((char)SYMLINE_MAP_A));
+    return _mm_sub_epi8(_mm_cmpgt_epi8(zero, v), _mm_cmpgt_epi8(v, zero));
+}
+
+/* The kinds of 16 entries into map from the signs l (of each energy minus
+ * its left or upper neighbour's) and r (of the right or lower neighbour's
+ * minus the energy's), -1, 0 or +1 each. With v = r - l: an S point where
+ * v = 2 (l = -1, r = +1), an A point where v = -2; exactly one of l, r is
+ * zero where v is odd. Returns the plateau mask. */
+static inline uint32_t decide16(__m128i l, __m128i r, uint8_t *map)
+{
+    const __m128i v = _mm_sub_epi8(r, l);
+    const __m128i s = _mm_cmpeq_epi8(v, _mm_set1_epi8(2));
+    const __m128i a =
+        _mm_and_si128(_mm_cmpeq_epi8(v, _mm_set1_epi8(-2)), _mm_set1_epi8((char)SYMLINE_MAP_A));
     _mm_storeu_si128((__m128i *)(void *)map, _mm_or_si128(s, a));
-    return (uint32_t)_mm_movemask_epi8(
-        _mm_xor_si128(_mm_cmpeq_epi8(l, zero), _mm_cmpeq_epi8(r, zero)));
+    /* bit 0 of each byte to its bit 7 (a 16-bit shift moves no other bit there) */
+    return (uint32_t)_mm_movemask_epi8(_mm_slli_epi16(v, 7));
 }
 
-static inline uint32_t decide16_lr(__m128i l, __m128i r, uint8_t *map)
+/* The mask m of the last 16 entries of a block, at o = n - 16, into the word
+ * of entries x .. n-1 (x a multiple of 32, n - x < 32): entries below x are
+ * in the word before, already set. */
+static inline uint32_t tail_bits(uint32_t m, size_t o, size_t x)
 {
-    const __m128i zero = _mm_setzero_si128();
-    return decide16(l, r, _mm_cmpgt_epi8(zero, r), _mm_cmpgt_epi8(r, zero), map);
+    return (o >= x) ? m << (o - x) : m >> (x - o);
 }
 
-/* Sets the plateau mask m of the 16 entries at x in ev (cleared before). */
-static inline void put16(uint32_t *ev, size_t x, uint32_t m)
+/* Along a row: the signs r of chunk x (the next entries' minus these) and l
+ * (these minus the previous ones'), l from the last r of the chunk before
+ * and the first 15 of r, shifted by one byte lane. */
+static inline void along_next(const uint32_t *E, size_t x, __m128i *l, __m128i *r)
 {
-    const uint32_t sh = (uint32_t)x % 32u;
-    ev[x / 32u] |= m << sh;
-    if (sh > 16u) {
-        ev[x / 32u + 1u] |= m >> (32u - sh);
-    }
-}
-
-/* Clears the n entries' words of ev; returns their OR after the decisions. */
-static inline void clear_words(uint32_t *ev, uint32_t n)
-{
-    uint32_t k;
-    for (k = 0; 32u * k < n; k++) {
-        ev[k] = 0u;
-    }
-}
-
-static inline uint32_t or_words(const uint32_t *ev, uint32_t n)
-{
-    uint32_t k, any = 0u;
-    for (k = 0; 32u * k < n; k++) {
-        any |= ev[k];
-    }
-    return any;
+    const __m128i rn = sign16(diff16(E + x + 1, E + x));
+    *l = _mm_or_si128(_mm_srli_si128(*r, 15), _mm_slli_si128(rn, 1));
+    *r = rn;
 }
 
 uint32_t symline_i_extrema_along(const uint32_t *E, uint32_t n, uint8_t *restrict map,
                                  uint32_t *restrict ev)
 {
     __m128i l, r;
-    size_t x = 0u;
+    uint32_t any = 0u, w, m;
+    size_t x;
     if (n < 16u) {
         return symline_i_extrema_along_c(E, n, map, ev);
     }
-    clear_words(ev, n);
-    l = diff16(E, E - 1);
-    r = diff16(E + 1, E);
-    for (;;) {
-        put16(ev, x, decide16_lr(l, r, map + x));
-        x += 16u;
-        if (x + 16u > n) {
-            break;
+    l = sign16(diff16(E, E - 1));
+    r = sign16(diff16(E + 1, E));
+    for (x = 0; x + 32u <= n; x += 32u) {
+        m = decide16(l, r, map + x);
+        along_next(E, x + 16u, &l, &r);
+        w = m | (decide16(l, r, map + x + 16u) << 16);
+        if (x + 48u <= n) {
+            along_next(E, x + 32u, &l, &r);
         }
-        {
-            /* l of the next 16: the last r of these, then the next r's first 15. */
-            const __m128i rn = diff16(E + x + 1, E + x);
-            l = _mm_or_si128(_mm_srli_si128(r, 15), _mm_slli_si128(rn, 1));
-            r = rn;
-        }
+        ev[x / 32u] = w;
+        any |= w;
     }
     if (x < n) {
-        x = n - 16u;
-        put16(ev, x, decide16_lr(diff16(E + x, E + x - 1), diff16(E + x + 1, E + x), map + x));
+        /* l, r are chunk x's where it is whole; the last 16 once more */
+        const size_t o = n - 16u;
+        w = (x + 16u <= n) ? decide16(l, r, map + x) : 0u;
+        if (x + 16u != n) {
+            m = decide16(sign16(diff16(E + o, E + o - 1)), sign16(diff16(E + o + 1, E + o)),
+                         map + o);
+            w |= tail_bits(m, o, x);
+        }
+        ev[x / 32u] = w;
+        any |= w;
     }
-    return or_words(ev, n);
+    return any;
 }
 
 /* Down the columns: 16 entries at x, with sg's signs s (read before any store). */
 static inline uint32_t across16(const uint32_t *restrict mid, const uint32_t *restrict dn,
                                 int8_t *restrict sg, __m128i s, size_t x, uint8_t *restrict map)
 {
-    const __m128i zero = _mm_setzero_si128();
-    const __m128i r = diff16(dn + x, mid + x);
-    const __m128i lt_r = _mm_cmpgt_epi8(zero, r), gt_r = _mm_cmpgt_epi8(r, zero);
-    /* the signs -1, 0, +1 of r for the next row */
-    _mm_storeu_si128((__m128i *)(void *)(sg + x), _mm_sub_epi8(lt_r, gt_r));
-    return decide16(s, r, lt_r, gt_r, map + x);
+    const __m128i r = sign16(diff16(dn + x, mid + x));
+    _mm_storeu_si128((__m128i *)(void *)(sg + x), r); /* the next row's */
+    return decide16(s, r, map + x);
+}
+
+static inline __m128i load_sg(const int8_t *p)
+{
+    return _mm_loadu_si128((const __m128i *)(const void *)p);
 }
 
 uint32_t symline_i_extrema_across(const uint32_t *restrict mid, const uint32_t *restrict dn,
@@ -134,20 +133,26 @@ uint32_t symline_i_extrema_across(const uint32_t *restrict mid, const uint32_t *
                                   uint32_t *restrict ev)
 {
     __m128i s_tail;
+    uint32_t any = 0u, w;
     size_t x;
     if (n < 16u) {
         return symline_i_extrema_across_c(mid, dn, sg, n, map, ev);
     }
-    clear_words(ev, n);
     /* The last 16 signs before the loop overwrites some of them. */
-    s_tail = _mm_loadu_si128((const __m128i *)(const void *)(sg + (n - 16u)));
-    for (x = 0; x + 16u <= n; x += 16u) {
-        put16(ev, x,
-              across16(mid, dn, sg, _mm_loadu_si128((const __m128i *)(const void *)(sg + x)), x,
-                       map));
+    s_tail = load_sg(sg + (n - 16u));
+    for (x = 0; x + 32u <= n; x += 32u) {
+        w = across16(mid, dn, sg, load_sg(sg + x), x, map) |
+            (across16(mid, dn, sg, load_sg(sg + x + 16u), x + 16u, map) << 16);
+        ev[x / 32u] = w;
+        any |= w;
     }
     if (x < n) {
-        put16(ev, n - 16u, across16(mid, dn, sg, s_tail, n - 16u, map));
+        w = (x + 16u <= n) ? across16(mid, dn, sg, load_sg(sg + x), x, map) : 0u;
+        if (x + 16u != n) {
+            w |= tail_bits(across16(mid, dn, sg, s_tail, n - 16u, map), n - 16u, x);
+        }
+        ev[x / 32u] = w;
+        any |= w;
     }
-    return or_words(ev, n);
+    return any;
 }
