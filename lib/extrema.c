@@ -25,14 +25,68 @@
         }                                                                                          \
     } while (0)
 
+/* The references in whole-row lane loops where the compiler has vector
+ * lanes (SSE2, NEON) and the build optimises for speed; else one entry at a
+ * time (kinds_small()), which is shorter, needs less stack and is as fast
+ * on scalar cores. */
+#if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__)
+#define SL_KINDS_LANES SL_FOR_SPEED
+#else
+#define SL_KINDS_LANES 0
+#endif
+
+/* The sign -1, 0, +1 of a - b. */
+static inline int8_t sign_of(uint32_t a, uint32_t b)
+{
+    return (int8_t)((int32_t)(a > b) - (int32_t)(a < b));
+}
+
+/*
+ * The references one entry at a time: entries
+ * x0 .. x1-1 (at most 32) with the signs l of mid - up (from sg where it
+ * is not NULL, which then takes the next row's; else from up) and r of
+ * dn - mid.
+ * Returns their plateau bits.
+ */
+static uint32_t kinds_small(const uint32_t *up, const uint32_t *mid, const uint32_t *dn, int8_t *sg,
+                            uint32_t x0, uint32_t x1, uint8_t *map)
+{
+    uint32_t x, bits = 0u;
+    for (x = x0; x < x1; x++) {
+        const int8_t r = sign_of(dn[x], mid[x]);
+        int8_t l;
+        if (sg == NULL) {
+            l = sign_of(mid[x], up[x]);
+        } else {
+            l = sg[x];
+        }
+        map[x] = (uint8_t)((l < 0 && r > 0)   ? SYMLINE_MAP_S
+                           : (l > 0 && r < 0) ? SYMLINE_MAP_A
+                                              : SYMLINE_MAP_NONE);
+        bits |= (uint32_t)((l == 0) != (r == 0)) << (x - x0);
+        if (sg != NULL) {
+            sg[x] = r;
+        }
+    }
+    return bits;
+}
+
 uint32_t symline_i_extrema_along_c(const uint32_t *E, uint32_t n, uint8_t *restrict map,
                                    uint32_t *restrict ev)
 {
     const uint32_t *const L = E - 1, *const R = E + 1; /* the neighbours */
     uint32_t x0, x, any = 0u;
+    if (!SL_KINDS_LANES && SL_KINDS_MAX == 32u) { /* one word */
+        return *ev = kinds_small(L, E, R, NULL, 0u, n, map);
+    }
     for (x0 = 0; x0 < n; x0 += 32u) {
         const uint32_t x1 = (n - x0 > 32u) ? x0 + 32u : n;
         uint32_t flat = 0u, bits = 0u;
+        if (!SL_KINDS_LANES) {
+            ev[x0 / 32u] = bits = kinds_small(L, E, R, NULL, x0, x1, map);
+            any |= bits;
+            continue;
+        }
         /* E < 2^31 for every radius (symline_emax(255) < 2^31), so the sign
          * of a difference is its top bit: an S point when both E[x-1] - E[x]
          * and E[x+1] - E[x] are positive (E[x] - E[x-1] and E[x] - E[x+1]
@@ -60,11 +114,19 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
                                     uint32_t *restrict ev)
 {
     uint32_t x0, x, any = 0u;
+    if (!SL_KINDS_LANES && SL_KINDS_MAX == 32u) { /* one word */
+        return *ev = kinds_small(mid, mid, dn, sg, 0u, n, map);
+    }
     for (x0 = 0; x0 < n; x0 += 32u) {
         const uint32_t x1 = (n - x0 > 32u) ? x0 + 32u : n;
         uint32_t flat = 0u, bits = 0u;
+        if (!SL_KINDS_LANES) {
+            ev[x0 / 32u] = bits = kinds_small(mid, mid, dn, sg, x0, x1, map);
+            any |= bits;
+            continue;
+        }
         for (x = x0; x < x1; x++) {
-            const int32_t u = sg[x]; /* sign of mid - up */
+            const int8_t u = sg[x]; /* sign of mid - up */
             const uint32_t b = mid[x], c = dn[x];
             map[x] = (uint8_t)((u < 0 && c > b)   ? SYMLINE_MAP_S
                                : (u > 0 && c < b) ? SYMLINE_MAP_A
@@ -76,7 +138,7 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
         }
         /* The next row's signs, once this row's are read. */
         for (x = x0; x < x1; x++) {
-            sg[x] = (int8_t)((int32_t)(dn[x] > mid[x]) - (int32_t)(dn[x] < mid[x]));
+            sg[x] = sign_of(dn[x], mid[x]);
         }
         ev[x0 / 32u] = bits;
         any |= bits;
@@ -133,7 +195,7 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
         if (symline_i_extrema_along(E + x0, x1 - x0, map + x0, ev) == 0u) {
             continue;
         }
-        for (k = 0; 32u * k < x1 - x0; k++) {
+        for (k = 0; k < (x1 - x0 + 31u) / 32u; k++) {
             uint32_t bits;
             for (bits = ev[k]; bits != 0u; bits &= bits - 1u) {
                 const uint32_t i = x0 + 32u * k + lowest_bit(bits); /* i + 1 < n */
@@ -182,28 +244,28 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
     uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
     uint32_t i, nb, k, ev[SL_KINDS_WORDS];
     if (t == 1u) {
+        /* Row 0 is never marked; the signs to row 1; the runs that start at
+         * row 0, without a side. */
         for (i = 0; i < w; i++) {
-            cd->sg[i] = 0;
+            const int8_t r = sign_of(E[i], mid[i]);
+            mr[i] = SYMLINE_MAP_NONE;
+            cd->sg[i] = r;
+            if (r == 0) {
+                cd->run_start[i] = 0u;
+                cd->sg[w + i] = 0;
+            }
         }
+        return;
     }
     for (i = 0; i < w; i += nb) {
         nb = (w - i > SL_KINDS_MAX) ? SL_KINDS_MAX : w - i;
-        if (symline_i_extrema_across(mid + i, E + i, cd->sg + i, nb, mr + i, ev) == 0u || t == 1u) {
+        if (symline_i_extrema_across(mid + i, E + i, cd->sg + i, nb, mr + i, ev) == 0u) {
             continue;
         }
-        for (k = 0; 32u * k < nb; k++) {
+        for (k = 0; k < (nb + 31u) / 32u; k++) {
             uint32_t bits;
             for (bits = ev[k]; bits != 0u; bits &= bits - 1u) {
                 plateau_down(cd, up, mid, E, t, i + 32u * k + lowest_bit(bits));
-            }
-        }
-    }
-    if (t == 1u) {
-        /* The runs that start at row 0. */
-        for (i = 0; i < w; i++) {
-            if (mid[i] == E[i]) {
-                cd->run_start[i] = 0u;
-                cd->sg[w + i] = 0;
             }
         }
     }

@@ -15,8 +15,13 @@
 #define SL_RUN_ANY_LENGTH UINT32_MAX
 
 /* Entries of one call of symline_i_extrema_along() or _across() at most,
- * and the 32-bit words of their plateau masks. */
+ * and the 32-bit words of their plateau masks (on the caller's stack): 256
+ * where SIMD versions decide them (fewer calls), else 32. */
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
 #define SL_KINDS_MAX 256u
+#else
+#define SL_KINDS_MAX 32u
+#endif
 #define SL_KINDS_WORDS (SL_KINDS_MAX / 32u)
 
 /*
