@@ -84,7 +84,7 @@ static void runs_reference(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t 
     }
 }
 
-/* Rows longer than the 64-entry blocks, runs across block borders, all lags. */
+/* Rows longer than the blocks (SL_KINDS_MAX), runs across block borders, all lags. */
 static void routine_is_the_rule(void **state)
 {
     uint32_t E[400], s = 7u, t, i;
