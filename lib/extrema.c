@@ -27,8 +27,8 @@
 
 /* The references in whole-row lane loops where the compiler has vector
  * lanes (SSE2, NEON) and the build optimises for speed; else one entry at a
- * time (kinds_small()), which is shorter, needs less stack and is as fast
- * on scalar cores. */
+ * time (kinds_small()), which is shorter, needs less stack and is faster on
+ * scalar cores. */
 #if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__)
 #define SL_KINDS_LANES SL_FOR_SPEED
 #else
@@ -36,37 +36,37 @@
 #endif
 
 /* The sign -1, 0, +1 of a - b. */
-static inline int8_t sign_of(uint32_t a, uint32_t b)
+static inline int32_t sign_of(uint32_t a, uint32_t b)
 {
-    return (int8_t)((int32_t)(a > b) - (int32_t)(a < b));
+    return (int32_t)(a > b) - (int32_t)(a < b);
 }
 
 /*
- * The references one entry at a time: entries
- * x0 .. x1-1 (at most 32) with the signs l of mid - up (from sg where it
- * is not NULL, which then takes the next row's; else from up) and r of
- * dn - mid.
- * Returns their plateau bits.
+ * The references one entry at a time, branch-free: entries x0 .. x1-1 (at
+ * most 32) of mid with the signs l of mid - up and r of dn - mid. Down the
+ * columns (sg not NULL) l comes from sg, which takes r for the next row;
+ * along a row (sg NULL, dn = mid + 1) l is the previous entry's r. With
+ * v = r - l: an S point where v = 2 (l = -1, r = +1), an A point where
+ * v = -2; exactly one of l, r is zero where v is odd. Returns the plateau
+ * bits.
  */
-static uint32_t kinds_small(const uint32_t *up, const uint32_t *mid, const uint32_t *dn, int8_t *sg,
-                            uint32_t x0, uint32_t x1, uint8_t *map)
+static uint32_t kinds_small(const uint32_t *mid, const uint32_t *dn, int8_t *sg, uint32_t x0,
+                            uint32_t x1, uint8_t *map)
 {
+    const uint32_t *const first = mid + x0;
     uint32_t x, bits = 0u;
+    int32_t l = (sg == NULL) ? sign_of(first[0], first[-1]) : 0;
     for (x = x0; x < x1; x++) {
-        const int8_t r = sign_of(dn[x], mid[x]);
-        int8_t l;
-        if (sg == NULL) {
-            l = sign_of(mid[x], up[x]);
-        } else {
-            l = sg[x];
-        }
-        map[x] = (uint8_t)((l < 0 && r > 0)   ? SYMLINE_MAP_S
-                           : (l > 0 && r < 0) ? SYMLINE_MAP_A
-                                              : SYMLINE_MAP_NONE);
-        bits |= (uint32_t)((l == 0) != (r == 0)) << (x - x0);
+        const int32_t r = sign_of(dn[x], mid[x]);
+        int32_t v;
         if (sg != NULL) {
-            sg[x] = r;
+            l = (int32_t)sg[x];
+            sg[x] = (int8_t)r;
         }
+        v = r - l;
+        map[x] = (uint8_t)((0u - (uint32_t)(v == 2)) | ((uint32_t)(v == -2) << 7));
+        bits |= ((uint32_t)v & 1u) << (x - x0);
+        l = r;
     }
     return bits;
 }
@@ -77,13 +77,13 @@ uint32_t symline_i_extrema_along_c(const uint32_t *E, uint32_t n, uint8_t *restr
     const uint32_t *const L = E - 1, *const R = E + 1; /* the neighbours */
     uint32_t x0, x, any = 0u;
     if (!SL_KINDS_LANES && SL_KINDS_MAX == 32u) { /* one word */
-        return *ev = kinds_small(L, E, R, NULL, 0u, n, map);
+        return *ev = kinds_small(E, R, NULL, 0u, n, map);
     }
     for (x0 = 0; x0 < n; x0 += 32u) {
         const uint32_t x1 = (n - x0 > 32u) ? x0 + 32u : n;
         uint32_t flat = 0u, bits = 0u;
         if (!SL_KINDS_LANES) {
-            ev[x0 / 32u] = bits = kinds_small(L, E, R, NULL, x0, x1, map);
+            ev[x0 / 32u] = bits = kinds_small(E, R, NULL, x0, x1, map);
             any |= bits;
             continue;
         }
@@ -115,13 +115,13 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
 {
     uint32_t x0, x, any = 0u;
     if (!SL_KINDS_LANES && SL_KINDS_MAX == 32u) { /* one word */
-        return *ev = kinds_small(mid, mid, dn, sg, 0u, n, map);
+        return *ev = kinds_small(mid, dn, sg, 0u, n, map);
     }
     for (x0 = 0; x0 < n; x0 += 32u) {
         const uint32_t x1 = (n - x0 > 32u) ? x0 + 32u : n;
         uint32_t flat = 0u, bits = 0u;
         if (!SL_KINDS_LANES) {
-            ev[x0 / 32u] = bits = kinds_small(mid, mid, dn, sg, x0, x1, map);
+            ev[x0 / 32u] = bits = kinds_small(mid, dn, sg, x0, x1, map);
             any |= bits;
             continue;
         }
@@ -138,7 +138,7 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
         }
         /* The next row's signs, once this row's are read. */
         for (x = x0; x < x1; x++) {
-            sg[x] = sign_of(dn[x], mid[x]);
+            sg[x] = (int8_t)sign_of(dn[x], mid[x]);
         }
         ev[x0 / 32u] = bits;
         any |= bits;
@@ -247,7 +247,7 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
         /* Row 0 is never marked; the signs to row 1; the runs that start at
          * row 0, without a side. */
         for (i = 0; i < w; i++) {
-            const int8_t r = sign_of(E[i], mid[i]);
+            const int8_t r = (int8_t)sign_of(E[i], mid[i]);
             mr[i] = SYMLINE_MAP_NONE;
             cd->sg[i] = r;
             if (r == 0) {
