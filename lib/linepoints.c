@@ -25,8 +25,14 @@
 #include "stagemark.h"
 #include "symmetry.h"
 
-void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
-                        uint16_t *acc, uint8_t *out)
+#ifdef SYMLINE_PORT_GRID
+#define SL_GRID_ROW symline_i_grid_row_c
+#else
+#define SL_GRID_ROW symline_i_grid_row
+#endif
+
+void SL_GRID_ROW(const symline_image *img, const symline_i_pass *p, uint32_t y, uint16_t *acc,
+                 uint8_t *out)
 {
     const uint32_t s = 1u << p->level;
     const uint32_t shift = 2u * p->level;
