@@ -1,0 +1,140 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * The optional SIMD versions of hot loops in port/ (on Cortex-M4/M7, the
+ * ARMv7E-M DSP versions of port/armv7em/) against the portable references
+ * of lib/, on the target: the same output for random and extreme gray
+ * values, every alignment of the rows, radii and widths around the blocks
+ * of the SIMD loops. Built into the target tests (test_core.c); without port
+ * versions in the build it checks nothing and says so.
+ */
+#include <stdint.h>
+#include <string.h>
+
+#include "fwtest.h"
+#include "test_port.h"
+
+#ifdef SYMLINE_PORT_ENERGY
+#include "symmetry.h"
+#endif
+#ifdef SYMLINE_PORT_GRID
+#include "linepoints.h"
+#endif
+
+#if defined(SYMLINE_PORT_ENERGY) || defined(SYMLINE_PORT_GRID)
+static uint32_t rng_state = 12345u;
+
+static uint8_t rnd8(void)
+{
+    rng_state = rng_state * 1664525u + 1013904223u;
+    return (uint8_t)(rng_state >> 24);
+}
+
+/* Random gray values; every fourth fill only 0 and 255 (largest differences). */
+static void fill_gray(uint8_t *g, uint32_t n, unsigned round)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        const uint8_t v = rnd8();
+        g[i] = (round % 4u == 3u) ? (uint8_t)((v & 1u) ? 255u : 0u) : v;
+    }
+}
+#endif
+
+#ifdef SYMLINE_PORT_ENERGY
+#define PT_ROW 400u
+static uint8_t pt_gray[PT_ROW + 8u];
+static uint8_t pt_rows[2u * 130u + 1u][72u];
+static uint32_t pt_e1[PT_ROW], pt_e2[PT_ROW];
+
+static void energy_checks(void)
+{
+    static const uint32_t radii[] = {1u, 2u, 3u, 4u, 5u, 7u, 10u, 32u, 128u, 129u, 255u};
+    static const uint32_t lens[] = {1u, 2u, 3u, 5u, 7u, 8u, 9u, 15u, 16u, 17u, 22u, 23u,
+                                    24u, 25u, 40u, 67u, 161u, 320u, 400u};
+    unsigned r, l, off, round = 0u;
+    const uint8_t *rows[2u * 130u + 1u];
+    for (r = 0; r < sizeof radii / sizeof radii[0]; r++) {
+        const uint32_t m = radii[r];
+        for (l = 0; l < sizeof lens / sizeof lens[0]; l++) {
+            const uint32_t n = lens[l];
+            for (off = 0; off < 4u; off++, round++) {
+                uint32_t i, j;
+                fill_gray(pt_gray, PT_ROW + 8u, round);
+                symline_i_energy_row(pt_gray + off, n, m, pt_e1);
+                symline_i_energy_row_c(pt_gray + off, n, m, pt_e2);
+                FW_CHECK(memcmp(pt_e1, pt_e2, n * sizeof(uint32_t)) == 0,
+                         "energy row m=%lu n=%lu offset %u", (unsigned long)m, (unsigned long)n,
+                         off);
+                if (m > 130u || n > 64u) {
+                    continue;
+                }
+                /* Across: a window of 2m+1 rows, the first `off` rows and,
+                 * every other round, the last ones outside the image. */
+                for (j = 0; j <= 2u * m; j++) {
+                    fill_gray(pt_rows[j], 72u, round);
+                    rows[j] = pt_rows[j] + off;
+                }
+                for (i = 0; i < off && i < m; i++) {
+                    rows[i] = NULL;
+                    if (round % 2u == 1u) {
+                        rows[2u * m - i] = NULL;
+                    }
+                }
+                symline_i_energy_across(rows, m, n, pt_e1);
+                symline_i_energy_across_c(rows, m, n, pt_e2);
+                FW_CHECK(memcmp(pt_e1, pt_e2, n * sizeof(uint32_t)) == 0,
+                         "energy across m=%lu width=%lu offset %u", (unsigned long)m,
+                         (unsigned long)n, off);
+            }
+        }
+    }
+}
+#endif
+
+#ifdef SYMLINE_PORT_GRID
+#define PT_W 83u
+#define PT_H 70u
+#define PT_STRIDE 88u
+static uint8_t pt_img[PT_STRIDE * PT_H + 4u];
+static uint16_t pt_acc[PT_W];
+static uint8_t pt_g1[PT_W], pt_g2[PT_W];
+
+static void grid_checks(void)
+{
+    unsigned level, round, off;
+    for (round = 0; round < 8u; round++) {
+        for (off = 0; off < 4u; off++) {
+            for (level = 1u; level <= 4u; level++) {
+                /* widths cut the rows at every remainder of the 4-output steps */
+                const uint32_t width = PT_W - off - 3u * (round % 4u);
+                const symline_image img = {width, PT_H, PT_STRIDE, pt_img + off};
+                symline_i_pass p;
+                uint32_t y;
+                memset(&p, 0, sizeof p);
+                p.level = level;
+                p.w = width >> level;
+                p.h = PT_H >> level;
+                fill_gray(pt_img, sizeof pt_img, round);
+                for (y = 0; y < p.h; y++) {
+                    symline_i_grid_row(&img, &p, y, pt_acc, pt_g1);
+                    symline_i_grid_row_c(&img, &p, y, pt_acc, pt_g2);
+                    FW_CHECK(memcmp(pt_g1, pt_g2, p.w) == 0, "grid row %lu level %u width %lu",
+                             (unsigned long)y, level, (unsigned long)width);
+                }
+            }
+        }
+    }
+}
+#endif
+
+void fw_port_checks(void)
+{
+    const unsigned before = fw_checks;
+#ifdef SYMLINE_PORT_ENERGY
+    energy_checks();
+#endif
+#ifdef SYMLINE_PORT_GRID
+    grid_checks();
+#endif
+    printf("port versions against the portable references: %u checks\n", fw_checks - before);
+}
