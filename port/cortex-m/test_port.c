@@ -19,8 +19,12 @@
 #ifdef SYMLINE_PORT_GRID
 #include "linepoints.h"
 #endif
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+#include "extrema.h"
+#endif
 
-#if defined(SYMLINE_PORT_ENERGY) || defined(SYMLINE_PORT_GRID)
+#if defined(SYMLINE_PORT_ENERGY) || defined(SYMLINE_PORT_GRID) ||                                 \
+    defined(SYMLINE_PORT_EXTREMA_KINDS)
 static uint32_t rng_state = 12345u;
 
 static uint8_t rnd8(void)
@@ -127,6 +131,51 @@ static void grid_checks(void)
 }
 #endif
 
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+#define PT_N 150u
+static uint32_t pt_up[PT_N], pt_mid[PT_N + 2u], pt_dn[PT_N];
+static uint8_t pt_k1[PT_N], pt_k2[PT_N];
+
+/* Energies from a few values only (plateaus everywhere) or from the whole
+ * range below 2^31 (differences of either sign up to 2^31 - 1). */
+static uint32_t rnd_energy(unsigned round)
+{
+    uint32_t v = (uint32_t)rnd8() << 23 | (uint32_t)rnd8() << 15 | (uint32_t)rnd8() << 7 | rnd8();
+    v &= 0x7fffffffu;
+    return (round % 3u == 0u) ? v % 3u : (round % 3u == 1u) ? v % 40u : v;
+}
+
+static void kinds_checks(void)
+{
+    unsigned round;
+    for (round = 0; round < 60u; round++) {
+        uint32_t n, i;
+        for (i = 0; i < PT_N; i++) {
+            pt_up[i] = rnd_energy(round);
+            pt_dn[i] = rnd_energy(round);
+            pt_mid[i] = rnd_energy(round);
+        }
+        pt_mid[PT_N] = rnd_energy(round);
+        pt_mid[PT_N + 1u] = rnd_energy(round);
+        for (n = 1u; n <= PT_N; n += 1u + n / 8u) {
+            const uint32_t f1 = symline_i_extrema_kinds(pt_up, pt_mid, pt_dn, n, pt_k1);
+            const uint32_t f2 = symline_i_extrema_kinds_c(pt_up, pt_mid, pt_dn, n, pt_k2);
+            FW_CHECK(memcmp(pt_k1, pt_k2, n) == 0 && (f1 != 0u) == (f2 != 0u),
+                     "extrema kinds of three rows, n=%lu round %u", (unsigned long)n, round);
+            /* along a row: the row shifted by one entry either way */
+            {
+                const uint32_t g1 =
+                    symline_i_extrema_kinds(pt_mid, pt_mid + 1, pt_mid + 2, n, pt_k1);
+                const uint32_t g2 =
+                    symline_i_extrema_kinds_c(pt_mid, pt_mid + 1, pt_mid + 2, n, pt_k2);
+                FW_CHECK(memcmp(pt_k1, pt_k2, n) == 0 && (g1 != 0u) == (g2 != 0u),
+                         "extrema kinds along a row, n=%lu round %u", (unsigned long)n, round);
+            }
+        }
+    }
+}
+#endif
+
 void fw_port_checks(void)
 {
     const unsigned before = fw_checks;
@@ -135,6 +184,9 @@ void fw_port_checks(void)
 #endif
 #ifdef SYMLINE_PORT_GRID
     grid_checks();
+#endif
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+    kinds_checks();
 #endif
     printf("port versions against the portable references: %u checks\n", fw_checks - before);
 }
