@@ -22,9 +22,13 @@
 #ifdef SYMLINE_PORT_EXTREMA_KINDS
 #include "extrema.h"
 #endif
+#if defined(SYMLINE_PORT_DROP_DIM_S) || defined(SYMLINE_PORT_FIND_S)
+#include "linepoints.h"
+#endif
 
 #if defined(SYMLINE_PORT_ENERGY) || defined(SYMLINE_PORT_GRID) ||                                 \
-    defined(SYMLINE_PORT_EXTREMA_KINDS)
+    defined(SYMLINE_PORT_EXTREMA_KINDS) || defined(SYMLINE_PORT_DROP_DIM_S) ||                     \
+    defined(SYMLINE_PORT_FIND_S)
 static uint32_t rng_state = 12345u;
 
 static uint8_t rnd8(void)
@@ -176,6 +180,72 @@ static void kinds_checks(void)
 }
 #endif
 
+#if defined(SYMLINE_PORT_DROP_DIM_S) || defined(SYMLINE_PORT_FIND_S)
+#define PT_M 80u
+static uint8_t pt_c[PT_M + 4u], pt_lo[PT_M + 4u], pt_hi[PT_M + 4u];
+static uint8_t pt_m0[PT_M + 4u], pt_m1[PT_M + 4u], pt_m2[PT_M + 4u];
+
+/* A map row: S points with probability s_in_8 / 8, else A or NONE. */
+static void fill_map(uint8_t *map, uint32_t n, unsigned s_in_8)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        const uint8_t v = rnd8();
+        map[i] = (uint8_t)((v & 7u) < s_in_8 ? SYMLINE_MAP_S
+                           : (v & 8u)        ? SYMLINE_MAP_A
+                                             : SYMLINE_MAP_NONE);
+    }
+}
+#endif
+
+#ifdef SYMLINE_PORT_DROP_DIM_S
+static void drop_checks(void)
+{
+    static const uint32_t limits[] = {0u, 1u, 2u, 17u, 100u, 200u, 254u, 255u, 256u, 1000u};
+    unsigned round;
+    for (round = 0; round < 400u; round++) {
+        symline_i_linefilter f;
+        const uint32_t n = round % 70u, off = round % 4u;
+        memset(&f, 0, sizeof f);
+        f.kind = (round % 5u == 0u) ? SYMLINE_FILTER_PAPER : SYMLINE_FILTER_CONTRAST;
+        f.min_gray = limits[rnd8() % 10u];
+        f.side_max = limits[rnd8() % 10u];
+        f.ridge_min = limits[rnd8() % 10u];
+        fill_gray(pt_c, PT_M + 4u, round);
+        fill_gray(pt_lo, PT_M + 4u, round / 2u);
+        fill_gray(pt_hi, PT_M + 4u, round / 3u);
+        fill_map(pt_m1, PT_M + 4u, 1u + round % 8u);
+        memcpy(pt_m2, pt_m1, sizeof pt_m1);
+        symline_i_drop_dim_s(&f, pt_c + off, pt_lo, pt_hi + off, n, pt_m1 + off);
+        symline_i_drop_dim_s_c(&f, pt_c + off, pt_lo, pt_hi + off, n, pt_m2 + off);
+        FW_CHECK(memcmp(pt_m1, pt_m2, sizeof pt_m1) == 0, "row pre-filter n=%lu round %u",
+                 (unsigned long)n, round);
+    }
+}
+#endif
+
+#ifdef SYMLINE_PORT_FIND_S
+static void find_s_checks(void)
+{
+    unsigned round;
+    for (round = 0; round < 64u; round++) {
+        uint32_t n, x;
+        fill_map(pt_m0, PT_M + 4u, round % 4u); /* S points dense to none */
+        if (round % 16u == 15u) {
+            pt_m0[PT_M - 1u] = SYMLINE_MAP_S; /* one at the very end */
+        }
+        for (n = 0; n <= PT_M; n += 1u + round % 7u) {
+            for (x = 0; x <= n; x++) {
+                FW_CHECK(symline_i_find_s(pt_m0 + round % 4u, x, n) ==
+                             symline_i_find_s_c(pt_m0 + round % 4u, x, n),
+                         "find S from %lu of %lu, round %u", (unsigned long)x, (unsigned long)n,
+                         round);
+            }
+        }
+    }
+}
+#endif
+
 void fw_port_checks(void)
 {
     const unsigned before = fw_checks;
@@ -187,6 +257,12 @@ void fw_port_checks(void)
 #endif
 #ifdef SYMLINE_PORT_EXTREMA_KINDS
     kinds_checks();
+#endif
+#ifdef SYMLINE_PORT_DROP_DIM_S
+    drop_checks();
+#endif
+#ifdef SYMLINE_PORT_FIND_S
+    find_s_checks();
 #endif
     printf("port versions against the portable references: %u checks\n", fw_checks - before);
 }
