@@ -104,8 +104,15 @@ void symline_i_drop_dim_s(const symline_i_linefilter *f, const uint8_t *c, const
             : "cc", "memory");
         x = 4u * steps;
     }
-    if (x < n) {
-        symline_i_drop_dim_s_c(f, c + x, lo + x, hi + x, n - x, map + x);
+    /* The last 1..3 entries one at a time (here rather than by a call of the
+     * reference: this runs at the bottom of the detector's deepest chain). */
+    for (; x < n; x++) {
+        const uint32_t side = lo[x] > hi[x] ? lo[x] : hi[x];
+        const uint32_t ridge = c[x] > side ? (uint32_t)c[x] - side : 0u;
+        if (map[x] == SYMLINE_MAP_S && (c[x] < (mg & 0xffu) || side > (sm & 0xffu) ||
+                                        ridge < (rm & 0xffu))) {
+            map[x] = SYMLINE_MAP_NONE;
+        }
     }
 }
 
