@@ -157,7 +157,8 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 
 /* The byte-lane pre-filter below pays where the compiler has vector lanes for
  * it (16 bytes per instruction); on scalar cores (Cortex-M) it would cost about
- * what it saves, in code size too, so it is left out there. */
+ * what it saves, in code size too, so it is left out there, unless a port has
+ * byte lanes for it (Cortex-M4/M7: SYMLINE_PORT_DROP_DIM_S, port/armv7em/). */
 #if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__) ||                           \
     defined(SYMLINE_PORT_DROP_DIM_S)
 #define SL_ROW_PREFILTER 1
