@@ -201,7 +201,8 @@ void symline_i_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
 void symline_i_energy_across(const uint8_t *const *rows, uint32_t m, uint32_t width, uint32_t *E)
 {
     uint32_t j, border = 0u;
-    if (m == 3u && rows[0] != NULL && rows[6] != NULL && rows[1] != NULL && rows[5] != NULL) {
+    if (m == 3u && rows[0] != NULL && rows[1] != NULL && rows[2] != NULL && rows[4] != NULL &&
+        rows[5] != NULL && rows[6] != NULL) {
         const uint8_t *const p[6] = {rows[2], rows[4], rows[1], rows[5], rows[0], rows[6]};
         tail_r3(p, pass_r3(p, width, E), width, E);
         return;
