@@ -146,7 +146,36 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
     return any;
 }
 
-#ifndef SYMLINE_PORT_EXTREMA_KINDS
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
+                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
+{
+    uint32_t x, flat = 0u;
+    for (x = 0; x < n; x++) {
+        const uint32_t a = up[x], b = mid[x], c = dn[x];
+        const uint32_t s = ((b - a) & (b - c)) >> 31;
+        const uint32_t l = ((a - b) & (c - b)) >> 31;
+        map[x] = (uint8_t)((0u - s) | (l << 7));
+        flat |= (uint32_t)(a == b) | (uint32_t)(b == c);
+    }
+    return flat;
+}
+
+/* The port's decision of n <= 32 entries, and their plateau bits where it
+ * flags equal neighbours. */
+static uint32_t kinds_port(const uint32_t *up, const uint32_t *mid, const uint32_t *dn, uint32_t n,
+                           uint8_t *map, uint32_t *ev)
+{
+    uint32_t bits = 0u;
+    if (symline_i_extrema_kinds(up, mid, dn, n, map) != 0u) {
+        SL_PLATEAU_BITS(bits, 0u, n, up[x_] == mid[x_], mid[x_] == dn[x_]);
+    }
+    *ev = bits;
+    return bits;
+}
+#endif
+
+#ifndef SYMLINE_PORT_EXTREMA_ROWS
 uint32_t symline_i_extrema_along(const uint32_t *E, uint32_t n, uint8_t *restrict map,
                                  uint32_t *restrict ev)
 {
@@ -192,7 +221,11 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
     map[n - 1u] = SYMLINE_MAP_NONE;
     for (x0 = 1u; x0 + 1u < n; x0 = x1) {
         x1 = x0 + ((n - 1u - x0 > SL_KINDS_MAX) ? SL_KINDS_MAX : n - 1u - x0);
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+        if (kinds_port(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0, ev) == 0u) {
+#else
         if (symline_i_extrema_along(E + x0, x1 - x0, map + x0, ev) == 0u) {
+#endif
             continue;
         }
         for (k = 0; k < (x1 - x0 + 31u) / 32u; k++) {
@@ -259,7 +292,11 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
     }
     for (i = 0; i < w; i += nb) {
         nb = (w - i > SL_KINDS_MAX) ? SL_KINDS_MAX : w - i;
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+        if (kinds_port(up + i, mid + i, E + i, nb, mr + i, ev) == 0u) {
+#else
         if (symline_i_extrema_across(mid + i, E + i, cd->sg + i, nb, mr + i, ev) == 0u) {
+#endif
             continue;
         }
         for (k = 0; k < (nb + 31u) / 32u; k++) {

@@ -17,7 +17,7 @@
 /* Entries of one call of symline_i_extrema_along() or _across() at most,
  * and the 32-bit words of their plateau masks (on the caller's stack): 256
  * where SIMD versions decide them (fewer calls), else 32. */
-#ifdef SYMLINE_PORT_EXTREMA_KINDS
+#ifdef SYMLINE_PORT_EXTREMA_ROWS
 #define SL_KINDS_MAX 256u
 #else
 #define SL_KINDS_MAX 32u
@@ -43,7 +43,7 @@
  * dn[x] - mid[x], the next row's. So each difference is taken once.
  *
  * The _c versions are the portable references; the others are the build's
- * choice: SIMD versions from port/ (SYMLINE_PORT_EXTREMA_KINDS, CMake option
+ * choice: SIMD versions from port/ (SYMLINE_PORT_EXTREMA_ROWS, CMake option
  * SYMLINE_SIMD) with the same output, or the references.
  */
 uint32_t symline_i_extrema_along_c(const uint32_t *E, uint32_t n, uint8_t *restrict map,
@@ -56,6 +56,19 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
 uint32_t symline_i_extrema_across(const uint32_t *restrict mid, const uint32_t *restrict dn,
                                   int8_t *restrict sg, uint32_t n, uint8_t *restrict map,
                                   uint32_t *restrict ev);
+
+/*
+ * A port's decision of three rows (SYMLINE_PORT_EXTREMA_KINDS, a scalar
+ * core's version, port/armv7em/): map[x] as above for n entries of the rows
+ * up, mid and dn; returns nonzero when some mid[x] equals up[x] or dn[x].
+ * symline_i_extrema_kinds_c() is its portable reference. Where a port has
+ * it, the detector decides along and down with it and finds the plateau
+ * ends in the flagged blocks.
+ */
+uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
+                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map);
+uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
+                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map);
 
 /*
  * Extrema of a row of n >= 1 energies into map (n entries: NONE, A or S) by
