@@ -147,6 +147,12 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
 }
 
 #ifdef SYMLINE_PORT_EXTREMA_KINDS
+/* Entries per call of the port's decision; the plateau ends are looked for
+ * only in the blocks it flags (port/CMakeLists.txt may choose). */
+#ifndef SL_PLATEAU_BLOCK
+#define SL_PLATEAU_BLOCK 16u
+#endif
+
 uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
                                    const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
 {
@@ -161,18 +167,6 @@ uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *
     return flat;
 }
 
-/* The port's decision of n <= 32 entries, and their plateau bits where it
- * flags equal neighbours. */
-static uint32_t kinds_port(const uint32_t *up, const uint32_t *mid, const uint32_t *dn, uint32_t n,
-                           uint8_t *map, uint32_t *ev)
-{
-    uint32_t bits = 0u;
-    if (symline_i_extrema_kinds(up, mid, dn, n, map) != 0u) {
-        SL_PLATEAU_BITS(bits, 0u, n, up[x_] == mid[x_], mid[x_] == dn[x_]);
-    }
-    *ev = bits;
-    return bits;
-}
 #endif
 
 #ifndef SYMLINE_PORT_EXTREMA_ROWS
@@ -214,37 +208,57 @@ static inline uint32_t lowest_bit(uint32_t v)
  * 0), and is marked at its middle, which no later block overwrites, unless
  * it touches either end or is longer than the plateau limit allows.
  */
+/* Entry i (0 < i < n-1 of row E) where a run of equal energies begins (a
+ * becomes i) or ends: then the run [a, i] is marked at its middle, unless
+ * it touches entry 0 (a = 0) or is longer than the plateau limit allows. */
+static inline void run_mark(const uint32_t *E, uint32_t i, uint32_t lag, uint8_t *map, uint32_t *a)
+{
+    const uint32_t v = E[i];
+    if (v != E[i - 1u]) {
+        *a = i; /* a run begins */
+    } else if (*a >= 1u && i - (*a + i) / 2u <= lag) {
+        /* Neither neighbour equals v: larger on both sides S, smaller A. */
+        const bool left_up = E[*a - 1u] > v, right_up = E[i + 1u] > v;
+        map[(*a + i) / 2u] = left_up != right_up ? (uint8_t)SYMLINE_MAP_NONE
+                             : left_up           ? (uint8_t)SYMLINE_MAP_S
+                                                 : (uint8_t)SYMLINE_MAP_A;
+    }
+}
+
 void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map)
 {
-    uint32_t x0, x1, k, a = 0u, ev[SL_KINDS_WORDS];
+    uint32_t x0, x1, a = 0u;
     map[0] = SYMLINE_MAP_NONE;
     map[n - 1u] = SYMLINE_MAP_NONE;
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+    /* The port's three-row decision: the run ends looked for entry by entry
+     * in the blocks it flags. */
+    for (x0 = 1u; x0 + 1u < n; x0 = x1) {
+        uint32_t i;
+        x1 = x0 + ((n - 1u - x0 > SL_PLATEAU_BLOCK) ? SL_PLATEAU_BLOCK : n - 1u - x0);
+        if (symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0) != 0u) {
+            for (i = x0; i < x1; i++) {
+                if ((E[i - 1u] == E[i]) != (E[i] == E[i + 1u])) {
+                    run_mark(E, i, lag, map, &a);
+                }
+            }
+        }
+    }
+#else
+    uint32_t k, ev[SL_KINDS_WORDS];
     for (x0 = 1u; x0 + 1u < n; x0 = x1) {
         x1 = x0 + ((n - 1u - x0 > SL_KINDS_MAX) ? SL_KINDS_MAX : n - 1u - x0);
-#ifdef SYMLINE_PORT_EXTREMA_KINDS
-        if (kinds_port(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0, ev) == 0u) {
-#else
         if (symline_i_extrema_along(E + x0, x1 - x0, map + x0, ev) == 0u) {
-#endif
             continue;
         }
         for (k = 0; k < (x1 - x0 + 31u) / 32u; k++) {
             uint32_t bits;
             for (bits = ev[k]; bits != 0u; bits &= bits - 1u) {
-                const uint32_t i = x0 + 32u * k + lowest_bit(bits); /* i + 1 < n */
-                const uint32_t v = E[i];
-                if (v != E[i - 1u]) {
-                    a = i; /* a run begins */
-                } else if (a >= 1u && i - (a + i) / 2u <= lag) {
-                    /* Neither neighbour equals v: larger on both sides S, smaller A. */
-                    const bool left_up = E[a - 1u] > v, right_up = E[i + 1u] > v;
-                    map[(a + i) / 2u] = left_up != right_up ? (uint8_t)SYMLINE_MAP_NONE
-                                        : left_up           ? (uint8_t)SYMLINE_MAP_S
-                                                            : (uint8_t)SYMLINE_MAP_A;
-                }
+                run_mark(E, x0 + 32u * k + lowest_bit(bits), lag, map, &a); /* i + 1 < n */
             }
         }
     }
+#endif
 }
 
 /* Column x, where a run of equal energies begins or ends at row t-1 >= 1. A
@@ -275,7 +289,7 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
     const uint32_t *mid = cd->E3 + (size_t)((t + 2u) % 3u) * w;
     const uint32_t *up = cd->E3 + (size_t)((t + 1u) % 3u) * w; /* t >= 2 */
     uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
-    uint32_t i, nb, k, ev[SL_KINDS_WORDS];
+    uint32_t i, nb;
     if (t == 1u) {
         /* Row 0 is never marked; the signs to row 1; the runs that start at
          * row 0, without a side. */
@@ -290,13 +304,25 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
         }
         return;
     }
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+    /* The port's three-row decision: the plateau ends looked for column by
+     * column in the blocks it flags. */
+    for (i = 0; i < w; i += nb) {
+        uint32_t x;
+        nb = (w - i > SL_PLATEAU_BLOCK) ? SL_PLATEAU_BLOCK : w - i;
+        if (symline_i_extrema_kinds(up + i, mid + i, E + i, nb, mr + i) != 0u) {
+            for (x = i; x < i + nb; x++) {
+                if ((up[x] == mid[x]) != (mid[x] == E[x])) {
+                    plateau_down(cd, up, mid, E, t, x);
+                }
+            }
+        }
+    }
+#else
+    uint32_t k, ev[SL_KINDS_WORDS];
     for (i = 0; i < w; i += nb) {
         nb = (w - i > SL_KINDS_MAX) ? SL_KINDS_MAX : w - i;
-#ifdef SYMLINE_PORT_EXTREMA_KINDS
-        if (kinds_port(up + i, mid + i, E + i, nb, mr + i, ev) == 0u) {
-#else
         if (symline_i_extrema_across(mid + i, E + i, cd->sg + i, nb, mr + i, ev) == 0u) {
-#endif
             continue;
         }
         for (k = 0; k < (nb + 31u) / 32u; k++) {
@@ -306,6 +332,7 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
             }
         }
     }
+#endif
 }
 
 symline_status symline_extrema_row(const uint32_t *E, uint32_t n, uint8_t *map)
