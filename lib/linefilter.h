@@ -126,6 +126,70 @@ uint32_t symline_i_find_s(const uint8_t *map, uint32_t x, uint32_t n);
 #endif
 
 /*
+ * A byte test that rejects most S points before the exact one: the gray
+ * value c of a line point is at least min_gray and, for the contrast filter,
+ * stands ridge_min above the brighter side max(lo, hi). In bytes, saturating
+ * at 255, it keeps every point symline_i_linefilter_gray() keeps (and some
+ * it drops: the exact test follows). For the paper's filter give lo = hi = c
+ * (ridge_min is 0 then): only the gray value counts.
+ */
+typedef struct symline_i_prefilter {
+    uint8_t min_gray;  /* c >= min_gray */
+    uint8_t ridge_min; /* c >= max(lo, hi) + ridge_min, the sum clamped to 255 */
+} symline_i_prefilter;
+
+static inline void symline_i_prefilter_setup(const symline_i_linefilter *f, symline_i_prefilter *pf)
+{
+    pf->min_gray = (uint8_t)(f->min_gray < 255u ? f->min_gray : 255u);
+    pf->ridge_min = 0u;
+    if (f->kind != SYMLINE_FILTER_PAPER) { /* a ridge of 0 fails the exact test too */
+        pf->ridge_min = (uint8_t)(f->ridge_min < 1u     ? 1u
+                                  : f->ridge_min < 255u ? f->ridge_min
+                                                        : 255u);
+    }
+}
+
+/* Most indices one call of symline_i_line_s() reports. */
+#define SL_LINE_S_MAX 32u
+
+/*
+ * The S points of map[x .. n-1] whose gray values c[i], lo[i], hi[i] pass the
+ * byte test of pf, in order: their indices to out[0 ..], at most
+ * SL_LINE_S_MAX; returns how many. *next: where to go on, the entry after
+ * the last one reported when out is full, else n. One pass over the row
+ * finds the few candidates of the exact filter (most S points are dim carpet
+ * texture). symline_i_line_s_c() is the portable reference;
+ * symline_i_line_s() is a SIMD version from port/ (SYMLINE_PORT_LINE_S, CMake
+ * option SYMLINE_SIMD) that tests 16 entries per instruction, with the same
+ * result, and the row decision uses it only where it is built: on scalar
+ * cores a loop over the entries costs the same without it.
+ */
+static inline uint32_t symline_i_line_s_c(const symline_i_prefilter *pf, const uint8_t *map,
+                                          const uint8_t *c, const uint8_t *lo, const uint8_t *hi,
+                                          uint32_t x, uint32_t n, uint16_t *out, uint32_t *next)
+{
+    uint32_t k = 0u;
+    for (; x < n; x++) {
+        const uint32_t side = lo[x] > hi[x] ? lo[x] : hi[x];
+        const uint32_t ridge = side + pf->ridge_min < 255u ? side + pf->ridge_min : 255u;
+        if (map[x] == SYMLINE_MAP_S && c[x] >= pf->min_gray && c[x] >= ridge) {
+            out[k++] = (uint16_t)x;
+            if (k == SL_LINE_S_MAX) {
+                *next = x + 1u;
+                return k;
+            }
+        }
+    }
+    *next = n;
+    return k;
+}
+#ifdef SYMLINE_PORT_LINE_S
+uint32_t symline_i_line_s(const symline_i_prefilter *pf, const uint8_t *map, const uint8_t *c,
+                          const uint8_t *lo, const uint8_t *hi, uint32_t x, uint32_t n,
+                          uint16_t *out, uint32_t *next);
+#endif
+
+/*
  * The contrast filter once more, over a whole traced piece q[0..n-1] (grid
  * coordinates at `level`; k: the pass's sample offset across the line in grid
  * px), on the gray values summed along it: true when its sides differ too

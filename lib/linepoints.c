@@ -149,44 +149,6 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
     (*n)++;
 }
 
-/* The byte-lane pre-filter below pays where the compiler has vector lanes for
- * it (16 bytes per instruction); on scalar cores (Cortex-M) it would cost about
- * what it saves, in code size too, so it is left out there. */
-#if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__)
-#define SL_ROW_PREFILTER 1
-#endif
-
-#ifdef SL_ROW_PREFILTER
-/*
- * Drops from map[0 .. n-1] the S points that the line filter's first tests
- * reject (symline_i_linefilter_gray() repeats them on what is left): gray c
- * below the illumination minimum and, for the contrast filter, a ridge not
- * above its sides lo, hi by ridge_min or sides brighter than side_max. Byte
- * lanes, whole rows; A points stay. Limits above 255 are clamped, which only
- * keeps more points for the exact test.
- */
-SL_NOINLINE static void drop_dim_s(const symline_i_linefilter *f, const uint8_t *c,
-                                   const uint8_t *lo, const uint8_t *hi, uint32_t n, uint8_t *map)
-{
-    const uint8_t mg = (uint8_t)(f->min_gray < 255u ? f->min_gray : 255u);
-    uint8_t sm = 255u, rm = 0u;
-    uint32_t x;
-    if (f->kind != SYMLINE_FILTER_PAPER) {
-        sm = (uint8_t)(f->side_max < 255u ? f->side_max : 255u);
-        rm = (uint8_t)(f->ridge_min < 1u ? 1u : f->ridge_min < 255u ? f->ridge_min : 255u);
-    } else {
-        lo = c; /* the paper's filter: gray only (side c, ridge 0 >= rm = 0) */
-        hi = c;
-    }
-    for (x = 0; x < n; x++) {
-        const uint8_t side = lo[x] > hi[x] ? lo[x] : hi[x];
-        const uint8_t d = (uint8_t)(c[x] > side ? (uint32_t)c[x] - side : 0u);
-        const unsigned keep = (unsigned)(c[x] >= mg) & (unsigned)(side <= sm) & (unsigned)(d >= rm);
-        map[x] = (uint8_t)((map[x] == SYMLINE_MAP_S && keep == 0u) ? SYMLINE_MAP_NONE : map[x]);
-    }
-}
-#endif
-
 static const uint8_t *ring_row(const hring *r, uint32_t y)
 {
     if (r->p->level == 0u) {
@@ -200,6 +162,32 @@ static uint8_t *ring_map(const hring *r, uint32_t y)
     return r->cd.map + (size_t)(y % r->cd.ring) * r->p->w;
 }
 
+/* What the decision of one row reads (built in decide_row()). */
+typedef struct row_view {
+    const uint8_t *map, *c, *lo, *hi;
+    const uint8_t *amap; /* the A points near: the map row, or the map ring */
+    uint32_t w, dk;      /* dk: across the line along the row (vertical axis), else 0 */
+    uint32_t aring, alen;
+    size_t astep;
+} row_view;
+
+/* S point x of row y: added to the points when the line filter takes it. */
+static SL_ALWAYS_INLINE void decide_s(const symline_i_linefilter *f, const row_view *v, uint32_t x,
+                                      uint32_t y, bool along, symline_point *pts, uint32_t cap,
+                                      uint32_t *n, uint32_t *dropped)
+{
+    const uint32_t w = v->w, dk = v->dk;
+    if (!symline_i_linefilter_gray(f, v->c[x], v->lo[x >= dk ? x - dk : 0u],
+                                   v->hi[x + dk < w ? x + dk : w - 1u])) {
+        return;
+    }
+    if (f->a_distance != 0u && !symline_i_linefilter_a_near(f, v->amap + (along ? 0u : x), v->aring,
+                                                            v->astep, v->alen, along ? x : y)) {
+        return;
+    }
+    push_point(pts, cap, n, x, y, dropped);
+}
+
 /* The line points of grid row y from its map row: S points whose gray
  * values pass the line filter, with an A point near when it asks for one.
  * Across the line: k entries either side along a row (vertical axis),
@@ -211,35 +199,49 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
     const symline_i_pass *p = r->p;
     const uint32_t w = p->w;
     const uint32_t dk = along ? p->k : 0u, ky = along ? 0u : p->k;
-    uint8_t *map = ring_map(r, y);
-    const uint8_t *c = ring_row(r, y);
-    const uint8_t *lo = ring_row(r, y >= ky ? y - ky : 0u);
-    const uint8_t *hi = ring_row(r, y + ky < p->h ? y + ky : p->h - 1u);
-    /* The A points near: along the map row, or down the map ring's column x. */
-    const uint8_t *amap = along ? map : r->cd.map;
-    const uint32_t aring = along ? w : r->cd.ring, alen = along ? w : p->h;
-    const size_t astep = along ? 1u : w;
-    uint32_t x;
+    row_view v;
+    uint32_t x = 0u;
+    v.map = ring_map(r, y);
+    v.c = ring_row(r, y);
+    v.lo = ring_row(r, y >= ky ? y - ky : 0u);
+    v.hi = ring_row(r, y + ky < p->h ? y + ky : p->h - 1u);
+    v.amap = along ? v.map : r->cd.map;
+    v.w = w;
+    v.dk = dk;
+    v.aring = along ? w : r->cd.ring;
+    v.alen = along ? w : p->h;
+    v.astep = along ? 1u : w;
     row_start[y] = *n;
-#ifdef SL_ROW_PREFILTER
-    if (w > 2u * dk) { /* along a row: the interior, where both sides lie in the row */
-        drop_dim_s(&p->filter, c + dk, lo, hi + (size_t)2u * dk, w - 2u * dk, map + dk);
+#ifdef SYMLINE_PORT_LINE_S
+    if (w > 2u * dk) {
+        /* The interior, where both sides lie in the row (along a row; the
+         * whole row down columns): one pass of the byte test over it gives
+         * the few S points the exact filter has to look at. */
+        const uint32_t len = w - 2u * dk;
+        const bool paper = p->filter.kind == SYMLINE_FILTER_PAPER; /* gray only */
+        const uint8_t *ic = v.c + dk, *ilo = paper ? ic : v.lo, *ihi = paper ? ic : v.hi + 2u * dk;
+        symline_i_prefilter pf;
+        uint16_t cand[SL_LINE_S_MAX];
+        uint32_t at = 0u, i, k;
+        symline_i_prefilter_setup(&p->filter, &pf);
+        for (; x < dk; x = SL_NEXT_S(v.map, x, dk)) { /* the left border */
+            if (v.map[x] == SYMLINE_MAP_S) {
+                decide_s(&p->filter, &v, x, y, along, pts, cap, n, dropped);
+            }
+        }
+        while (at < len) {
+            k = symline_i_line_s(&pf, v.map + dk, ic, ilo, ihi, at, len, cand, &at);
+            for (i = 0; i < k; i++) {
+                decide_s(&p->filter, &v, dk + cand[i], y, along, pts, cap, n, dropped);
+            }
+        }
+        x = w - dk; /* the right border */
     }
 #endif
-    for (x = 0; x < w; x = SL_NEXT_S(map, x, w)) {
-        if (map[x] != SYMLINE_MAP_S) {
-            continue;
+    for (; x < w; x = SL_NEXT_S(v.map, x, w)) {
+        if (v.map[x] == SYMLINE_MAP_S) {
+            decide_s(&p->filter, &v, x, y, along, pts, cap, n, dropped);
         }
-        if (!symline_i_linefilter_gray(&p->filter, c[x], lo[x >= dk ? x - dk : 0u],
-                                       hi[x + dk < w ? x + dk : w - 1u])) {
-            continue;
-        }
-        if (p->filter.a_distance != 0u &&
-            !symline_i_linefilter_a_near(&p->filter, amap + (along ? 0u : x), aring, astep, alen,
-                                         along ? x : y)) {
-            continue;
-        }
-        push_point(pts, cap, n, x, y, dropped);
     }
 }
 
