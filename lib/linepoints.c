@@ -137,18 +137,6 @@ size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
     return n;
 }
 
-static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x, uint32_t y,
-                       uint32_t *dropped)
-{
-    if (*n >= cap) {
-        (*dropped)++; /* counted, so the result can say how much storage was needed */
-        return;
-    }
-    pts[*n].x = (uint16_t)x;
-    pts[*n].y = (uint16_t)y;
-    (*n)++;
-}
-
 static const uint8_t *ring_row(const hring *r, uint32_t y)
 {
     if (r->p->level == 0u) {
@@ -171,21 +159,34 @@ typedef struct row_view {
     size_t astep;
 } row_view;
 
-/* S point x of row y: added to the points when the line filter takes it. */
+/* S point x of row y, its sides' gray values lo and hi: counted in *n (and
+ * stored while there is room) when the line filter takes it. */
 static SL_ALWAYS_INLINE void decide_s(const symline_i_linefilter *f, const row_view *v, uint32_t x,
-                                      uint32_t y, bool along, symline_point *pts, uint32_t cap,
-                                      uint32_t *n, uint32_t *dropped)
+                                      uint32_t y, uint32_t lo, uint32_t hi, bool along,
+                                      symline_point *pts, uint32_t cap, uint32_t *n)
 {
-    const uint32_t w = v->w, dk = v->dk;
-    if (!symline_i_linefilter_gray(f, v->c[x], v->lo[x >= dk ? x - dk : 0u],
-                                   v->hi[x + dk < w ? x + dk : w - 1u])) {
+    if (!symline_i_linefilter_gray(f, v->c[x], lo, hi)) {
         return;
     }
     if (f->a_distance != 0u && !symline_i_linefilter_a_near(f, v->amap + (along ? 0u : x), v->aring,
                                                             v->astep, v->alen, along ? x : y)) {
         return;
     }
-    push_point(pts, cap, n, x, y, dropped);
+    if (*n < cap) {
+        pts[*n].x = (uint16_t)x;
+        pts[*n].y = (uint16_t)y;
+    }
+    (*n)++;
+}
+
+/* decide_s() where the sides may lie beyond the row's ends (clamped). */
+static SL_ALWAYS_INLINE void decide_s_edge(const symline_i_linefilter *f, const row_view *v,
+                                           uint32_t x, uint32_t y, bool along, symline_point *pts,
+                                           uint32_t cap, uint32_t *n)
+{
+    const uint32_t w = v->w, dk = v->dk;
+    decide_s(f, v, x, y, v->lo[x >= dk ? x - dk : 0u], v->hi[x + dk < w ? x + dk : w - 1u], along,
+             pts, cap, n);
 }
 
 /* The line points of grid row y from its map row: S points whose gray
@@ -197,10 +198,13 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
                                         uint32_t *dropped, bool along)
 {
     const symline_i_pass *p = r->p;
+    /* Copies in locals: the stores of points and counts cannot change them. */
+    const symline_i_linefilter f = p->filter;
     const uint32_t w = p->w;
     const uint32_t dk = along ? p->k : 0u, ky = along ? 0u : p->k;
+    const uint32_t first = *n;
+    uint32_t x = 0u, cnt = first; /* line points found, stored or not */
     row_view v;
-    uint32_t x = 0u;
     v.map = ring_map(r, y);
     v.c = ring_row(r, y);
     v.lo = ring_row(r, y >= ky ? y - ky : 0u);
@@ -211,28 +215,29 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
     v.aring = along ? w : r->cd.ring;
     v.alen = along ? w : p->h;
     v.astep = along ? 1u : w;
-    row_start[y] = *n;
+    row_start[y] = first;
 #ifdef SYMLINE_PORT_LINE_S
     if (w > 2u * dk) {
         /* The interior, where both sides lie in the row (along a row; the
          * whole row down columns): one pass of the byte test over it gives
          * the few S points the exact filter has to look at. */
         const uint32_t len = w - 2u * dk;
-        const bool paper = p->filter.kind == SYMLINE_FILTER_PAPER; /* gray only */
+        const bool paper = f.kind == SYMLINE_FILTER_PAPER; /* gray only */
         const uint8_t *ic = v.c + dk, *ilo = paper ? ic : v.lo, *ihi = paper ? ic : v.hi + 2u * dk;
         symline_i_prefilter pf;
         uint16_t cand[SL_LINE_S_MAX];
         uint32_t at = 0u, i, k;
-        symline_i_prefilter_setup(&p->filter, &pf);
-        for (; x < dk; x = SL_NEXT_S(v.map, x, dk)) { /* the left border */
+        symline_i_prefilter_setup(&f, &pf);
+        for (; x < dk; x++) { /* the left border */
             if (v.map[x] == SYMLINE_MAP_S) {
-                decide_s(&p->filter, &v, x, y, along, pts, cap, n, dropped);
+                decide_s_edge(&f, &v, x, y, along, pts, cap, &cnt);
             }
         }
         while (at < len) {
             k = symline_i_line_s(&pf, v.map + dk, ic, ilo, ihi, at, len, cand, &at);
             for (i = 0; i < k; i++) {
-                decide_s(&p->filter, &v, dk + cand[i], y, along, pts, cap, n, dropped);
+                const uint32_t j = cand[i];
+                decide_s(&f, &v, dk + j, y, v.lo[j], v.hi[j + 2u * dk], along, pts, cap, &cnt);
             }
         }
         x = w - dk; /* the right border */
@@ -240,9 +245,15 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
 #endif
     for (; x < w; x = SL_NEXT_S(v.map, x, w)) {
         if (v.map[x] == SYMLINE_MAP_S) {
-            decide_s(&p->filter, &v, x, y, along, pts, cap, n, dropped);
+            decide_s_edge(&f, &v, x, y, along, pts, cap, &cnt);
         }
     }
+    /* Counted, so the result can say how much storage was needed (*n <= cap). */
+    if (cnt > cap) {
+        *dropped += cnt - cap;
+        cnt = cap;
+    }
+    *n = cnt;
 }
 
 /* The row decision; to save time (SL_FOR_SPEED), one copy per axis. */

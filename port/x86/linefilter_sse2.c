@@ -13,10 +13,10 @@
  *
  * symline_i_line_s() for symline_i_line_s_c(): about one entry in four is an S
  * point and one S point in thirty passes the byte test, so the test and the
- * search are one pass, 32 entries per step, nine vector instructions per 16
- * (max, saturating add, max, saturating subtract, compare, the S test as the
- * top bit of the doubled map entry, and, mask), and only the set bits of the
- * mask are visited.
+ * search are one pass: per 16 entries four loads and seven vector
+ * instructions (max, saturating add, max, saturating subtract, compare, the
+ * S test as the top bit of the doubled map entry, and), one test per 64
+ * entries, and only the set bits of the masks are visited.
  */
 #include <emmintrin.h>
 
@@ -53,8 +53,9 @@ uint32_t symline_i_find_s(const uint8_t *map, uint32_t x, uint32_t n)
     return bits != 0u ? x + (uint32_t)__builtin_ctz(bits) : n;
 }
 
-/* Bit i set where entry x + i (i < 16) is an S point that passes the byte test. */
-static inline uint32_t line_s_bits(const uint8_t *map, const uint8_t *c, const uint8_t *lo,
+/* The S points of entries x .. x+15 that pass the byte test: the top bit of
+ * each byte lane (the other bits are not defined). */
+static inline __m128i line_s_lanes(const uint8_t *map, const uint8_t *c, const uint8_t *lo,
                                    const uint8_t *hi, uint32_t x, __m128i mg, __m128i rm)
 {
     const __m128i side = _mm_max_epu8(load16(lo + x), load16(hi + x));
@@ -62,7 +63,12 @@ static inline uint32_t line_s_bits(const uint8_t *map, const uint8_t *c, const u
     const __m128i pass = _mm_cmpeq_epi8(_mm_subs_epu8(need, load16(c + x)), _mm_setzero_si128());
     const __m128i m = load16(map + x);
     /* S (255) doubled is 254, A (128) and none (0) give 0: the top bit is S. */
-    return (uint32_t)_mm_movemask_epi8(_mm_and_si128(pass, _mm_add_epi8(m, m)));
+    return _mm_and_si128(pass, _mm_add_epi8(m, m));
+}
+
+static inline uint64_t mask16(__m128i v)
+{
+    return (uint64_t)(uint32_t)_mm_movemask_epi8(v);
 }
 
 uint32_t symline_i_line_s(const symline_i_prefilter *pf, const uint8_t *map, const uint8_t *c,
@@ -76,28 +82,33 @@ uint32_t symline_i_line_s(const symline_i_prefilter *pf, const uint8_t *map, con
         return symline_i_line_s_c(pf, map, c, lo, hi, x, n, out, next);
     }
     while (x < n) {
-        uint32_t base, bits = 0u;
-        for (; x + 32u <= n; x += 32u) {
-            bits = line_s_bits(map, c, lo, hi, x, mg, rm) |
-                   line_s_bits(map, c, lo, hi, x + 16u, mg, rm) << 16;
-            if (bits != 0u) {
+        uint64_t bits = 0u;
+        uint32_t base;
+        /* 64 entries a step, one test for all; most steps have no candidate. */
+        for (; x + 64u <= n; x += 64u) {
+            const __m128i a = line_s_lanes(map, c, lo, hi, x, mg, rm);
+            const __m128i b = line_s_lanes(map, c, lo, hi, x + 16u, mg, rm);
+            const __m128i d = line_s_lanes(map, c, lo, hi, x + 32u, mg, rm);
+            const __m128i e = line_s_lanes(map, c, lo, hi, x + 48u, mg, rm);
+            if (_mm_movemask_epi8(_mm_or_si128(_mm_or_si128(a, b), _mm_or_si128(d, e))) != 0) {
+                bits = mask16(a) | mask16(b) << 16 | mask16(d) << 32 | mask16(e) << 48;
                 break;
             }
         }
         base = x;
         if (bits != 0u) {
-            x += 32u;
+            x += 64u;
         } else if (x + 16u <= n) {
-            bits = line_s_bits(map, c, lo, hi, x, mg, rm);
+            bits = mask16(line_s_lanes(map, c, lo, hi, x, mg, rm));
             x += 16u;
         } else if (x < n) {
             /* The last 16 entries, without those before x. */
             base = n - 16u;
-            bits = line_s_bits(map, c, lo, hi, base, mg, rm) & (0xffffu << (x - base));
+            bits = mask16(line_s_lanes(map, c, lo, hi, base, mg, rm)) & (0xffffu << (x - base));
             x = n;
         }
         for (; bits != 0u; bits &= bits - 1u) {
-            const uint32_t i = base + (uint32_t)__builtin_ctz(bits);
+            const uint32_t i = base + (uint32_t)__builtin_ctzll(bits);
             out[k++] = (uint16_t)i;
             if (k == SL_LINE_S_MAX) {
                 *next = i + 1u;
