@@ -66,9 +66,10 @@ static inline bool symline_i_linefilter_gray(const symline_i_linefilter *f, uint
     if (c <= side || side > f->side_max) {
         return false;
     }
-    need = (c * f->ridge_pct + 99u) / 100u;
-    if (need < f->ridge_min) {
-        need = f->ridge_min;
+    need = f->ridge_min;
+    if (!SL_FOR_SPEED || f->ridge_pct != 0u) { /* 0 by default: no product and division */
+        const uint32_t pct = (c * f->ridge_pct + 99u) / 100u;
+        need = pct > need ? pct : need;
     }
     if (f->asym_pct != 0u) {
         const uint32_t asym = ((lo > hi ? lo - hi : hi - lo) * f->asym_pct + 99u) / 100u;
@@ -171,8 +172,9 @@ static inline uint32_t symline_i_line_s_c(const symline_i_prefilter *pf, const u
     uint32_t k = 0u;
     for (; x < n; x++) {
         const uint32_t side = lo[x] > hi[x] ? lo[x] : hi[x];
-        const uint32_t ridge = side + pf->ridge_min < 255u ? side + pf->ridge_min : 255u;
-        if (map[x] == SYMLINE_MAP_S && c[x] >= pf->min_gray && c[x] >= ridge) {
+        /* c >= min(side + ridge_min, 255): the sum or the brightest gray */
+        const bool ridge = c[x] >= side + pf->ridge_min || c[x] == 255u;
+        if (map[x] == SYMLINE_MAP_S && c[x] >= pf->min_gray && ridge) {
             out[k++] = (uint16_t)x;
             if (k == SL_LINE_S_MAX) {
                 *next = x + 1u;

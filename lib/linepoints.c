@@ -198,8 +198,9 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
                                         uint32_t *dropped, bool along)
 {
     const symline_i_pass *p = r->p;
-    /* Copies in locals: the stores of points and counts cannot change them. */
-    const symline_i_linefilter f = p->filter;
+    /* A copy in locals: the stores of points cannot change it (to save time). */
+    const symline_i_linefilter fcopy = p->filter;
+    const symline_i_linefilter *f = SL_FOR_SPEED ? &fcopy : &p->filter;
     const uint32_t w = p->w;
     const uint32_t dk = along ? p->k : 0u, ky = along ? 0u : p->k;
     const uint32_t first = *n;
@@ -222,30 +223,34 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
          * whole row down columns): one pass of the byte test over it gives
          * the few S points the exact filter has to look at. */
         const uint32_t len = w - 2u * dk;
-        const bool paper = f.kind == SYMLINE_FILTER_PAPER; /* gray only */
+        const bool paper = f->kind == SYMLINE_FILTER_PAPER; /* gray only */
         const uint8_t *ic = v.c + dk, *ilo = paper ? ic : v.lo, *ihi = paper ? ic : v.hi + 2u * dk;
         symline_i_prefilter pf;
         uint16_t cand[SL_LINE_S_MAX];
-        uint32_t at = 0u, i, k;
-        symline_i_prefilter_setup(&f, &pf);
+        uint32_t at = 0u, i;
+        symline_i_prefilter_setup(f, &pf);
         for (; x < dk; x++) { /* the left border */
             if (v.map[x] == SYMLINE_MAP_S) {
-                decide_s_edge(&f, &v, x, y, along, pts, cap, &cnt);
+                decide_s_edge(f, &v, x, y, along, pts, cap, &cnt);
             }
         }
         while (at < len) {
-            k = symline_i_line_s(&pf, v.map + dk, ic, ilo, ihi, at, len, cand, &at);
+            const uint32_t k = symline_i_line_s(&pf, v.map + dk, ic, ilo, ihi, at, len, cand, &at);
             for (i = 0; i < k; i++) {
                 const uint32_t j = cand[i];
-                decide_s(&f, &v, dk + j, y, v.lo[j], v.hi[j + 2u * dk], along, pts, cap, &cnt);
+                decide_s(f, &v, dk + j, y, v.lo[j], v.hi[j + 2u * dk], along, pts, cap, &cnt);
             }
         }
-        x = w - dk; /* the right border */
+        for (x = w - dk; x < w; x++) { /* the right border */
+            if (v.map[x] == SYMLINE_MAP_S) {
+                decide_s_edge(f, &v, x, y, along, pts, cap, &cnt);
+            }
+        }
     }
 #endif
     for (; x < w; x = SL_NEXT_S(v.map, x, w)) {
         if (v.map[x] == SYMLINE_MAP_S) {
-            decide_s_edge(&f, &v, x, y, along, pts, cap, &cnt);
+            decide_s_edge(f, &v, x, y, along, pts, cap, &cnt);
         }
     }
     /* Counted, so the result can say how much storage was needed (*n <= cap). */
