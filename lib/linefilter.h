@@ -66,10 +66,11 @@ static inline bool symline_i_linefilter_gray(const symline_i_linefilter *f, uint
     if (c <= side || side > f->side_max) {
         return false;
     }
-    need = f->ridge_min;
-    if (!SL_FOR_SPEED || f->ridge_pct != 0u) { /* 0 by default: no product and division */
-        const uint32_t pct = (c * f->ridge_pct + 99u) / 100u;
-        need = pct > need ? pct : need;
+    /* The ridge percentage is 0 by default: no product and division then (to
+     * save time). */
+    need = (SL_FOR_SPEED && f->ridge_pct == 0u) ? 0u : (c * f->ridge_pct + 99u) / 100u;
+    if (need < f->ridge_min) {
+        need = f->ridge_min;
     }
     if (f->asym_pct != 0u) {
         const uint32_t asym = ((lo > hi ? lo - hi : hi - lo) * f->asym_pct + 99u) / 100u;

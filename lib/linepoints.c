@@ -137,6 +137,18 @@ size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
     return n;
 }
 
+static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x, uint32_t y,
+                       uint32_t *dropped)
+{
+    if (*n >= cap) {
+        (*dropped)++; /* counted, so the result can say how much storage was needed */
+        return;
+    }
+    pts[*n].x = (uint16_t)x;
+    pts[*n].y = (uint16_t)y;
+    (*n)++;
+}
+
 static const uint8_t *ring_row(const hring *r, uint32_t y)
 {
     if (r->p->level == 0u) {
@@ -159,11 +171,12 @@ typedef struct row_view {
     size_t astep;
 } row_view;
 
-/* S point x of row y, its sides' gray values lo and hi: counted in *n (and
- * stored while there is room) when the line filter takes it. */
+/* S point x of row y, its sides' gray values lo and hi: added to the points
+ * when the line filter takes it. */
 static SL_ALWAYS_INLINE void decide_s(const symline_i_linefilter *f, const row_view *v, uint32_t x,
                                       uint32_t y, uint32_t lo, uint32_t hi, bool along,
-                                      symline_point *pts, uint32_t cap, uint32_t *n)
+                                      symline_point *pts, uint32_t cap, uint32_t *n,
+                                      uint32_t *dropped)
 {
     if (!symline_i_linefilter_gray(f, v->c[x], lo, hi)) {
         return;
@@ -172,21 +185,17 @@ static SL_ALWAYS_INLINE void decide_s(const symline_i_linefilter *f, const row_v
                                                             v->astep, v->alen, along ? x : y)) {
         return;
     }
-    if (*n < cap) {
-        pts[*n].x = (uint16_t)x;
-        pts[*n].y = (uint16_t)y;
-    }
-    (*n)++;
+    push_point(pts, cap, n, x, y, dropped);
 }
 
 /* decide_s() where the sides may lie beyond the row's ends (clamped). */
 static SL_ALWAYS_INLINE void decide_s_edge(const symline_i_linefilter *f, const row_view *v,
                                            uint32_t x, uint32_t y, bool along, symline_point *pts,
-                                           uint32_t cap, uint32_t *n)
+                                           uint32_t cap, uint32_t *n, uint32_t *dropped)
 {
     const uint32_t w = v->w, dk = v->dk;
     decide_s(f, v, x, y, v->lo[x >= dk ? x - dk : 0u], v->hi[x + dk < w ? x + dk : w - 1u], along,
-             pts, cap, n);
+             pts, cap, n, dropped);
 }
 
 /* The line points of grid row y from its map row: S points whose gray
@@ -203,8 +212,7 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
     const symline_i_linefilter *f = SL_FOR_SPEED ? &fcopy : &p->filter;
     const uint32_t w = p->w;
     const uint32_t dk = along ? p->k : 0u, ky = along ? 0u : p->k;
-    const uint32_t first = *n;
-    uint32_t x = 0u, cnt = first; /* line points found, stored or not */
+    uint32_t x = 0u;
     row_view v;
     v.map = ring_map(r, y);
     v.c = ring_row(r, y);
@@ -216,7 +224,7 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
     v.aring = along ? w : r->cd.ring;
     v.alen = along ? w : p->h;
     v.astep = along ? 1u : w;
-    row_start[y] = first;
+    row_start[y] = *n;
 #ifdef SYMLINE_PORT_LINE_S
     if (w > 2u * dk) {
         /* The interior, where both sides lie in the row (along a row; the
@@ -231,34 +239,28 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
         symline_i_prefilter_setup(f, &pf);
         for (; x < dk; x++) { /* the left border */
             if (v.map[x] == SYMLINE_MAP_S) {
-                decide_s_edge(f, &v, x, y, along, pts, cap, &cnt);
+                decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
             }
         }
         while (at < len) {
             const uint32_t k = symline_i_line_s(&pf, v.map + dk, ic, ilo, ihi, at, len, cand, &at);
             for (i = 0; i < k; i++) {
                 const uint32_t j = cand[i];
-                decide_s(f, &v, dk + j, y, v.lo[j], v.hi[j + 2u * dk], along, pts, cap, &cnt);
+                decide_s(f, &v, dk + j, y, v.lo[j], v.hi[j + 2u * dk], along, pts, cap, n, dropped);
             }
         }
         for (x = w - dk; x < w; x++) { /* the right border */
             if (v.map[x] == SYMLINE_MAP_S) {
-                decide_s_edge(f, &v, x, y, along, pts, cap, &cnt);
+                decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
             }
         }
     }
 #endif
     for (; x < w; x = SL_NEXT_S(v.map, x, w)) {
         if (v.map[x] == SYMLINE_MAP_S) {
-            decide_s_edge(f, &v, x, y, along, pts, cap, &cnt);
+            decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
         }
     }
-    /* Counted, so the result can say how much storage was needed (*n <= cap). */
-    if (cnt > cap) {
-        *dropped += cnt - cap;
-        cnt = cap;
-    }
-    *n = cnt;
 }
 
 /* The row decision; to save time (SL_FOR_SPEED), one copy per axis. */
