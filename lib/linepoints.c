@@ -25,8 +25,14 @@
 #include "stagemark.h"
 #include "symmetry.h"
 
-void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
-                        uint16_t *acc, uint8_t *out)
+#ifdef SYMLINE_PORT_GRID
+#define SL_GRID_ROW symline_i_grid_row_c
+#else
+#define SL_GRID_ROW symline_i_grid_row
+#endif
+
+void SL_GRID_ROW(const symline_image *img, const symline_i_pass *p, uint32_t y, uint16_t *acc,
+                 uint8_t *out)
 {
     const uint32_t s = 1u << p->level;
     const uint32_t shift = 2u * p->level;
@@ -149,6 +155,56 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
     (*n)++;
 }
 
+/* The byte-lane pre-filter below pays where the compiler has vector lanes for
+ * it (16 bytes per instruction); on scalar cores (Cortex-M) it would cost about
+ * what it saves, in code size too, so it is left out there, unless a port has
+ * byte lanes for it (Cortex-M4/M7: SYMLINE_PORT_DROP_DIM_S, port/armv7em/).
+ * Where a port searches the row with the byte test itself
+ * (SYMLINE_PORT_LINE_S: x86-64, AArch64), the row decision uses that instead. */
+#if !defined(SYMLINE_PORT_LINE_S) && (defined(__SSE2__) || defined(__ARM_NEON) ||                  \
+                                      defined(__ARM_NEON__) || defined(SYMLINE_PORT_DROP_DIM_S))
+#define SL_ROW_PREFILTER 1
+#endif
+/* A port's version (SYMLINE_PORT_DROP_DIM_S: where the core has byte lanes of
+ * its own, linepoints.h) replaces it; this one is then the reference. */
+#ifdef SYMLINE_PORT_DROP_DIM_S
+#define SL_DROP_DIM_S_REF void symline_i_drop_dim_s_c
+#define drop_dim_s symline_i_drop_dim_s
+#else
+#define SL_DROP_DIM_S_REF SL_NOINLINE static void drop_dim_s
+#endif
+
+#ifdef SL_ROW_PREFILTER
+/*
+ * Drops from map[0 .. n-1] the S points that the line filter's first tests
+ * reject (symline_i_linefilter_gray() repeats them on what is left): gray c
+ * below the illumination minimum and, for the contrast filter, a ridge not
+ * above its sides lo, hi by ridge_min or sides brighter than side_max. Byte
+ * lanes, whole rows; A points stay. Limits above 255 are clamped, which only
+ * keeps more points for the exact test.
+ */
+SL_DROP_DIM_S_REF(const symline_i_linefilter *f, const uint8_t *c, const uint8_t *lo,
+                  const uint8_t *hi, uint32_t n, uint8_t *map)
+{
+    const uint8_t mg = (uint8_t)(f->min_gray < 255u ? f->min_gray : 255u);
+    uint8_t sm = 255u, rm = 0u;
+    uint32_t x;
+    if (f->kind != SYMLINE_FILTER_PAPER) {
+        sm = (uint8_t)(f->side_max < 255u ? f->side_max : 255u);
+        rm = (uint8_t)(f->ridge_min < 1u ? 1u : f->ridge_min < 255u ? f->ridge_min : 255u);
+    } else {
+        lo = c; /* the paper's filter: gray only (side c, ridge 0 >= rm = 0) */
+        hi = c;
+    }
+    for (x = 0; x < n; x++) {
+        const uint8_t side = lo[x] > hi[x] ? lo[x] : hi[x];
+        const uint8_t d = (uint8_t)(c[x] > side ? (uint32_t)c[x] - side : 0u);
+        const unsigned keep = (unsigned)(c[x] >= mg) & (unsigned)(side <= sm) & (unsigned)(d >= rm);
+        map[x] = (uint8_t)((map[x] == SYMLINE_MAP_S && keep == 0u) ? SYMLINE_MAP_NONE : map[x]);
+    }
+}
+#endif
+
 static const uint8_t *ring_row(const hring *r, uint32_t y)
 {
     if (r->p->level == 0u) {
@@ -164,7 +220,8 @@ static uint8_t *ring_map(const hring *r, uint32_t y)
 
 /* What the decision of one row reads (built in decide_row()). */
 typedef struct row_view {
-    const uint8_t *map, *c, *lo, *hi;
+    uint8_t *map; /* written only by the pre-filter (SL_ROW_PREFILTER) */
+    const uint8_t *c, *lo, *hi;
     const uint8_t *amap; /* the A points near: the map row, or the map ring */
     uint32_t w, dk;      /* dk: across the line along the row (vertical axis), else 0 */
     uint32_t aring, alen;
@@ -254,6 +311,10 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
                 decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
             }
         }
+    }
+#elif defined(SL_ROW_PREFILTER)
+    if (w > 2u * dk) { /* along a row: the interior, where both sides lie in the row */
+        drop_dim_s(f, v.c + dk, v.lo, v.hi + (size_t)2u * dk, w - 2u * dk, v.map + dk);
     }
 #endif
     for (; x < w; x = SL_NEXT_S(v.map, x, w)) {
