@@ -62,12 +62,18 @@ static bool covered(const symline_i_run *d, const symline_i_segindex *ix, const 
     return symline_i_segindex_near(ix, d->r, d->prev_seg, x, y, symline_i_cover_tol_q8(level));
 }
 
+/* Whether a piece of n points at the pass's level is long enough to report. */
+static bool piece_long_enough(const symline_i_run *d, const symline_i_pass *p, uint32_t n)
+{
+    return (n << p->level) >= d->cfg->min_length && n >= SL_MIN_PIECE_POINTS;
+}
+
 /* One piece of a chain (grid coordinates, absolute storage index `at`). */
 static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_t n)
 {
     symline_point *q = d->r->points + at;
     symline_segment *s;
-    if ((n << p->level) < d->cfg->min_length || n < SL_MIN_PIECE_POINTS) {
+    if (!piece_long_enough(d, p, n)) {
         return;
     }
     if (d->field_rows != NULL &&
@@ -103,6 +109,11 @@ static void chain(symline_i_run *d, const symline_i_pass *p, const symline_i_seg
 {
     const symline_point *c = d->r->points + at;
     uint32_t i, s, from = 0u;
+    /* Every piece is part of the chain: a chain too short to be emitted
+     * (most of them: two or three points of turf) needs no per-point test. */
+    if (!piece_long_enough(d, p, n)) {
+        return;
+    }
     for (i = 0; i <= n; i++) {
         /* The uncovered runs [from, i), each cut at its corners. */
         if (i < n && !covered(d, ix, &c[i], p->level)) {
