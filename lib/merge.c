@@ -195,10 +195,10 @@ SL_NOINLINE static uint32_t joined_dev(const merger *m, const symline_segment *a
     for (k = 0; k < 2u; k++) {
         const symline_point *p = k ? m->r->points + b->first : m->ap;
         const uint32_t n = k ? b->count : a->count;
-        const uint32_t dk = symline_i_max_dev(p, n, 0u, j);
-        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, j);
-        d = dk > d ? dk : d;
-        sm = sk > sm ? sk : sm;
+        uint32_t dev[2]; /* max_dev, smoothed */
+        symline_i_chord_devs(p, n, 0u, j, SL_SMOOTH_WIN, dev);
+        d = dev[0] > d ? dev[0] : d;
+        sm = dev[1] > sm ? dev[1] : sm;
     }
     return symline_i_is_curve(j, sm, m->curve_q8 + symline_i_block_half_q8(level)) ? SL_NO_JOIN : d;
 }
