@@ -92,13 +92,28 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     return true;
 }
 
+/* A slot whose segment was absorbed (kind is a symline_kind otherwise); the
+ * slots are compacted when the merge is done, so that a slot keeps its number
+ * in the grid of ends meanwhile. */
+#define SL_GONE 0xFFu
+/* A curve found not joinable (below): its points and chord do not change
+ * while it joins nothing, so it stays so; a curve again when the merge is done. */
+#define SL_STIFF 0xFEu
+
 /* A line may join; so may a piece taken for a curve whose points (p),
  * smoothed, stay within half the curve threshold of its chord: a straight
- * piece whose ridge jitters on the turf, not an arc of the circle. */
-static bool joinable(const symline_segment *s, const symline_point *p, uint32_t curve_q8)
+ * piece whose ridge jitters on the turf, not an arc of the circle. A curve
+ * is asked once (SL_STIFF). */
+static bool joinable(symline_segment *s, const symline_point *p, uint32_t curve_q8)
 {
-    return s->kind == SYMLINE_KIND_LINE ||
-           symline_i_smooth_dev(p, s->count, 0u, s) <= curve_q8 / 2u;
+    if (s->kind == SYMLINE_KIND_LINE) {
+        return true;
+    }
+    if (s->kind == SYMLINE_KIND_CURVE && symline_i_smooth_dev(p, s->count, 0u, s) <= curve_q8 / 2u) {
+        return true;
+    }
+    s->kind = SL_STIFF;
+    return false;
 }
 
 /* Byte by byte: a struct assignment or memcpy may become a libc call. */
@@ -116,10 +131,6 @@ static void copy_points(symline_point *d, const symline_point *s, uint32_t n)
     copy_bytes(d, s, (size_t)n * sizeof(symline_point));
 }
 
-/* A slot whose segment was absorbed (kind is a symline_kind otherwise); the
- * slots are compacted when the merge is done, so that a slot keeps its number
- * in the grid of ends meanwhile. */
-#define SL_GONE 0xFFu
 #define SL_NO_NODE 0xFFFFFFFFu
 
 /*
@@ -208,12 +219,13 @@ SL_NOINLINE static uint32_t joined_dev(const merger *m, const symline_segment *a
 static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segment *e)
 {
     const symline_segment *a = &m->r->segments[i];
-    const symline_segment *b = &m->r->segments[j];
+    symline_segment *b = &m->r->segments[j];
     const uint32_t level = a->level > b->level ? a->level : b->level;
     const symline_point *bp = m->r->points + b->first;
-    /* The cheap geometric test first; both are pure, so the order changes
-     * nothing but the cost. */
-    if (b->kind == SL_GONE ||
+    /* The cheap geometric test first; both depend on the two pieces alone
+     * (joinable() only keeps its answer), so the order changes nothing but
+     * the cost. */
+    if (b->kind == SL_GONE || b->kind == SL_STIFF ||
         !mergeable(a, b, m->gap_q8, m->dev_q8 + symline_i_block_half_q8(level), e) ||
         !joinable(b, bp, m->curve_q8)) {
         return SL_NO_JOIN;
@@ -379,6 +391,9 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
         }
     }
     for (i = 0, w = 0; i < m.n; i++) {
+        if (r->segments[i].kind == SL_STIFF) {
+            r->segments[i].kind = SYMLINE_KIND_CURVE;
+        }
         if (r->segments[i].kind != SL_GONE) {
             copy_bytes(&r->segments[w++], &r->segments[i], sizeof(symline_segment));
         }
