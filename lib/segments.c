@@ -76,19 +76,19 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
     return symline_i_div_q8(cross, len);
 }
 
-/* Where the build optimises for speed, the cross product is computed in
- * the sweep itself (a call per point cost more than the arithmetic). */
+/* Where the build optimises for speed, the per-point helpers below are
+ * computed in their loops (a call per point cost more than the arithmetic). */
 #if SL_FOR_SPEED
-#define SL_CROSS_INLINE SL_ALWAYS_INLINE
+#define SL_PER_POINT SL_ALWAYS_INLINE
 #else
-#define SL_CROSS_INLINE SL_NOINLINE
+#define SL_PER_POINT SL_NOINLINE
 #endif
 
 /* Cross product of point q's offset from (x0, y0) with the chord direction
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
  * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-static SL_CROSS_INLINE int64_t chord_cross(const symline_point *q, uint32_t level,
+static SL_PER_POINT int64_t chord_cross(const symline_point *q, uint32_t level,
                                            const int32_t g[4])
 {
     const int32_t dx = g[2], dy = g[3];
@@ -216,10 +216,15 @@ typedef struct symline_i_fitframe {
 } symline_i_fitframe;
 
 /* Point q in Q4 full resolution relative to the origin, minus the mean. */
-SL_NOINLINE static void rel_q4(const symline_point *q, const symline_i_fitframe *f, int32_t *x,
-                               int32_t *y)
+static SL_PER_POINT void rel_q4(const symline_point *q, const symline_i_fitframe *f, int32_t *x,
+                                int32_t *y)
 {
-    symline_i_pt_off(q, f->level, f->o, x, y);
+    if (SL_FOR_SPEED) {
+        *x = symline_i_pt_q8x(q, f->level) - f->o[0];
+        *y = symline_i_pt_q8y(q, f->level) - f->o[1];
+    } else {
+        symline_i_pt_off(q, f->level, f->o, x, y);
+    }
     *x = *x / 16 - f->mx;
     *y = *y / 16 - f->my;
 }
