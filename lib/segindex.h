@@ -23,8 +23,9 @@
 typedef struct symline_i_segindex {
     uint32_t cols, rows; /* cells across and down */
     uint32_t *end;       /* cols*rows: cell c holds ids[end[c-1] .. end[c]-1] (end[-1] = 0) */
-    uint32_t *ids;       /* a line's segment id, or a curve piece as two entries:
-                            SL_PIECE | its first point's index, its last point's index */
+    uint32_t *ids;       /* a line's segment id, or a run of a curve's polyline as two
+                            entries: SL_PIECE | its first point's index, its last
+                            point's index (segindex.c) */
     uint32_t indexed;    /* segments [0, indexed) are in the grid */
 } symline_i_segindex;
 
