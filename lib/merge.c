@@ -109,7 +109,8 @@ static bool joinable(symline_segment *s, const symline_point *p, uint32_t curve_
     if (s->kind == SYMLINE_KIND_LINE) {
         return true;
     }
-    if (s->kind == SYMLINE_KIND_CURVE && symline_i_smooth_dev(p, s->count, 0u, s) <= curve_q8 / 2u) {
+    if (s->kind == SYMLINE_KIND_CURVE &&
+        symline_i_smooth_dev(p, s->count, 0u, s) <= curve_q8 / 2u) {
         return true;
     }
     s->kind = SL_STIFF;

@@ -88,8 +88,7 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
  * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-static SL_PER_POINT int64_t chord_cross(const symline_point *q, uint32_t level,
-                                           const int32_t g[4])
+static SL_PER_POINT int64_t chord_cross(const symline_point *q, uint32_t level, const int32_t g[4])
 {
     const int32_t dx = g[2], dy = g[3];
     int32_t wx, wy;
