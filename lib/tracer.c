@@ -96,7 +96,8 @@ static SL_FIRST_AT_INLINE uint32_t first_at(const symline_i_tracer *t, int32_t x
 /* Index of point (nx, ny), a neighbour of (x, y), or -1 (also when out of
  * range: no point has an x of -1 or 65536). lb[ny - y + 1]: where row ny's
  * points from x - 1 on start, searched once per step and row (SL_NO_ROW
- * until then), not once per direction. */
+ * until then), not once per direction; where speed counts, carried over
+ * from the last step (carry()). */
 #define SL_NO_ROW 0xFFFFFFFFu
 static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t y, uint32_t off,
                     int32_t nx, int32_t ny)
@@ -187,26 +188,64 @@ static void visit(symline_i_tracer *t, int32_t idx)
 /* The direction of a start point's first step: any, in direction order 0..7. */
 #define SL_ANY_DIR 8u
 
-/* Follows the line from (x, y), last step direction dir (or SL_ANY_DIR);
- * appends to dst from *pos. False when a start point (SL_ANY_DIR) has no
- * unvisited neighbour. */
+/* A step's directions relative to the last one: straight, 45-degree, then
+ * 90-degree turns, counter-clockwise first (0, +1, -1, +2, -2). */
+static const uint8_t TURN[5] = {0, 1, 7, 2, 6};
+
+/* Where row y's points from x - 1 on start, for point `at` at (x, y) in it:
+ * the point itself, or the one before it at x - 1. */
+static uint32_t own_lb(const symline_i_tracer *t, uint32_t at, int32_t x, uint32_t y)
+{
+    return at > t->row_start[y] && (int32_t)t->pts[at - 1u].x + 1 == x ? at - 1u : at;
+}
+
+/* lb (find()) for the step from (nx, ny) (index at), from the step from
+ * (x, y) just taken: the rows both steps see keep what was searched there,
+ * moved by at most one point (each x once per row), the point's own row is
+ * known, and only a new row is searched again, when a direction needs it. */
+static void carry(const symline_i_tracer *t, uint32_t lb[3], int32_t x, int32_t y, int32_t nx,
+                  int32_t ny, uint32_t at)
+{
+    uint32_t k, m[3];
+    for (k = 0; k < 3u; k++) {
+        const uint32_t from = k + (uint32_t)(ny - y); /* -1 wraps: a new row */
+        const uint32_t row = (uint32_t)(ny - 1 + (int32_t)k);
+        uint32_t v = from < 3u ? lb[from] : SL_NO_ROW;
+        if (v != SL_NO_ROW && nx > x && v < t->row_start[row + 1u] &&
+            (int32_t)t->pts[v].x == x - 1) {
+            v++; /* from x - 1 on to from x on */
+        } else if (v != SL_NO_ROW && nx < x && v > t->row_start[row] &&
+                   (int32_t)t->pts[v - 1u].x == x - 2) {
+            v--; /* from x - 1 on to from x - 2 on */
+        }
+        m[k] = v;
+    }
+    lb[0] = m[0];
+    lb[1] = own_lb(t, at, nx, (uint32_t)ny);
+    lb[2] = m[2];
+}
+
+/* Follows the line from (x, y) (index at), last step direction dir (or
+ * SL_ANY_DIR); appends to dst from *pos. False when a start point
+ * (SL_ANY_DIR) has no unvisited neighbour. */
 static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint32_t dir,
                    symline_point *dst, uint32_t cap, uint32_t *pos, bool *cut)
 {
     bool moved = false;
+    uint32_t lb[3];
+    lb[0] = lb[1] = lb[2] = SL_NO_ROW; /* not an initialiser: no memcpy call */
+    if (SL_FOR_SPEED) {
+        lb[1] = own_lb(t, at, x, (uint32_t)y);
+    }
     for (;;) {
         const uint32_t tries = dir == SL_ANY_DIR ? 8u : 5u;
-        uint32_t o, lb[3];
-        lb[0] = lb[1] = lb[2] = SL_NO_ROW; /* not an initialiser: no memcpy call */
+        uint32_t o;
         if (dir != SL_ANY_DIR && *pos >= cap) {
             *cut = true;
             return true;
         }
         for (o = 0; o < tries; o++) {
-            /* Relative to the last direction: straight, 45-degree, then
-             * 90-degree turns, counter-clockwise first (0, +1, -1, +2, -2). */
-            const uint32_t d =
-                dir == SL_ANY_DIR ? o : (o & 1u ? dir + (o + 1u) / 2u : dir - o / 2u) & 7u;
+            const uint32_t d = dir == SL_ANY_DIR ? o : (dir + TURN[o]) & 7u;
             const int32_t nx = x + DX[d], ny = y + DX[(d + 6u) & 7u];
             const int32_t idx = find(t, lb, x, y, SL_FOR_SPEED ? at - t->row_start[y] : 0u, nx, ny);
             if (unvisited(t, idx)) {
@@ -218,6 +257,11 @@ static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint3
                 dst[*pos].x = (uint16_t)nx;
                 dst[*pos].y = (uint16_t)ny;
                 (*pos)++;
+                if (SL_FOR_SPEED) {
+                    carry(t, lb, x, y, nx, ny, (uint32_t)idx);
+                } else {
+                    lb[0] = lb[1] = lb[2] = SL_NO_ROW;
+                }
                 at = (uint32_t)idx;
                 x = nx;
                 y = ny;
