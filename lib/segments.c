@@ -87,11 +87,19 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
 /* Cross product of point q's offset from (x0, y0) with the chord direction
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
- * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-static SL_PER_POINT int64_t chord_cross(const symline_point *q, uint32_t level, const int32_t g[4])
+ * of one frame fit 25 bits: 32-bit operands, 64-bit products. Where the
+ * build optimises for speed, f holds the cross as a linear form of the
+ * point's grid coordinates in 1/128 (lin_form()): the same value, without
+ * the position's shifts per point. */
+static SL_PER_POINT int64_t chord_cross(const symline_point *q, uint32_t level, const int32_t g[4],
+                                        const int64_t f[3])
 {
     const int32_t dx = g[2], dy = g[3];
     int32_t wx, wy;
+    if (SL_FOR_SPEED && (dx | dy) != 0) {
+        return (int64_t)(((int32_t)q->x << 7) + q->fx) * f[0] +
+               (int64_t)(((int32_t)q->y << 7) + q->fy) * f[1] + f[2];
+    }
     if (SL_FOR_SPEED) {
         wx = symline_i_pt_q8x(q, level) - g[0];
         wy = symline_i_pt_q8y(q, level) - g[1];
@@ -102,17 +110,34 @@ static SL_PER_POINT int64_t chord_cross(const symline_point *q, uint32_t level, 
                           : (int64_t)wx * dy - (int64_t)wy * dx;
 }
 
+/* The cross of chord_cross() as u f[0] + v f[1] + f[2] for a point's grid
+ * coordinates u = 128 x + fx, v = 128 y + fy: its Q8 position is u s + h
+ * (s = 2^(level+1), h the block's half, fixed.h), so the cross
+ * (u s + h - x0) dy - (v s + h - y0) dx. Every term stays below 2^53. */
+static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
+{
+    const int64_t sc = (int64_t)(2u << level);
+    const int32_t h = (int32_t)symline_i_block_half_q8(level);
+    f[0] = (int64_t)g[3] * sc;
+    f[1] = -(int64_t)g[2] * sc;
+    f[2] = (int64_t)(h - g[0]) * g[3] - (int64_t)(h - g[1]) * g[2];
+}
+
 /* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]
  * (best[1]) and, where the build optimises for speed, in the same sweep the
  * largest |cross| of a point (best[0]). */
 static void window_max(const symline_point *p, uint32_t n, uint32_t level, const int32_t g[4],
                        uint32_t win, uint64_t best[2])
 {
-    int64_t sum = 0;
+    int64_t sum = 0, f[3];
     uint32_t i;
     best[0] = best[1] = 0u;
+    f[0] = f[1] = f[2] = 0; /* not an initialiser: no memset call */
+    if (SL_FOR_SPEED) {
+        lin_form(level, g, f);
+    }
     for (i = 0; i < n; i++) {
-        const int64_t c = chord_cross(&p[i], level, g);
+        const int64_t c = chord_cross(&p[i], level, g, f);
         if (SL_FOR_SPEED) {
             const uint64_t a = (uint64_t)(c < 0 ? -c : c);
             best[0] = a > best[0] ? a : best[0];
@@ -122,7 +147,7 @@ static void window_max(const symline_point *p, uint32_t n, uint32_t level, const
         }
         sum += c;
         if (i >= win) {
-            sum -= chord_cross(&p[i - win], level, g);
+            sum -= chord_cross(&p[i - win], level, g, f);
         }
         if (i + 1u >= win) {
             const uint64_t m = (uint64_t)(sum < 0 ? -sum : sum);
