@@ -116,7 +116,7 @@ static SL_PER_POINT int64_t chord_cross(const symline_point *q, uint32_t level, 
  * (u s + h - x0) dy - (v s + h - y0) dx. Every term stays below 2^53. */
 static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
 {
-    const int64_t sc = (int64_t)(2u << level);
+    const int64_t sc = (int64_t)1 << (level + 1u);
     const int32_t h = (int32_t)symline_i_block_half_q8(level);
     f[0] = (int64_t)g[3] * sc;
     f[1] = -(int64_t)g[2] * sc;
