@@ -33,6 +33,15 @@ static void end_of(const symline_segment *a, const symline_segment *b, uint32_t 
     *y = (i & 1u) ? s->y1 : s->y0;
 }
 
+/* True when the spans a0..a1 and b0..b1 (either order) are more than gap
+ * apart (differences of ends within 2^25 Q8 of the frame fit 32 bits). */
+static bool apart(int32_t a0, int32_t a1, int32_t b0, int32_t b1, int32_t gap)
+{
+    const int32_t alo = a0 < a1 ? a0 : a1, ahi = a0 < a1 ? a1 : a0;
+    const int32_t blo = b0 < b1 ? b0 : b1, bhi = b0 < b1 ? b1 : b0;
+    return blo - ahi > gap || alo - bhi > gap;
+}
+
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece) as j's. */
 SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b,
@@ -51,8 +60,14 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     uint64_t g = ~(uint64_t)0;
     uint32_t i;
     /* The gap first: the closest pair of ends (no square root, and most
-     * pairs of a cluttered frame fail it); then each end on the other
-     * piece's line. Both must hold, so the order changes only the cost. */
+     * pairs of a cluttered frame fail it), before it the pieces' boxes (no
+     * product: ends further apart in x or in y than the gap are further
+     * apart); then each end on the other piece's line. All must hold, so
+     * the order changes only the cost. */
+    if (SL_FOR_SPEED && (apart(a->x0, a->x1, b->x0, b->x1, (int32_t)gap_q8) ||
+                         apart(a->y0, a->y1, b->y0, b->y1, (int32_t)gap_q8))) {
+        return false;
+    }
     for (i = 0; i < 4u; i++) {
         int32_t x, y, ox, oy;
         uint64_t t;
@@ -133,6 +148,8 @@ static void copy_points(symline_point *d, const symline_point *s, uint32_t n)
 }
 
 #define SL_NO_NODE 0xFFFFFFFFu
+/* Later pieces from which on the grid of ends is walked (join_first()). */
+#define SL_MERGE_WALK_MIN 64u
 
 /*
  * The merge's state, and what makes it near-linear without changing a
@@ -268,20 +285,31 @@ static bool join_first(merger *m, uint32_t i)
 {
     symline_segment e; /* the joined ends */
     uint32_t j = i + 1u;
-    if (m->cols != 0u) {
+    /* The grid's walk costs as much as testing some dozens of pieces: only
+     * for more later pieces than that (either way the same piece joins). */
+    if (m->cols != 0u && m->n - i > SL_MERGE_WALK_MIN) {
         const int32_t nc = candidates(m, &m->r->segments[i]);
         if (nc >= 0) {
             uint32_t best = SL_NO_NODE, k;
             /* The first in slot order that joins is the smallest candidate
-             * that does (the tests are pure); failing that, the pieces not
-             * in the grid. */
+             * that does (the tests depend on the two pieces alone); failing
+             * that, the pieces not in the grid. */
             for (k = 0; k < (uint32_t)nc; k++) {
                 const uint32_t c = m->cand[k];
-                if (c > i && c < best && pair_dev(m, i, c, &e) != SL_NO_JOIN) {
-                    best = c;
+                symline_segment t;
+                if (c > i && c < best) {
+                    t.max_dev = pair_dev(m, i, c, &t);
+                    if (t.max_dev != SL_NO_JOIN) {
+                        best = c;
+                        copy_bytes(&e, &t, sizeof(e));
+                    }
                 }
             }
-            j = best != SL_NO_NODE ? best : (m->indexed > j ? m->indexed : j);
+            if (best != SL_NO_NODE) {
+                absorb(m, i, best, &e);
+                return true;
+            }
+            j = m->indexed > j ? m->indexed : j;
         }
     }
     for (; j < m->n; j++) {
