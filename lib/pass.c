@@ -54,12 +54,13 @@ static symline_point *point_at(const symline_result *r, uint32_t i)
 }
 
 /* Asks the grid of earlier segments (segindex.h), which tests the few
- * segments near the point instead of every one. */
+ * segments near the point instead of every one (hit: the chain's last
+ * entry found, segindex.h). */
 static bool covered(const symline_i_run *d, const symline_i_segindex *ix, const symline_point *q,
-                    uint32_t level)
+                    uint32_t level, uint32_t *hit)
 {
     const int32_t x = symline_i_q8(q->x, level), y = symline_i_q8(q->y, level);
-    return symline_i_segindex_near(ix, d->r, d->prev_seg, x, y, symline_i_cover_tol_q8(level));
+    return symline_i_segindex_near(ix, d->r, d->prev_seg, x, y, symline_i_cover_tol_q8(level), hit);
 }
 
 /* Whether a piece of n points at the pass's level is long enough to report. */
@@ -108,7 +109,7 @@ static void chain(symline_i_run *d, const symline_i_pass *p, const symline_i_seg
                   uint32_t at, uint32_t n)
 {
     const symline_point *c = d->r->points + at;
-    uint32_t i, s, from = 0u;
+    uint32_t i, s, from = 0u, hit = SL_NO_HIT;
     /* Every piece is part of the chain: a chain too short to be emitted
      * (most of them: two or three points of turf) needs no per-point test. */
     if (!piece_long_enough(d, p, n)) {
@@ -116,7 +117,7 @@ static void chain(symline_i_run *d, const symline_i_pass *p, const symline_i_seg
     }
     for (i = 0; i <= n; i++) {
         /* The uncovered runs [from, i), each cut at its corners. */
-        if (i < n && !covered(d, ix, &c[i], p->level)) {
+        if (i < n && !covered(d, ix, &c[i], p->level, &hit)) {
             continue;
         }
         for (s = from; s < i;) {

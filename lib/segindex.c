@@ -260,8 +260,27 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
 }
 
+/* Whether q lies near grid entry k (a line's id, or a curve's run: the
+ * pieces of its polyline in it). */
+static bool near_entry(const symline_i_segindex *ix, const symline_result *r, uint32_t k,
+                       const symline_i_near *q)
+{
+    const uint32_t e = ix->ids[k];
+    uint32_t a;
+    if ((e & SL_PIECE) == 0u) {
+        return symline_i_near_segment(&r->segments[e], r->points, q);
+    }
+    for (a = e - SL_PIECE; a < ix->ids[k + 1u]; a += SL_POLY_STEP) {
+        const uint32_t b = a + SL_POLY_STEP < ix->ids[k + 1u] ? a + SL_POLY_STEP : ix->ids[k + 1u];
+        if (symline_i_near_piece(&r->points[a], &r->points[b], q)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
-                             int32_t x, int32_t y, int32_t tol_q8)
+                             int32_t x, int32_t y, int32_t tol_q8, uint32_t *hit)
 {
     symline_i_near q;
     uint32_t i = 0u;
@@ -271,19 +290,15 @@ bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result 
     if (ix != NULL && ix->cols != 0u) {
         const uint32_t c = symline_i_cell_at(ix->cols, ix->rows, x, y);
         uint32_t k;
-        for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
-            const uint32_t e = ix->ids[k];
-            if ((e & SL_PIECE) != 0u) {
-                /* A curve's run: the pieces of its polyline in it. */
-                const uint32_t last = ix->ids[++k];
-                uint32_t a;
-                for (a = e - SL_PIECE; a < last; a += SL_POLY_STEP) {
-                    const uint32_t b = a + SL_POLY_STEP < last ? a + SL_POLY_STEP : last;
-                    if (symline_i_near_piece(&r->points[a], &r->points[b], &q)) {
-                        return true;
-                    }
-                }
-            } else if (symline_i_near_segment(&r->segments[e], r->points, &q)) {
+        /* The entry the last point was near first: a chain runs along an
+         * earlier segment for many points (speed builds). */
+        if (SL_FOR_SPEED && *hit != SL_NO_HIT && near_entry(ix, r, *hit, &q)) {
+            return true;
+        }
+        for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c];
+             k += (ix->ids[k] & SL_PIECE) != 0u ? 2u : 1u) {
+            if (near_entry(ix, r, k, &q)) {
+                *hit = k;
                 return true;
             }
         }

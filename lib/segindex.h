@@ -77,9 +77,14 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
                               size_t spare_bytes, uint32_t width, uint32_t height,
                               const symline_result *r, uint32_t nseg, int32_t tol_q8);
 
+/* What *hit of symline_i_segindex_near() starts as: no entry. */
+#define SL_NO_HIT 0xFFFFFFFFu
+
 /* Exactly symline_i_near_segment() of any of r->segments[0 .. nseg-1] for the
- * full-resolution point (x, y) (Q8, inside the frame); ix NULL: no grid. */
+ * full-resolution point (x, y) (Q8, inside the frame); ix NULL: no grid.
+ * *hit: the grid entry a point was last found near (SL_NO_HIT at first, one
+ * variable per grid), tried first where the build optimises for speed. */
 bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
-                             int32_t x, int32_t y, int32_t tol_q8);
+                             int32_t x, int32_t y, int32_t tol_q8, uint32_t *hit);
 
 #endif /* SYMLINE_LIB_SEGINDEX_H */
