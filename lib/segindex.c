@@ -215,6 +215,7 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     symline_i_cellwalk v;
     ix->end = (uint32_t *)symline_i_carve(&cur, lim, (size_t)cells * sizeof(uint32_t));
     ix->indexed = 0u;
+    ix->hit = SL_NO_HIT;
     if (ix->end == NULL) {
         ix->cols = 0u; /* not reached: the workspace size was checked */
         return;
@@ -279,8 +280,8 @@ static bool near_entry(const symline_i_segindex *ix, const symline_result *r, ui
     return false;
 }
 
-bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
-                             int32_t x, int32_t y, int32_t tol_q8, uint32_t *hit)
+bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
+                             int32_t x, int32_t y, int32_t tol_q8)
 {
     symline_i_near q;
     uint32_t i = 0u;
@@ -290,15 +291,13 @@ bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result 
     if (ix != NULL && ix->cols != 0u) {
         const uint32_t c = symline_i_cell_at(ix->cols, ix->rows, x, y);
         uint32_t k;
-        /* The entry the last point was near first: a chain runs along an
-         * earlier segment for many points (speed builds). */
-        if (SL_FOR_SPEED && *hit != SL_NO_HIT && near_entry(ix, r, *hit, &q)) {
+        if (SL_FOR_SPEED && ix->hit != SL_NO_HIT && near_entry(ix, r, ix->hit, &q)) {
             return true;
         }
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c];
              k += (ix->ids[k] & SL_PIECE) != 0u ? 2u : 1u) {
             if (near_entry(ix, r, k, &q)) {
-                *hit = k;
+                ix->hit = k;
                 return true;
             }
         }

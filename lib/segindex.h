@@ -27,7 +27,11 @@ typedef struct symline_i_segindex {
                             entries: SL_PIECE | its first point's index, its last
                             point's index (segindex.c) */
     uint32_t indexed;    /* segments [0, indexed) are in the grid */
+    uint32_t hit;        /* the entry a point was last found near, SL_NO_HIT: none */
 } symline_i_segindex;
+
+/* No entry (symline_i_segindex.hit). */
+#define SL_NO_HIT 0xFFFFFFFFu
 
 /* A walk over the grid cells within margin (Q8, plus the rounding slack of
  * the library's distance tests: length / 1024 + 1 px) of a chord, in pieces
@@ -77,14 +81,12 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
                               size_t spare_bytes, uint32_t width, uint32_t height,
                               const symline_result *r, uint32_t nseg, int32_t tol_q8);
 
-/* What *hit of symline_i_segindex_near() starts as: no entry. */
-#define SL_NO_HIT 0xFFFFFFFFu
-
 /* Exactly symline_i_near_segment() of any of r->segments[0 .. nseg-1] for the
  * full-resolution point (x, y) (Q8, inside the frame); ix NULL: no grid.
- * *hit: the grid entry a point was last found near (SL_NO_HIT at first, one
- * variable per grid), tried first where the build optimises for speed. */
-bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
-                             int32_t x, int32_t y, int32_t tol_q8, uint32_t *hit);
+ * Where the build optimises for speed, the entry the last point was found
+ * near is tried first (ix->hit): a chain runs along an earlier segment for
+ * many points. */
+bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
+                             int32_t x, int32_t y, int32_t tol_q8);
 
 #endif /* SYMLINE_LIB_SEGINDEX_H */
