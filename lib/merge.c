@@ -60,14 +60,8 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     uint64_t g = ~(uint64_t)0;
     uint32_t i;
     /* The gap first: the closest pair of ends (no square root, and most
-     * pairs of a cluttered frame fail it), before it the pieces' boxes (no
-     * product: ends further apart in x or in y than the gap are further
-     * apart); then each end on the other piece's line. All must hold, so
-     * the order changes only the cost. */
-    if (SL_FOR_SPEED && (apart(a->x0, a->x1, b->x0, b->x1, (int32_t)gap_q8) ||
-                         apart(a->y0, a->y1, b->y0, b->y1, (int32_t)gap_q8))) {
-        return false;
-    }
+     * pairs of a cluttered frame fail it); then each end on the other
+     * piece's line. Both must hold, so the order changes only the cost. */
     for (i = 0; i < 4u; i++) {
         int32_t x, y, ox, oy;
         uint64_t t;
@@ -240,10 +234,13 @@ static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segmen
     symline_segment *b = &m->r->segments[j];
     const uint32_t level = a->level > b->level ? a->level : b->level;
     const symline_point *bp = m->r->points + b->first;
-    /* The cheap geometric test first; both depend on the two pieces alone
-     * (joinable() only keeps its answer), so the order changes nothing but
-     * the cost. */
+    /* The cheap geometric tests first, where speed counts the pieces' boxes
+     * before them (no product: ends further apart in x or in y than the
+     * gap fail the gap); all depend on the two pieces alone (joinable()
+     * only keeps its answer), so the order changes nothing but the cost. */
     if (b->kind == SL_GONE || b->kind == SL_STIFF ||
+        (SL_FOR_SPEED && (apart(a->x0, a->x1, b->x0, b->x1, (int32_t)m->gap_q8) ||
+                          apart(a->y0, a->y1, b->y0, b->y1, (int32_t)m->gap_q8))) ||
         !mergeable(a, b, m->gap_q8, m->dev_q8 + symline_i_block_half_q8(level), e) ||
         !joinable(b, bp, m->curve_q8)) {
         return SL_NO_JOIN;
