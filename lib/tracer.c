@@ -138,7 +138,8 @@ uint32_t symline_i_neighbours(const symline_i_tracer *t, uint32_t x, uint32_t y)
 
 /* The points of a row from *cur on at x - 1 .. x + 1 (up to end); *cur
  * moves to the first at x - 1 or right of it. */
-static uint32_t count_near(const symline_point *pts, uint32_t *cur, uint32_t end, uint32_t x)
+static uint32_t count_near(const symline_point *pts, uint32_t *cur, uint32_t end, uint32_t x,
+                           uint32_t *nb)
 {
     uint32_t j = *cur, c = 0u;
     while (j < end && pts[j].x + 1u < x) {
@@ -147,6 +148,7 @@ static uint32_t count_near(const symline_point *pts, uint32_t *cur, uint32_t end
     *cur = j;
     for (; j < end && pts[j].x <= x + 1u; j++) {
         c++;
+        *nb = j;
     }
     return c;
 }
@@ -154,8 +156,9 @@ static uint32_t count_near(const symline_point *pts, uint32_t *cur, uint32_t end
 /* neighbours() of the scan's point i at x, for the scan in raster order:
  * cursors into the rows above and below that only move right, as the scan
  * does, so that each row is read once as the row above and once as the row
- * below, instead of three searches per point. Only saves time (SL_FOR_SPEED). */
-static uint32_t scan_neighbours(symline_i_tracer *t, uint32_t i, uint32_t x)
+ * below, instead of three searches per point. *nb: the index of the
+ * neighbour when there is one. Only saves time (SL_FOR_SPEED). */
+static uint32_t scan_neighbours(symline_i_tracer *t, uint32_t i, uint32_t x, uint32_t *nb)
 {
     const uint32_t *rs = t->row_start;
     uint32_t row = t->row, c;
@@ -167,11 +170,17 @@ static uint32_t scan_neighbours(symline_i_tracer *t, uint32_t i, uint32_t x)
         t->up = rs[row - 1u]; /* row > 0: a row before it ended */
         t->down = rs[row + 1u];
     }
-    c = count_near(t->pts, &t->up, rs[row], x) +
-        count_near(t->pts, &t->down, row + 1u < t->h ? rs[row + 2u] : rs[row + 1u], x);
+    c = count_near(t->pts, &t->up, rs[row], x, nb) +
+        count_near(t->pts, &t->down, row + 1u < t->h ? rs[row + 2u] : rs[row + 1u], x, nb);
     /* In its own row (each x once, sorted): the points right before and after it. */
-    c += (uint32_t)(i > rs[row] && t->pts[i - 1u].x + 1u == x);
-    c += (uint32_t)(i + 1u < rs[row + 1u] && t->pts[i + 1u].x == x + 1u);
+    if (i > rs[row] && t->pts[i - 1u].x + 1u == x) {
+        c++;
+        *nb = i - 1u;
+    }
+    if (i + 1u < rs[row + 1u] && t->pts[i + 1u].x == x + 1u) {
+        c++;
+        *nb = i + 1u;
+    }
     return c;
 }
 
@@ -187,6 +196,9 @@ static void visit(symline_i_tracer *t, int32_t idx)
 
 /* The direction of a start point's first step: any, in direction order 0..7. */
 #define SL_ANY_DIR 8u
+
+/* The direction of the step by (dx, dy): DIR_OF[(dy + 1) * 3 + dx + 1]. */
+static const uint8_t DIR_OF[9] = {5, 6, 7, 4, SL_ANY_DIR, 0, 3, 2, 1};
 
 /* A step's directions relative to the last one: straight, 45-degree, then
  * 90-degree turns, counter-clockwise first (0, +1, -1, +2, -2). */
@@ -307,9 +319,10 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
             if (y == SL_VISITED) {
                 continue;
             }
+            uint32_t nb = 0u;
             if (t->phase == 0u) {
                 const uint32_t c =
-                    SL_FOR_SPEED ? scan_neighbours(t, i, x) : symline_i_neighbours(t, x, y);
+                    SL_FOR_SPEED ? scan_neighbours(t, i, x, &nb) : symline_i_neighbours(t, x, y);
                 if (c != 1u) {
                     if (c == 0u) {
                         /* Type A: no chain ever reaches it, phase 1 need not try it. */
@@ -319,7 +332,21 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
                 }
             }
             visit(t, (int32_t)i);
-            if (!follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
+            if (SL_FOR_SPEED && t->phase == 0u && pos < cap) {
+                /* A B point's first step goes to its one neighbour nb, which
+                 * the count found: follow() from there, as its search in
+                 * every direction would have. */
+                const uint32_t nx = t->pts[nb].x, ny = t->pts[nb].y;
+                if (ny == SL_VISITED) {
+                    continue; /* nothing left to follow from here */
+                }
+                visit(t, (int32_t)nb);
+                dst[1].x = (uint16_t)nx;
+                dst[1].y = (uint16_t)ny;
+                pos = 2u;
+                (void)follow(t, nb, (int32_t)nx, (int32_t)ny,
+                             DIR_OF[(ny + 1u - y) * 3u + nx + 1u - x], dst, cap, &pos, cut);
+            } else if (!follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
                 continue; /* nothing left to follow from here: a lone rest of a traced line */
             }
             dst[0].x = (uint16_t)x;
