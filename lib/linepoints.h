@@ -25,9 +25,26 @@ typedef struct symline_i_pass {
 
 /* Box-downsampled row y of the pass grid into out (p->w bytes), level >= 1
  * (level 0 reads the frame's rows themselves); acc: scratch of img->width
- * uint16_t. */
+ * uint16_t. With a SIMD version from port/ (SYMLINE_PORT_GRID, CMake option
+ * SYMLINE_SIMD), symline_i_grid_row_c() is the portable reference and
+ * symline_i_grid_row() the port's, with the same output. */
 void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
                         uint16_t *acc, uint8_t *out);
+#ifdef SYMLINE_PORT_GRID
+void symline_i_grid_row_c(const symline_image *img, const symline_i_pass *p, uint32_t y,
+                          uint16_t *acc, uint8_t *out);
+#endif
+
+#ifdef SYMLINE_PORT_DROP_DIM_S
+/* The row pre-filter of the line filter (linepoints.c: drops from map[0..n-1]
+ * the S points whose gray values c, lo, hi the filter's first tests reject),
+ * replaced by a port's version with the same output (SYMLINE_PORT_DROP_DIM_S,
+ * CMake option SYMLINE_SIMD); symline_i_drop_dim_s_c() is the reference. */
+void symline_i_drop_dim_s_c(const symline_i_linefilter *f, const uint8_t *c, const uint8_t *lo,
+                            const uint8_t *hi, uint32_t n, uint8_t *map);
+void symline_i_drop_dim_s(const symline_i_linefilter *f, const uint8_t *c, const uint8_t *lo,
+                          const uint8_t *hi, uint32_t n, uint8_t *map);
+#endif
 
 /* Workspace bytes of symline_i_collect() (row index excluded). */
 size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width);
