@@ -169,20 +169,9 @@ uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *
 
 #endif
 
-#ifndef SYMLINE_PORT_EXTREMA_ROWS
-uint32_t symline_i_extrema_along(const uint32_t *E, uint32_t n, uint8_t *restrict map,
-                                 uint32_t *restrict ev)
-{
-    return symline_i_extrema_along_c(E, n, map, ev);
-}
-
-uint32_t symline_i_extrema_across(const uint32_t *restrict mid, const uint32_t *restrict dn,
-                                  int8_t *restrict sg, uint32_t n, uint8_t *restrict map,
-                                  uint32_t *restrict ev)
-{
-    return symline_i_extrema_across_c(mid, dn, sg, n, map, ev);
-}
-#endif
+/* The plateau mask words of n <= SL_KINDS_MAX entries (one where the blocks
+ * are 32 entries: the loops over words fold away). */
+#define SL_WORDS(n) (SL_KINDS_WORDS == 1u ? 1u : ((n) + 31u) / 32u)
 
 /* Index of the lowest set bit of v != 0: one instruction where the target
  * has it, a multiply and a table lookup elsewhere (no library call). */
@@ -234,9 +223,9 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
     /* The port's three-row decision: the run ends looked for entry by entry
      * in the blocks it flags. */
     for (x0 = 1u; x0 + 1u < n; x0 = x1) {
-        uint32_t i;
         x1 = x0 + ((n - 1u - x0 > SL_PLATEAU_BLOCK) ? SL_PLATEAU_BLOCK : n - 1u - x0);
         if (symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0) != 0u) {
+            uint32_t i;
             for (i = x0; i < x1; i++) {
                 if ((E[i - 1u] == E[i]) != (E[i] == E[i + 1u])) {
                     run_mark(E, i, lag, map, &a);
@@ -251,7 +240,7 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
         if (symline_i_extrema_along(E + x0, x1 - x0, map + x0, ev) == 0u) {
             continue;
         }
-        for (k = 0; k < (x1 - x0 + 31u) / 32u; k++) {
+        for (k = 0; k < SL_WORDS(x1 - x0); k++) {
             uint32_t bits;
             for (bits = ev[k]; bits != 0u; bits &= bits - 1u) {
                 run_mark(E, x0 + 32u * k + lowest_bit(bits), lag, map, &a); /* i + 1 < n */
@@ -284,33 +273,26 @@ static void plateau_down(const symline_i_coldown *cd, const uint32_t *up, const 
 void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint32_t t)
 {
     /* Row t-2 is row t-1 itself at t = 1: row 0 has no row above, so it is
-     * never marked, and a run that starts there has no side. */
+     * never marked, and every run starts there without a side. */
     const uint32_t w = cd->width;
     const uint32_t *mid = cd->E3 + (size_t)((t + 2u) % 3u) * w;
-    const uint32_t *up = cd->E3 + (size_t)((t + 1u) % 3u) * w; /* t >= 2 */
+    const uint32_t *up = (t >= 2u) ? cd->E3 + (size_t)((t + 1u) % 3u) * w : mid;
     uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
     uint32_t i, nb;
     if (t == 1u) {
-        /* Row 0 is never marked; the signs to row 1; the runs that start at
-         * row 0, without a side. */
-        for (i = 0; i < w; i++) {
-            const int8_t r = (int8_t)sign_of(E[i], mid[i]);
-            mr[i] = SYMLINE_MAP_NONE;
-            cd->sg[i] = r;
-            if (r == 0) {
-                cd->run_start[i] = 0u;
-                cd->sg[w + i] = 0;
-            }
+        /* No sign to the row above, and no side for the runs that start at
+         * row 0 (so they are never marked: their run_start is not needed). */
+        for (i = 0; i < 2u * w; i++) {
+            cd->sg[i] = 0;
         }
-        return;
     }
 #ifdef SYMLINE_PORT_EXTREMA_KINDS
     /* The port's three-row decision: the plateau ends looked for column by
      * column in the blocks it flags. */
     for (i = 0; i < w; i += nb) {
-        uint32_t x;
         nb = (w - i > SL_PLATEAU_BLOCK) ? SL_PLATEAU_BLOCK : w - i;
         if (symline_i_extrema_kinds(up + i, mid + i, E + i, nb, mr + i) != 0u) {
+            uint32_t x;
             for (x = i; x < i + nb; x++) {
                 if ((up[x] == mid[x]) != (mid[x] == E[x])) {
                     plateau_down(cd, up, mid, E, t, x);
@@ -325,7 +307,7 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
         if (symline_i_extrema_across(mid + i, E + i, cd->sg + i, nb, mr + i, ev) == 0u) {
             continue;
         }
-        for (k = 0; k < (nb + 31u) / 32u; k++) {
+        for (k = 0; k < SL_WORDS(nb); k++) {
             uint32_t bits;
             for (bits = ev[k]; bits != 0u; bits &= bits - 1u) {
                 plateau_down(cd, up, mid, E, t, i + 32u * k + lowest_bit(bits));

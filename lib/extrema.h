@@ -56,6 +56,10 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
 uint32_t symline_i_extrema_across(const uint32_t *restrict mid, const uint32_t *restrict dn,
                                   int8_t *restrict sg, uint32_t n, uint8_t *restrict map,
                                   uint32_t *restrict ev);
+#ifndef SYMLINE_PORT_EXTREMA_ROWS /* no SIMD versions: the references */
+#define symline_i_extrema_along symline_i_extrema_along_c
+#define symline_i_extrema_across symline_i_extrema_across_c
+#endif
 
 /*
  * A port's decision of three rows (SYMLINE_PORT_EXTREMA_KINDS, a scalar
