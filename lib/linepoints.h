@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * Line points of one pass (linepoints.c): the scale grid's rows, symmetry
+ * Line points of one pass (linepoints.c): the scale grid's rows (grid.c), symmetry
  * energies, extrema with the plateau limit and the line filter, streamed
  * over a ring of rows into a raster-ordered point list.
  */
@@ -22,12 +22,6 @@ typedef struct symline_i_pass {
     uint32_t lag;   /* longest accepted plateau: end - marked index <= lag (= m) */
     symline_i_linefilter filter;
 } symline_i_pass;
-
-/* Box-downsampled row y of the pass grid into out (p->w bytes), level >= 1
- * (level 0 reads the frame's rows themselves); acc: scratch of img->width
- * uint16_t. */
-void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
-                        uint16_t *acc, uint8_t *out);
 
 /* Workspace bytes of symline_i_collect() (row index excluded). */
 size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width);
