@@ -1,0 +1,157 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * The scale grid's rows (lib/grid.c) with SSE2 intrinsics (x86-64
+ * baseline), selected at build time (CMake option SYMLINE_SIMD,
+ * port/CMakeLists.txt) in place of the portable lane loops, with the same
+ * output (tests/core/test_grid_simd.c compares them). Eight or sixteen grid
+ * pixels per step; lib/grid.c sums the last few block by block.
+ *
+ * Why: every coarse pass reads the whole frame, so the cost is in the loads.
+ * Blocks of 2 and 4 columns: each 16-bit lane of a row vector is
+ * lo + 256 hi of two neighbouring pixels, so the rows are added as they are
+ * (wrapping) with their hi bytes beside: lo + hi sums = W - 255 H, exact in
+ * 16 bits (W + H * 0xFF01 mod 2^16); two adds and a shift per 16 pixels and
+ * row. Blocks of 8 columns and more: psadbw against zero sums 8 bytes at
+ * once.
+ */
+#include <emmintrin.h>
+
+#include "grid.h"
+
+static inline __m128i load16(const uint8_t *p)
+{
+    return _mm_loadu_si128((const __m128i *)(const void *)p);
+}
+
+/* Pair sums of nv vectors (16 nv columns from b) over s rows: W + H * 0xFF01. */
+static SL_ALWAYS_INLINE void pair_sums(const uint8_t *b, size_t stride, uint32_t s, uint32_t nv,
+                                       __m128i *S)
+{
+    const __m128i k = _mm_set1_epi16((short)0xFF01);
+    __m128i W[4], H[4];
+    uint32_t d, i;
+    for (i = 0; i < nv; i++) {
+        W[i] = load16(b + 16u * i);
+        H[i] = _mm_srli_epi16(W[i], 8);
+    }
+    for (d = 1u; d < s; d++) {
+        b += stride;
+        for (i = 0; i < nv; i++) {
+            const __m128i v = load16(b + 16u * i);
+            W[i] = _mm_add_epi16(W[i], v);
+            H[i] = _mm_add_epi16(H[i], _mm_srli_epi16(v, 8));
+        }
+    }
+    for (i = 0; i < nv; i++) {
+        S[i] = _mm_add_epi16(W[i], _mm_mullo_epi16(H[i], k));
+    }
+}
+
+/* Level 1: pair sums (<= 4 * 255) of 2 rows are the block sums. */
+static uint32_t level1(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out)
+{
+    const __m128i half = _mm_set1_epi16(2);
+    __m128i S[4];
+    uint32_t x = 0u;
+    for (; x + 16u <= w; x += 16u) {
+        pair_sums(src + (size_t)x * 2u, stride, 2u, 2u, S);
+        S[0] = _mm_srli_epi16(_mm_add_epi16(S[0], half), 2);
+        S[1] = _mm_srli_epi16(_mm_add_epi16(S[1], half), 2);
+        _mm_storeu_si128((__m128i *)(void *)(out + x), _mm_packus_epi16(S[0], S[1]));
+    }
+    if (x + 8u <= w) {
+        pair_sums(src + (size_t)x * 2u, stride, 2u, 1u, S);
+        S[0] = _mm_srli_epi16(_mm_add_epi16(S[0], half), 2);
+        _mm_storel_epi64((__m128i *)(void *)(out + x), _mm_packus_epi16(S[0], S[0]));
+        x += 8u;
+    }
+    return x;
+}
+
+/* Level 2: pair sums (<= 8 * 255, signed 16 bits for madd) of 4 rows, then
+ * neighbouring pairs added by madd into 32-bit lanes and packed back. */
+static SL_ALWAYS_INLINE __m128i level2_sums(const __m128i *S)
+{
+    const __m128i ones = _mm_set1_epi16(1), half = _mm_set1_epi16(8);
+    const __m128i B = _mm_packs_epi32(_mm_madd_epi16(S[0], ones), _mm_madd_epi16(S[1], ones));
+    return _mm_srli_epi16(_mm_add_epi16(B, half), 4);
+}
+
+static uint32_t level2(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out)
+{
+    __m128i S[4], a;
+    uint32_t x = 0u;
+    for (; x + 16u <= w; x += 16u) {
+        pair_sums(src + (size_t)x * 4u, stride, 4u, 4u, S);
+        a = level2_sums(S);
+        _mm_storeu_si128((__m128i *)(void *)(out + x), _mm_packus_epi16(a, level2_sums(S + 2)));
+    }
+    if (x + 8u <= w) {
+        pair_sums(src + (size_t)x * 4u, stride, 4u, 2u, S);
+        a = level2_sums(S);
+        _mm_storel_epi64((__m128i *)(void *)(out + x), _mm_packus_epi16(a, a));
+        x += 8u;
+    }
+    return x;
+}
+
+/* Level 3: one block of 8 columns per 64-bit lane of psadbw. */
+static uint32_t level3(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out)
+{
+    const __m128i z = _mm_setzero_si128(), half = _mm_set1_epi16(32);
+    uint32_t x, d;
+    for (x = 0; x + 8u <= w; x += 8u) {
+        const uint8_t *b = src + (size_t)x * 8u;
+        __m128i P0 = z, P1 = z, P2 = z, P3 = z, S;
+        for (d = 0; d < 8u; d++, b += stride) {
+            P0 = _mm_add_epi32(P0, _mm_sad_epu8(load16(b), z));
+            P1 = _mm_add_epi32(P1, _mm_sad_epu8(load16(b + 16), z));
+            P2 = _mm_add_epi32(P2, _mm_sad_epu8(load16(b + 32), z));
+            P3 = _mm_add_epi32(P3, _mm_sad_epu8(load16(b + 48), z));
+        }
+        /* Block sums <= 64 * 255 in the even 32-bit lanes: packed twice. */
+        S = _mm_packs_epi32(_mm_packs_epi32(P0, P1), _mm_packs_epi32(P2, P3));
+        S = _mm_srli_epi16(_mm_add_epi16(S, half), 6);
+        _mm_storel_epi64((__m128i *)(void *)(out + x), _mm_packus_epi16(S, S));
+    }
+    return x;
+}
+
+/* Levels 4 and 5: one pixel at a time, its block in whole vectors. */
+static uint32_t wide_levels(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
+                            uint8_t *out)
+{
+    const uint32_t s = 1u << level, shift = 2u * level;
+    const __m128i z = _mm_setzero_si128();
+    uint32_t x, d, i;
+    for (x = 0; x < w; x++) {
+        const uint8_t *b = src + (size_t)x * s;
+        __m128i P = z;
+        for (d = 0; d < s; d++, b += stride) {
+            for (i = 0; i < s; i += 16u) {
+                P = _mm_add_epi32(P, _mm_sad_epu8(load16(b + i), z));
+            }
+        }
+        P = _mm_add_epi32(P, _mm_srli_si128(P, 8));
+        out[x] = (uint8_t)(((uint32_t)_mm_cvtsi128_si32(P) + ((1u << shift) >> 1)) >> shift);
+    }
+    return w;
+}
+
+uint32_t symline_i_grid_lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
+                              uint8_t *out)
+{
+    if (level == 1u) {
+        return level1(src, stride, w, out);
+    }
+    if (level == 2u) {
+        return level2(src, stride, w, out);
+    }
+    if (level == 3u) {
+        return level3(src, stride, w, out);
+    }
+    if (level >= 4u && level <= 5u) {
+        return wide_levels(src, stride, level, w, out);
+    }
+    return 0u;
+}

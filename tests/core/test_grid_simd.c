@@ -1,0 +1,143 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * The scale grid's rows (lib/grid.c) as the build has them (a SIMD version
+ * from port/ where SYMLINE_SIMD built one, else the portable lane loops)
+ * against the definition (the rounded mean of each 2^level x 2^level block,
+ * (sum + 2^(2 level - 1)) >> 2 level), and where built, the SIMD version
+ * against the portable reference: random images, levels 0..5, odd and short
+ * widths, unaligned starts, strides, gray-value extremes, and no write past
+ * the row or the scratch.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "grid.h"
+#include "testutil.h"
+
+#define MAXW 1100u
+#define MAXSTRIDE (MAXW + 40u)
+#define ROWS 64u /* two grid rows at level 5 */
+#define GUARD 0x5a
+
+static uint8_t img[(size_t)MAXSTRIDE * ROWS + 16u];
+
+/* Random gray values, now and then all dark, all bright or only extremes. */
+static void fill_gray(uint32_t t, uint32_t *s)
+{
+    size_t i;
+    const uint32_t kind = t % 7u;
+    for (i = 0; i < sizeof img; i++) {
+        const uint32_t r = tu_rand(s);
+        img[i] = (uint8_t)(kind == 0u ? 255u : kind == 1u ? 0u : kind == 2u ? (r & 1u) * 255u : r);
+    }
+}
+
+/* A frame of width x (2 2^level) in img at offset off with the given stride. */
+static symline_image frame(uint32_t width, uint32_t level, uint32_t stride, uint32_t off)
+{
+    symline_image im;
+    im.width = width;
+    im.height = 2u << level;
+    im.stride = stride;
+    im.data = img + off;
+    return im;
+}
+
+/* Grid row y by the definition. */
+static void definition(const symline_image *im, uint32_t level, uint32_t y, uint8_t *out)
+{
+    const uint32_t s = 1u << level, shift = 2u * level;
+    uint32_t x, i, j;
+    for (x = 0; x < (im->width >> level); x++) {
+        uint32_t sum = 0u;
+        for (j = 0; j < s; j++) {
+            for (i = 0; i < s; i++) {
+                sum += im->data[(size_t)(y * s + j) * im->stride + x * s + i];
+            }
+        }
+        out[x] = (uint8_t)((sum + ((1u << shift) >> 1)) >> shift);
+    }
+}
+
+/* Width, level, stride and start of trial t: short widths often. */
+static symline_image pick(uint32_t t, uint32_t *s, uint32_t *level)
+{
+    const uint32_t lv = t % 6u;
+    const uint32_t width = (t % 3u == 0u) ? 1u + tu_rand(s) % 80u : 1u + tu_rand(s) % MAXW;
+    const uint32_t stride = width + tu_rand(s) % 40u, off = tu_rand(s) % 16u;
+    *level = lv;
+    return frame(width, lv, stride, off);
+}
+
+static void row_is_definition(void **state)
+{
+    uint8_t got[MAXW + 16u], want[MAXW + 16u];
+    uint16_t acc[MAXW + 8u];
+    uint32_t s = 11u, t, y, level;
+    (void)state;
+    for (t = 0; t < 1500u; t++) {
+        const symline_image im = pick(t, &s, &level);
+        if (t % 10u == 0u) {
+            fill_gray(t / 10u, &s);
+        }
+        for (y = 0; y < 2u; y++) {
+            memset(got, GUARD, sizeof got);
+            memset(acc, GUARD, sizeof acc);
+            memcpy(want, got, sizeof want);
+            symline_i_grid_row(&im, level, y, acc, got);
+            definition(&im, level, y, want);
+            assert_memory_equal(got, want, sizeof got); /* nothing past w either */
+            assert_int_equal(acc[im.width], 0x5a5au);   /* scratch: width entries */
+        }
+    }
+}
+
+#ifdef SYMLINE_PORT_GRID
+/* The SIMD rows against lib/grid.c's portable reference, and the SIMD lane
+ * loops alone: whole vectors only, nothing written past what they report. */
+static void simd_is_reference(void **state)
+{
+    uint8_t a[MAXW + 16u], b[MAXW + 16u];
+    uint16_t acc[MAXW + 8u];
+    uint32_t s = 5u, t, y, level;
+    (void)state;
+    for (t = 0; t < 3000u; t++) {
+        const symline_image im = pick(t, &s, &level);
+        const uint32_t w = im.width >> level;
+        if (t % 10u == 0u) {
+            fill_gray(t / 10u, &s);
+        }
+        for (y = 0; y < 2u; y++) {
+            const uint8_t *src = im.data + ((size_t)y << level) * im.stride;
+            uint32_t done;
+            memset(a, GUARD, sizeof a);
+            memset(b, GUARD, sizeof b);
+            symline_i_grid_row(&im, level, y, acc, a);
+            symline_i_grid_row_c(&im, level, y, acc, b);
+            assert_memory_equal(a, b, sizeof a);
+            memset(a, GUARD, sizeof a);
+            done = symline_i_grid_lanes(src, im.stride, level, w, a);
+            assert_true(done <= w);
+            assert_memory_equal(a, b, done);
+            assert_int_equal(a[done], GUARD);
+            assert_true(level == 0u || w - done < 8u); /* the lanes do all but a few */
+        }
+    }
+}
+#endif
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(row_is_definition),
+#ifdef SYMLINE_PORT_GRID
+        cmocka_unit_test(simd_is_reference),
+#endif
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
