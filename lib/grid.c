@@ -36,9 +36,9 @@ static void blocks(const uint8_t *src, size_t stride, uint32_t level, uint32_t x
 }
 
 /* Neighbour pairs of a[0 .. 2n-1] into b[0 .. n-1]. */
-static void pairs(const uint16_t *restrict a, uint32_t n, uint16_t *restrict b)
+static void pairs(const uint16_t *restrict a, size_t n, uint16_t *restrict b)
 {
-    uint32_t x;
+    size_t x;
     for (x = 0; x < n; x++) {
         b[x] = (uint16_t)(a[2u * x] + a[2u * x + 1u]);
     }
@@ -50,7 +50,8 @@ static void lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
                   uint8_t *out)
 {
     const uint32_t shift = 2u * level;
-    uint32_t x, d, n = (w << level) / 2u;
+    uint32_t d;
+    size_t x, n = ((size_t)w << level) / 2u;
     uint16_t *a = acc;
     for (x = 0; x < n; x++) {
         acc[x] = (uint16_t)(src[2u * x] + src[2u * x + 1u]);
