@@ -7,12 +7,14 @@
  * pixels per step; lib/grid.c sums the last few block by block.
  *
  * Why: every coarse pass reads the whole frame, so the cost is in the loads.
- * Blocks of 2 and 4 columns: each 16-bit lane of a row vector is
- * lo + 256 hi of two neighbouring pixels, so the rows are added as they are
- * (wrapping) with their hi bytes beside: lo + hi sums = W - 255 H, exact in
- * 16 bits (W + H * 0xFF01 mod 2^16); two adds and a shift per 16 pixels and
- * row. Blocks of 8 columns and more: psadbw against zero sums 8 bytes at
- * once.
+ * Each 16-bit lane of a row vector is lo + 256 hi of two neighbouring
+ * pixels. Blocks of 2: the lo and hi bytes of the two rows added. Blocks of
+ * 4: the rows are added as they are (wrapping) with their hi bytes beside,
+ * lo + hi sums = W - 255 H, exact in 16 bits (W + H * 0xFF01 mod 2^16): two
+ * adds and a shift per 16 pixels and row. Blocks of 8 columns and more:
+ * psadbw against zero sums 8 bytes at once. Eight pixels per step at level
+ * 2: with sixteen GCC hoists the loads of all rows and spills them
+ * (callgrind: 0.49 instead of 0.42 instructions per frame pixel).
  */
 #include <emmintrin.h>
 
@@ -23,12 +25,13 @@ static inline __m128i load16(const uint8_t *p)
     return _mm_loadu_si128((const __m128i *)(const void *)p);
 }
 
-/* Pair sums of nv vectors (16 nv columns from b) over s rows: W + H * 0xFF01. */
+/* Pair sums of nv <= 2 vectors (16 nv columns from b) over s <= 16 rows:
+ * W + H * 0xFF01. */
 static SL_ALWAYS_INLINE void pair_sums(const uint8_t *b, size_t stride, uint32_t s, uint32_t nv,
                                        __m128i *S)
 {
     const __m128i k = _mm_set1_epi16((short)0xFF01);
-    __m128i W[4], H[4];
+    __m128i W[2], H[2];
     uint32_t d, i;
     for (i = 0; i < nv; i++) {
         W[i] = load16(b + 16u * i);
@@ -47,22 +50,29 @@ static SL_ALWAYS_INLINE void pair_sums(const uint8_t *b, size_t stride, uint32_t
     }
 }
 
-/* Level 1: pair sums (<= 4 * 255) of 2 rows are the block sums. */
+/* Level 1: the 2 x 2 sums (<= 4 * 255) of 16 columns of 2 rows, from the
+ * low and high bytes of their 16-bit lanes. */
+static SL_ALWAYS_INLINE __m128i level1_sums(const uint8_t *b, size_t stride)
+{
+    const __m128i lo = _mm_set1_epi16(0xFF), half = _mm_set1_epi16(2);
+    const __m128i u = load16(b), v = load16(b + stride);
+    const __m128i t = _mm_add_epi16(_mm_and_si128(u, lo), _mm_and_si128(v, lo));
+    const __m128i h = _mm_add_epi16(_mm_srli_epi16(u, 8), _mm_srli_epi16(v, 8));
+    return _mm_srli_epi16(_mm_add_epi16(_mm_add_epi16(t, h), half), 2);
+}
+
 static uint32_t level1(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out)
 {
-    const __m128i half = _mm_set1_epi16(2);
-    __m128i S[4];
     uint32_t x = 0u;
+    __m128i a;
     for (; x + 16u <= w; x += 16u) {
-        pair_sums(src + (size_t)x * 2u, stride, 2u, 2u, S);
-        S[0] = _mm_srli_epi16(_mm_add_epi16(S[0], half), 2);
-        S[1] = _mm_srli_epi16(_mm_add_epi16(S[1], half), 2);
-        _mm_storeu_si128((__m128i *)(void *)(out + x), _mm_packus_epi16(S[0], S[1]));
+        a = level1_sums(src + (size_t)x * 2u, stride);
+        _mm_storeu_si128((__m128i *)(void *)(out + x),
+                         _mm_packus_epi16(a, level1_sums(src + (size_t)x * 2u + 16u, stride)));
     }
     if (x + 8u <= w) {
-        pair_sums(src + (size_t)x * 2u, stride, 2u, 1u, S);
-        S[0] = _mm_srli_epi16(_mm_add_epi16(S[0], half), 2);
-        _mm_storel_epi64((__m128i *)(void *)(out + x), _mm_packus_epi16(S[0], S[0]));
+        a = level1_sums(src + (size_t)x * 2u, stride);
+        _mm_storel_epi64((__m128i *)(void *)(out + x), _mm_packus_epi16(a, a));
         x += 8u;
     }
     return x;
@@ -79,18 +89,12 @@ static SL_ALWAYS_INLINE __m128i level2_sums(const __m128i *S)
 
 static uint32_t level2(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out)
 {
-    __m128i S[4], a;
+    __m128i S[2], a;
     uint32_t x = 0u;
-    for (; x + 16u <= w; x += 16u) {
-        pair_sums(src + (size_t)x * 4u, stride, 4u, 4u, S);
-        a = level2_sums(S);
-        _mm_storeu_si128((__m128i *)(void *)(out + x), _mm_packus_epi16(a, level2_sums(S + 2)));
-    }
-    if (x + 8u <= w) {
+    for (; x + 8u <= w; x += 8u) {
         pair_sums(src + (size_t)x * 4u, stride, 4u, 2u, S);
         a = level2_sums(S);
         _mm_storel_epi64((__m128i *)(void *)(out + x), _mm_packus_epi16(a, a));
-        x += 8u;
     }
     return x;
 }
