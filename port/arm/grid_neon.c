@@ -3,8 +3,8 @@
  * The scale grid's rows (lib/grid.c) with AArch64 Advanced SIMD (NEON)
  * intrinsics, selected at build time (CMake option SYMLINE_SIMD,
  * port/CMakeLists.txt) in place of the portable lane loops, with the same
- * output (tests/core/test_grid_simd.c compares them). Eight grid pixels per
- * step; lib/grid.c sums the last few block by block.
+ * output (tests/core/test_grid_simd.c compares them). Eight, then four grid
+ * pixels per step; lib/grid.c sums the last three at most block by block.
  *
  * Why: every coarse pass reads the whole frame, so the cost is in the loads.
  * NEON adds neighbouring bytes into 16-bit lanes as it accumulates the rows
@@ -14,6 +14,7 @@
  * across the lanes in 32 bits.
  */
 #include <arm_neon.h>
+#include <string.h>
 
 #include "grid.h"
 
@@ -33,27 +34,56 @@ static inline __attribute__((always_inline)) void pair_sums(const uint8_t *b, si
     }
 }
 
+/* (q + 2^(2 level - 1)) >> 2 level narrowed to bytes (block sums q). */
+static inline __attribute__((always_inline)) uint8x8_t narrow(uint16x8_t q, uint32_t level)
+{
+    switch (level) { /* vrshrn takes a constant shift */
+    case 1u: return vrshrn_n_u16(q, 2);
+    case 2u: return vrshrn_n_u16(q, 4);
+    case 3u: return vrshrn_n_u16(q, 6);
+    default: return vrshrn_n_u16(q, 8);
+    }
+}
+
+/* Pair sums P[0 .. nv-1] added pairwise into P[0] (nv a power of 2). */
+static inline __attribute__((always_inline)) void reduce(uint16x8_t *P, uint32_t nv)
+{
+    uint32_t n, i;
+    for (n = nv; n > 1u; n /= 2u) {
+        for (i = 0; i < n / 2u; i++) {
+            P[i] = vpaddq_u16(P[2u * i], P[2u * i + 1u]);
+        }
+    }
+}
+
 /* Levels 1..4: nv = 2^level / 2 vectors per 8 pixels, their pair sums
- * (<= 2 * 16 * 255) added pairwise level - 1 times (<= 256 * 255). */
+ * (<= 2 * 16 * 255) added pairwise level - 1 times (<= 256 * 255); then
+ * four pixels from half as many (or half a vector at level 1). */
 static inline __attribute__((always_inline)) uint32_t
 lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w, uint8_t *out)
 {
     const uint32_t s = 1u << level, nv = s / 2u;
-    uint16x8_t P[8];
-    uint32_t x, n, i;
+    uint16x8_t P[8], Q;
+    uint32_t x;
     for (x = 0; x + 8u <= w; x += 8u) {
         pair_sums(src + (size_t)x * s, stride, s, nv, P);
-        for (n = nv; n > 1u; n /= 2u) {
-            for (i = 0; i < n / 2u; i++) {
-                P[i] = vpaddq_u16(P[2u * i], P[2u * i + 1u]);
-            }
+        reduce(P, nv);
+        vst1_u8(out + x, narrow(P[0], level));
+    }
+    if (x + 4u <= w) {
+        const uint8_t *b = src + (size_t)x * s;
+        uint32_t t;
+        if (level == 1u) {
+            const uint16x4_t p = vpadal_u8(vpaddl_u8(vld1_u8(b)), vld1_u8(b + stride));
+            Q = vcombine_u16(p, p);
+        } else {
+            pair_sums(b, stride, s, nv / 2u, P);
+            reduce(P, nv / 2u);
+            Q = vpaddq_u16(P[0], P[0]);
         }
-        switch (level) { /* vrshrn takes a constant shift */
-        case 1u: vst1_u8(out + x, vrshrn_n_u16(P[0], 2)); break;
-        case 2u: vst1_u8(out + x, vrshrn_n_u16(P[0], 4)); break;
-        case 3u: vst1_u8(out + x, vrshrn_n_u16(P[0], 6)); break;
-        default: vst1_u8(out + x, vrshrn_n_u16(P[0], 8)); break;
-        }
+        t = vget_lane_u32(vreinterpret_u32_u8(narrow(Q, level)), 0);
+        memcpy(out + x, &t, 4u);
+        x += 4u;
     }
     return x;
 }
