@@ -4,8 +4,7 @@
  * baseline), selected at build time (CMake option SYMLINE_SIMD,
  * port/CMakeLists.txt) in place of the portable lane loops, with the same
  * output (tests/core/test_grid_simd.c compares them). Sixteen, eight, then
- * four grid pixels per step; lib/grid.c sums the last three at most block by
- * block.
+ * four grid pixels per step, then single blocks: the whole row.
  *
  * Why: every coarse pass reads the whole frame, so the cost is in the loads.
  * Each 16-bit lane of a row vector is lo + 256 hi of two neighbouring
@@ -186,19 +185,30 @@ static uint32_t level4(const uint8_t *src, size_t stride, uint32_t w, uint8_t *o
     return x;
 }
 
-/* Level 5: one pixel at a time, its block in whole vectors. */
-static uint32_t wide_levels(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
-                            uint8_t *out)
+/* Pixels x0 .. w-1 one at a time (levels 2..5; the tails of the steps
+ * above, and all of level 5): each block row by psadbw, 4, 8 or 16 bytes at
+ * a time. */
+static uint32_t singles(const uint8_t *src, size_t stride, uint32_t level, uint32_t x0, uint32_t w,
+                        uint8_t *out)
 {
     const uint32_t s = 1u << level, shift = 2u * level;
     const __m128i z = _mm_setzero_si128();
     uint32_t x, d, i;
-    for (x = 0; x < w; x++) {
+    for (x = x0; x < w; x++) {
         const uint8_t *b = src + (size_t)x * s;
         __m128i P = z;
         for (d = 0; d < s; d++, b += stride) {
-            for (i = 0; i < s; i += 16u) {
-                P = _mm_add_epi32(P, _mm_sad_epu8(load16(b + i), z));
+            if (level == 2u) {
+                uint32_t t;
+                memcpy(&t, b, 4u);
+                P = _mm_add_epi32(P, _mm_sad_epu8(_mm_cvtsi32_si128((int)t), z));
+            } else if (level == 3u) {
+                P = _mm_add_epi32(
+                    P, _mm_sad_epu8(_mm_loadl_epi64((const __m128i *)(const void *)b), z));
+            } else {
+                for (i = 0; i < s; i += 16u) {
+                    P = _mm_add_epi32(P, _mm_sad_epu8(load16(b + i), z));
+                }
             }
         }
         P = _mm_add_epi32(P, _mm_srli_si128(P, 8));
@@ -210,20 +220,25 @@ static uint32_t wide_levels(const uint8_t *src, size_t stride, uint32_t level, u
 uint32_t symline_i_grid_lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
                               uint8_t *out)
 {
+    uint32_t x;
     if (level == 1u) {
-        return level1(src, stride, w, out);
+        for (x = level1(src, stride, w, out); x < w; x++) { /* at most three */
+            const uint8_t *b = src + (size_t)x * 2u;
+            out[x] = (uint8_t)(((uint32_t)b[0] + b[1] + b[stride] + b[stride + 1u] + 2u) >> 2);
+        }
+        return w;
     }
     if (level == 2u) {
-        return level2(src, stride, w, out);
+        return singles(src, stride, 2u, level2(src, stride, w, out), w, out);
     }
     if (level == 3u) {
-        return level3(src, stride, w, out);
+        return singles(src, stride, 3u, level3(src, stride, w, out), w, out);
     }
     if (level == 4u) {
-        return level4(src, stride, w, out);
+        return singles(src, stride, 4u, level4(src, stride, w, out), w, out);
     }
     if (level == 5u) {
-        return wide_levels(src, stride, level, w, out);
+        return singles(src, stride, 5u, 0u, w, out);
     }
     return 0u;
 }
