@@ -44,7 +44,9 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
  * symline_i_extrema_down(); a plateau sends only its block down the slow
  * path. SL_PLATEAU_SPAN(left): the next block of the `left` still to do;
  * the blocks only save time (SL_FOR_SPEED; else all of them). */
+#ifndef SL_PLATEAU_BLOCK /* a port may take smaller blocks (port/CMakeLists.txt) */
 #define SL_PLATEAU_BLOCK 64u
+#endif
 #define SL_PLATEAU_SPAN(left)                                                                      \
     (SL_FOR_SPEED && (left) > SL_PLATEAU_BLOCK ? SL_PLATEAU_BLOCK : (left))
 

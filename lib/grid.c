@@ -5,17 +5,12 @@
  * so the rows are summed in lanes over whole rows: the block rows added
  * down in 16-bit lanes (at most 32 * 255), then neighbours added pairwise,
  * halving the row per step, while 16 bits hold the sums (levels <= 4:
- * 256 * 255 < 2^16). A SIMD version from port/ (SYMLINE_PORT_GRID) takes
- * the place of the lane loops; the remaining pixels and the size builds
- * (SL_FOR_SPEED 0) sum one block at a time.
+ * 256 * 255 < 2^16). The size builds (SL_FOR_SPEED 0) and level 5 sum
+ * one block at a time. A version from port/ (SYMLINE_PORT_GRID) replaces
+ * the detector's row call (symline_i_grid_row(), linepoints.c), whose
+ * reference this is then.
  */
 #include "grid.h"
-
-#ifdef SYMLINE_PORT_GRID
-#define SL_GRID_REF symline_i_grid_row_c
-#else
-#define SL_GRID_REF symline_i_grid_row
-#endif
 
 /* Pixels x0 .. w-1 one block at a time. */
 static void blocks(const uint8_t *src, size_t stride, uint32_t level, uint32_t x0, uint32_t w,
@@ -71,7 +66,8 @@ static void lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
     }
 }
 
-void SL_GRID_REF(const symline_image *img, uint32_t level, uint32_t y, uint16_t *acc, uint8_t *out)
+void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t y, uint16_t *acc,
+                              uint8_t *out)
 {
     /* The width in a local: out (bytes) might alias the image's fields. */
     const uint32_t w = img->width >> level;
@@ -83,15 +79,3 @@ void SL_GRID_REF(const symline_image *img, uint32_t level, uint32_t y, uint16_t 
     }
     blocks(src, stride, level, 0u, w, out);
 }
-
-#ifdef SYMLINE_PORT_GRID
-void symline_i_grid_row(const symline_image *img, uint32_t level, uint32_t y, uint16_t *acc,
-                        uint8_t *out)
-{
-    const uint32_t w = img->width >> level;
-    const size_t stride = img->stride;
-    const uint8_t *src = img->data + ((size_t)y << level) * stride;
-    (void)acc;
-    blocks(src, stride, level, symline_i_grid_lanes(src, stride, level, w, out), w, out);
-}
-#endif

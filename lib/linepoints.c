@@ -22,9 +22,21 @@
 #include "linepoints.h"
 
 #include "extrema.h"
-#include "grid.h"
 #include "stagemark.h"
 #include "symmetry.h"
+
+/* The pass's grid rows (grid.c). A port's version (SYMLINE_PORT_GRID)
+ * replaces this call, which is then its reference. */
+#ifdef SYMLINE_PORT_GRID
+#define SL_GRID_ROW symline_i_grid_row_c
+#else
+#define SL_GRID_ROW symline_i_grid_row
+#endif
+void SL_GRID_ROW(const symline_image *img, const symline_i_pass *p, uint32_t y, uint16_t *acc,
+                 uint8_t *out)
+{
+    symline_i_grid_level_row(img, p->level, y, acc, out);
+}
 
 /* Rows of the horizontal-axis rings. */
 static uint32_t h_delta(const symline_i_pass *p)
@@ -101,9 +113,19 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 
 /* The byte-lane pre-filter below pays where the compiler has vector lanes for
  * it (16 bytes per instruction); on scalar cores (Cortex-M) it would cost about
- * what it saves, in code size too, so it is left out there. */
-#if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__)
+ * what it saves, in code size too, so it is left out there, unless a port has
+ * byte lanes for it (Cortex-M4/M7: SYMLINE_PORT_DROP_DIM_S, port/armv7em/). */
+#if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__) ||                           \
+    defined(SYMLINE_PORT_DROP_DIM_S)
 #define SL_ROW_PREFILTER 1
+#endif
+/* A port's version (SYMLINE_PORT_DROP_DIM_S: where the core has byte lanes of
+ * its own, linepoints.h) replaces it; this one is then the reference. */
+#ifdef SYMLINE_PORT_DROP_DIM_S
+#define SL_DROP_DIM_S_REF void symline_i_drop_dim_s_c
+#define drop_dim_s symline_i_drop_dim_s
+#else
+#define SL_DROP_DIM_S_REF SL_NOINLINE static void drop_dim_s
 #endif
 
 #ifdef SL_ROW_PREFILTER
@@ -115,8 +137,8 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
  * lanes, whole rows; A points stay. Limits above 255 are clamped, which only
  * keeps more points for the exact test.
  */
-SL_NOINLINE static void drop_dim_s(const symline_i_linefilter *f, const uint8_t *c,
-                                   const uint8_t *lo, const uint8_t *hi, uint32_t n, uint8_t *map)
+SL_DROP_DIM_S_REF(const symline_i_linefilter *f, const uint8_t *c, const uint8_t *lo,
+                  const uint8_t *hi, uint32_t n, uint8_t *map)
 {
     const uint8_t mg = (uint8_t)(f->min_gray < 255u ? f->min_gray : 255u);
     uint8_t sm = 255u, rm = 0u;
@@ -283,7 +305,7 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
                 const uint32_t need = along ? t : (t + m < h) ? t + m : h - 1u;
                 SL_STAGE(GRID);
                 while (produced <= need) {
-                    symline_i_grid_row(img, p->level, produced, acc,
+                    symline_i_grid_row(img, p, produced, acc,
                                        rp->gray + (size_t)(produced % rp->gray_rows) * w);
                     produced++;
                 }

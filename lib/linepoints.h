@@ -8,6 +8,7 @@
 #define SYMLINE_LIB_LINEPOINTS_H
 
 #include "common.h"
+#include "grid.h"
 #include "linefilter.h"
 #include "symline/detect.h"
 
@@ -22,6 +23,17 @@ typedef struct symline_i_pass {
     uint32_t lag;   /* longest accepted plateau: end - marked index <= lag (= m) */
     symline_i_linefilter filter;
 } symline_i_pass;
+
+#ifdef SYMLINE_PORT_DROP_DIM_S
+/* The row pre-filter of the line filter (linepoints.c: drops from map[0..n-1]
+ * the S points whose gray values c, lo, hi the filter's first tests reject),
+ * replaced by a port's version with the same output (SYMLINE_PORT_DROP_DIM_S,
+ * CMake option SYMLINE_SIMD); symline_i_drop_dim_s_c() is the reference. */
+void symline_i_drop_dim_s_c(const symline_i_linefilter *f, const uint8_t *c, const uint8_t *lo,
+                            const uint8_t *hi, uint32_t n, uint8_t *map);
+void symline_i_drop_dim_s(const symline_i_linefilter *f, const uint8_t *c, const uint8_t *lo,
+                          const uint8_t *hi, uint32_t n, uint8_t *map);
+#endif
 
 /* Workspace bytes of symline_i_collect() (row index excluded). */
 size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width);

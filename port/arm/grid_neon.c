@@ -4,7 +4,8 @@
  * intrinsics, selected at build time (CMake option SYMLINE_SIMD,
  * port/CMakeLists.txt) in place of the portable lane loops, with the same
  * output (tests/core/test_grid_simd.c compares them). Eight, then four grid
- * pixels per step; lib/grid.c sums the last three at most block by block.
+ * pixels per step, then the last three at most one block at a time. Other
+ * levels (0, above 5) take the reference.
  *
  * Why: every coarse pass reads the whole frame, so the cost is in the loads.
  * NEON adds neighbouring bytes into 16-bit lanes as it accumulates the rows
@@ -16,7 +17,7 @@
 #include <arm_neon.h>
 #include <string.h>
 
-#include "grid.h"
+#include "linepoints.h"
 
 /* Pair sums of nv vectors (16 nv columns from b) over s rows. */
 static inline __attribute__((always_inline)) void pair_sums(const uint8_t *b, size_t stride,
@@ -109,15 +110,30 @@ static uint32_t wide(const uint8_t *src, size_t stride, uint32_t level, uint32_t
     return w;
 }
 
-uint32_t symline_i_grid_lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
-                              uint8_t *out)
+void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
+                        uint16_t *acc, uint8_t *out)
 {
+    const uint32_t level = p->level, w = p->w;
+    const size_t stride = img->stride;
+    const uint8_t *src = img->data + ((size_t)y << level) * stride;
+    uint32_t x;
     switch (level) {
-    case 1u: return lanes(src, stride, 1u, w, out);
-    case 2u: return lanes(src, stride, 2u, w, out);
-    case 3u: return lanes(src, stride, 3u, w, out);
-    case 4u: return lanes(src, stride, 4u, w, out);
-    case 5u: return wide(src, stride, 5u, w, out);
-    default: return 0u;
+    case 1u: x = lanes(src, stride, 1u, w, out); break;
+    case 2u: x = lanes(src, stride, 2u, w, out); break;
+    case 3u: x = lanes(src, stride, 3u, w, out); break;
+    case 4u: x = lanes(src, stride, 4u, w, out); break;
+    case 5u: x = wide(src, stride, 5u, w, out); break;
+    default: symline_i_grid_row_c(img, p, y, acc, out); return;
+    }
+    for (; x < w; x++) { /* at most three blocks */
+        const uint32_t s = 1u << level, shift = 2u * level;
+        const uint8_t *b = src + (size_t)x * s;
+        uint32_t sum = (1u << shift) >> 1, d, i;
+        for (d = 0; d < s; d++, b += stride) {
+            for (i = 0; i < s; i++) {
+                sum += b[i];
+            }
+        }
+        out[x] = (uint8_t)(sum >> shift);
     }
 }

@@ -17,6 +17,7 @@
 
 #include "fwdata.h"
 #include "fwtest.h"
+#include "test_port.h"
 
 unsigned fw_checks, fw_failures;
 
@@ -138,5 +139,6 @@ int main(void)
         check_case(&fw_golden_cases[i], ws);
     }
     check_errors(ws);
+    fw_port_checks();
     return fw_test_end("symline target tests");
 }

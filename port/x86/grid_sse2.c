@@ -4,7 +4,8 @@
  * baseline), selected at build time (CMake option SYMLINE_SIMD,
  * port/CMakeLists.txt) in place of the portable lane loops, with the same
  * output (tests/core/test_grid_simd.c compares them). Sixteen, eight, then
- * four grid pixels per step, then single blocks: the whole row.
+ * four grid pixels per step, then single blocks: the whole row. Other
+ * levels (0, above 5) take the reference.
  *
  * Why: every coarse pass reads the whole frame, so the cost is in the loads.
  * Each 16-bit lane of a row vector is lo + 256 hi of two neighbouring
@@ -19,7 +20,7 @@
 #include <emmintrin.h>
 #include <string.h>
 
-#include "grid.h"
+#include "linepoints.h"
 
 static inline __m128i load16(const uint8_t *p)
 {
@@ -217,28 +218,27 @@ static uint32_t singles(const uint8_t *src, size_t stride, uint32_t level, uint3
     return w;
 }
 
-uint32_t symline_i_grid_lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
-                              uint8_t *out)
+void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
+                        uint16_t *acc, uint8_t *out)
 {
+    const uint32_t level = p->level, w = p->w;
+    const size_t stride = img->stride;
+    const uint8_t *src = img->data + ((size_t)y << level) * stride;
     uint32_t x;
     if (level == 1u) {
         for (x = level1(src, stride, w, out); x < w; x++) { /* at most three */
             const uint8_t *b = src + (size_t)x * 2u;
             out[x] = (uint8_t)(((uint32_t)b[0] + b[1] + b[stride] + b[stride + 1u] + 2u) >> 2);
         }
-        return w;
+    } else if (level == 2u) {
+        (void)singles(src, stride, 2u, level2(src, stride, w, out), w, out);
+    } else if (level == 3u) {
+        (void)singles(src, stride, 3u, level3(src, stride, w, out), w, out);
+    } else if (level == 4u) {
+        (void)singles(src, stride, 4u, level4(src, stride, w, out), w, out);
+    } else if (level == 5u) {
+        (void)singles(src, stride, 5u, 0u, w, out);
+    } else {
+        symline_i_grid_row_c(img, p, y, acc, out);
     }
-    if (level == 2u) {
-        return singles(src, stride, 2u, level2(src, stride, w, out), w, out);
-    }
-    if (level == 3u) {
-        return singles(src, stride, 3u, level3(src, stride, w, out), w, out);
-    }
-    if (level == 4u) {
-        return singles(src, stride, 4u, level4(src, stride, w, out), w, out);
-    }
-    if (level == 5u) {
-        return singles(src, stride, 5u, 0u, w, out);
-    }
-    return 0u;
 }

@@ -1,0 +1,268 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * The optional SIMD versions of hot loops in port/ (on Cortex-M4/M7, the
+ * ARMv7E-M DSP versions of port/armv7em/) against the portable references
+ * of lib/, on the target: the same output for random and extreme gray
+ * values, every alignment of the rows, radii and widths around the blocks
+ * of the SIMD loops. Built into the target tests (test_core.c); without port
+ * versions in the build it checks nothing and says so.
+ */
+#include <stdint.h>
+#include <string.h>
+
+#include "fwtest.h"
+#include "test_port.h"
+
+#ifdef SYMLINE_PORT_ENERGY
+#include "symmetry.h"
+#endif
+#ifdef SYMLINE_PORT_GRID
+#include "linepoints.h"
+#endif
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+#include "extrema.h"
+#endif
+#if defined(SYMLINE_PORT_DROP_DIM_S) || defined(SYMLINE_PORT_FIND_S)
+#include "linepoints.h"
+#endif
+
+#if defined(SYMLINE_PORT_ENERGY) || defined(SYMLINE_PORT_GRID) ||                                 \
+    defined(SYMLINE_PORT_EXTREMA_KINDS) || defined(SYMLINE_PORT_DROP_DIM_S) ||                     \
+    defined(SYMLINE_PORT_FIND_S)
+static uint32_t rng_state = 12345u;
+
+static uint8_t rnd8(void)
+{
+    rng_state = rng_state * 1664525u + 1013904223u;
+    return (uint8_t)(rng_state >> 24);
+}
+
+/* Random gray values; every fourth fill only 0 and 255 (largest differences). */
+static void fill_gray(uint8_t *g, uint32_t n, unsigned round)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        const uint8_t v = rnd8();
+        g[i] = (round % 4u == 3u) ? (uint8_t)((v & 1u) ? 255u : 0u) : v;
+    }
+}
+#endif
+
+#ifdef SYMLINE_PORT_ENERGY
+#define PT_ROW 400u
+static uint8_t pt_gray[PT_ROW + 8u];
+static uint8_t pt_rows[2u * 130u + 1u][72u];
+static uint32_t pt_e1[PT_ROW], pt_e2[PT_ROW];
+
+static void energy_checks(void)
+{
+    static const uint32_t radii[] = {1u, 2u, 3u, 4u, 5u, 7u, 10u, 32u, 128u, 129u, 255u};
+    static const uint32_t lens[] = {1u, 2u, 3u, 5u, 7u, 8u, 9u, 15u, 16u, 17u, 22u, 23u,
+                                    24u, 25u, 40u, 67u, 161u, 320u, 400u};
+    unsigned r, l, off, round = 0u;
+    const uint8_t *rows[2u * 130u + 1u];
+    for (r = 0; r < sizeof radii / sizeof radii[0]; r++) {
+        const uint32_t m = radii[r];
+        for (l = 0; l < sizeof lens / sizeof lens[0]; l++) {
+            const uint32_t n = lens[l];
+            for (off = 0; off < 4u; off++, round++) {
+                uint32_t i, j;
+                fill_gray(pt_gray, PT_ROW + 8u, round);
+                symline_i_energy_row(pt_gray + off, n, m, pt_e1);
+                symline_i_energy_row_c(pt_gray + off, n, m, pt_e2);
+                FW_CHECK(memcmp(pt_e1, pt_e2, n * sizeof(uint32_t)) == 0,
+                         "energy row m=%lu n=%lu offset %u", (unsigned long)m, (unsigned long)n,
+                         off);
+                if (m > 130u || n > 64u) {
+                    continue;
+                }
+                /* Across: a window of 2m+1 rows, the first `off` rows and,
+                 * every other round, the last ones outside the image. */
+                for (j = 0; j <= 2u * m; j++) {
+                    fill_gray(pt_rows[j], 72u, round);
+                    rows[j] = pt_rows[j] + off;
+                }
+                for (i = 0; i < off && i < m; i++) {
+                    rows[i] = NULL;
+                    if (round % 2u == 1u) {
+                        rows[2u * m - i] = NULL;
+                    }
+                }
+                symline_i_energy_across(rows, m, n, pt_e1);
+                symline_i_energy_across_c(rows, m, n, pt_e2);
+                FW_CHECK(memcmp(pt_e1, pt_e2, n * sizeof(uint32_t)) == 0,
+                         "energy across m=%lu width=%lu offset %u", (unsigned long)m,
+                         (unsigned long)n, off);
+            }
+        }
+    }
+}
+#endif
+
+#ifdef SYMLINE_PORT_GRID
+#define PT_W 83u
+#define PT_H 70u
+#define PT_STRIDE 88u
+static uint8_t pt_img[PT_STRIDE * PT_H + 4u];
+static uint16_t pt_acc[PT_W];
+static uint8_t pt_g1[PT_W], pt_g2[PT_W];
+
+static void grid_checks(void)
+{
+    unsigned level, round, off;
+    for (round = 0; round < 8u; round++) {
+        for (off = 0; off < 4u; off++) {
+            for (level = 1u; level <= 4u; level++) {
+                /* widths cut the rows at every remainder of the 4-output steps */
+                const uint32_t width = PT_W - off - 3u * (round % 4u);
+                const symline_image img = {width, PT_H, PT_STRIDE, pt_img + off};
+                symline_i_pass p;
+                uint32_t y;
+                memset(&p, 0, sizeof p);
+                p.level = level;
+                p.w = width >> level;
+                p.h = PT_H >> level;
+                fill_gray(pt_img, sizeof pt_img, round);
+                for (y = 0; y < p.h; y++) {
+                    symline_i_grid_row(&img, &p, y, pt_acc, pt_g1);
+                    symline_i_grid_row_c(&img, &p, y, pt_acc, pt_g2);
+                    FW_CHECK(memcmp(pt_g1, pt_g2, p.w) == 0, "grid row %lu level %u width %lu",
+                             (unsigned long)y, level, (unsigned long)width);
+                }
+            }
+        }
+    }
+}
+#endif
+
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+#define PT_N 150u
+static uint32_t pt_up[PT_N], pt_mid[PT_N + 2u], pt_dn[PT_N];
+static uint8_t pt_k1[PT_N], pt_k2[PT_N];
+
+/* Energies from a few values only (plateaus everywhere) or from the whole
+ * range below 2^31 (differences of either sign up to 2^31 - 1). */
+static uint32_t rnd_energy(unsigned round)
+{
+    uint32_t v = (uint32_t)rnd8() << 23 | (uint32_t)rnd8() << 15 | (uint32_t)rnd8() << 7 | rnd8();
+    v &= 0x7fffffffu;
+    return (round % 3u == 0u) ? v % 3u : (round % 3u == 1u) ? v % 40u : v;
+}
+
+static void kinds_checks(void)
+{
+    unsigned round;
+    for (round = 0; round < 60u; round++) {
+        uint32_t n, i;
+        for (i = 0; i < PT_N; i++) {
+            pt_up[i] = rnd_energy(round);
+            pt_dn[i] = rnd_energy(round);
+            pt_mid[i] = rnd_energy(round);
+        }
+        pt_mid[PT_N] = rnd_energy(round);
+        pt_mid[PT_N + 1u] = rnd_energy(round);
+        for (n = 1u; n <= PT_N; n += 1u + n / 8u) {
+            const uint32_t f1 = symline_i_extrema_kinds(pt_up, pt_mid, pt_dn, n, pt_k1);
+            const uint32_t f2 = symline_i_extrema_kinds_c(pt_up, pt_mid, pt_dn, n, pt_k2);
+            FW_CHECK(memcmp(pt_k1, pt_k2, n) == 0 && (f1 != 0u) == (f2 != 0u),
+                     "extrema kinds of three rows, n=%lu round %u", (unsigned long)n, round);
+            /* along a row: the row shifted by one entry either way */
+            {
+                const uint32_t g1 =
+                    symline_i_extrema_kinds(pt_mid, pt_mid + 1, pt_mid + 2, n, pt_k1);
+                const uint32_t g2 =
+                    symline_i_extrema_kinds_c(pt_mid, pt_mid + 1, pt_mid + 2, n, pt_k2);
+                FW_CHECK(memcmp(pt_k1, pt_k2, n) == 0 && (g1 != 0u) == (g2 != 0u),
+                         "extrema kinds along a row, n=%lu round %u", (unsigned long)n, round);
+            }
+        }
+    }
+}
+#endif
+
+#if defined(SYMLINE_PORT_DROP_DIM_S) || defined(SYMLINE_PORT_FIND_S)
+#define PT_M 80u
+static uint8_t pt_c[PT_M + 4u], pt_lo[PT_M + 4u], pt_hi[PT_M + 4u];
+static uint8_t pt_m0[PT_M + 4u], pt_m1[PT_M + 4u], pt_m2[PT_M + 4u];
+
+/* A map row: S points with probability s_in_8 / 8, else A or NONE. */
+static void fill_map(uint8_t *map, uint32_t n, unsigned s_in_8)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        const uint8_t v = rnd8();
+        map[i] = (uint8_t)((v & 7u) < s_in_8 ? SYMLINE_MAP_S
+                           : (v & 8u)        ? SYMLINE_MAP_A
+                                             : SYMLINE_MAP_NONE);
+    }
+}
+#endif
+
+#ifdef SYMLINE_PORT_DROP_DIM_S
+static void drop_checks(void)
+{
+    static const uint32_t limits[] = {0u, 1u, 2u, 17u, 100u, 200u, 254u, 255u, 256u, 1000u};
+    unsigned round;
+    for (round = 0; round < 400u; round++) {
+        symline_i_linefilter f;
+        const uint32_t n = round % 70u, off = round % 4u;
+        memset(&f, 0, sizeof f);
+        f.kind = (round % 5u == 0u) ? SYMLINE_FILTER_PAPER : SYMLINE_FILTER_CONTRAST;
+        f.min_gray = limits[rnd8() % 10u];
+        f.side_max = limits[rnd8() % 10u];
+        f.ridge_min = limits[rnd8() % 10u];
+        fill_gray(pt_c, PT_M + 4u, round);
+        fill_gray(pt_lo, PT_M + 4u, round / 2u);
+        fill_gray(pt_hi, PT_M + 4u, round / 3u);
+        fill_map(pt_m1, PT_M + 4u, 1u + round % 8u);
+        memcpy(pt_m2, pt_m1, sizeof pt_m1);
+        symline_i_drop_dim_s(&f, pt_c + off, pt_lo, pt_hi + off, n, pt_m1 + off);
+        symline_i_drop_dim_s_c(&f, pt_c + off, pt_lo, pt_hi + off, n, pt_m2 + off);
+        FW_CHECK(memcmp(pt_m1, pt_m2, sizeof pt_m1) == 0, "row pre-filter n=%lu round %u",
+                 (unsigned long)n, round);
+    }
+}
+#endif
+
+#ifdef SYMLINE_PORT_FIND_S
+static void find_s_checks(void)
+{
+    unsigned round;
+    for (round = 0; round < 64u; round++) {
+        uint32_t n, x;
+        fill_map(pt_m0, PT_M + 4u, round % 4u); /* S points dense to none */
+        if (round % 16u == 15u) {
+            pt_m0[PT_M - 1u] = SYMLINE_MAP_S; /* one at the very end */
+        }
+        for (n = 0; n <= PT_M; n += 1u + round % 7u) {
+            for (x = 0; x <= n; x++) {
+                FW_CHECK(symline_i_find_s(pt_m0 + round % 4u, x, n) ==
+                             symline_i_find_s_c(pt_m0 + round % 4u, x, n),
+                         "find S from %lu of %lu, round %u", (unsigned long)x, (unsigned long)n,
+                         round);
+            }
+        }
+    }
+}
+#endif
+
+void fw_port_checks(void)
+{
+    const unsigned before = fw_checks;
+#ifdef SYMLINE_PORT_ENERGY
+    energy_checks();
+#endif
+#ifdef SYMLINE_PORT_GRID
+    grid_checks();
+#endif
+#ifdef SYMLINE_PORT_EXTREMA_KINDS
+    kinds_checks();
+#endif
+#ifdef SYMLINE_PORT_DROP_DIM_S
+    drop_checks();
+#endif
+#ifdef SYMLINE_PORT_FIND_S
+    find_s_checks();
+#endif
+    printf("port versions against the portable references: %u checks\n", fw_checks - before);
+}
