@@ -44,19 +44,9 @@ void symline_i_pt_off(const symline_point *q, uint32_t level, const int32_t *o, 
     *y = symline_i_pt_q8y(q, level) - (o != NULL ? o[1] : 0);
 }
 
-/* Makes grid point q at `level` a full-resolution point: the nearest pixel
- * and the remainder, 1/128 px in -64..63 (the public symline_point). */
+#if !SL_FOR_SPEED /* fixed.h: inline where the build optimises for speed */
 void symline_i_pt_to_full(symline_point *q, uint32_t level)
 {
-    int32_t x8, y8, x7, y7, x, y;
-    symline_i_pt_off(q, level, NULL, &x8, &y8);
-    /* Q7 full-resolution coordinates: half the Q8 ones (always even). */
-    x7 = x8 >> 1; /* exact: x8, y8 are even */
-    y7 = y8 >> 1;
-    x = (x7 + 64) >> 7;
-    y = (y7 + 64) >> 7;
-    q->x = (uint16_t)x;
-    q->y = (uint16_t)y;
-    q->fx = (int8_t)(x7 - x * 128);
-    q->fy = (int8_t)(y7 - y * 128);
+    symline_i_pt_to_full_here(q, level);
 }
+#endif

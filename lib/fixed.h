@@ -58,8 +58,33 @@ void symline_i_pt_off(const symline_point *q, uint32_t level, const int32_t *o, 
                       int32_t *y);
 
 /* Makes grid point q at `level` a full-resolution point: the nearest pixel
- * and the remainder, 1/128 px in -64..63 (the public symline_point). */
+ * and the remainder, 1/128 px in -64..63 (the public symline_point). What
+ * the stages call: inline where the build optimises for speed (every kept
+ * point), else the one copy in fixed.c. */
+static inline void symline_i_pt_to_full_here(symline_point *q, uint32_t level)
+{
+    int32_t x8, y8, x7, y7, x, y;
+    if (SL_FOR_SPEED) {
+        x8 = symline_i_pt_q8x(q, level);
+        y8 = symline_i_pt_q8y(q, level);
+    } else {
+        symline_i_pt_off(q, level, NULL, &x8, &y8);
+    }
+    /* Q7 full-resolution coordinates: half the Q8 ones (always even). */
+    x7 = x8 >> 1;
+    y7 = y8 >> 1;
+    x = (x7 + 64) >> 7;
+    y = (y7 + 64) >> 7;
+    q->x = (uint16_t)x;
+    q->y = (uint16_t)y;
+    q->fx = (int8_t)(x7 - x * 128);
+    q->fy = (int8_t)(y7 - y * 128);
+}
+#if SL_FOR_SPEED
+#define symline_i_pt_to_full symline_i_pt_to_full_here
+#else
 void symline_i_pt_to_full(symline_point *q, uint32_t level);
+#endif
 
 /* floor(sqrt(v)), bit by bit (no multiply, no division). */
 uint64_t symline_i_isqrt64(uint64_t v);

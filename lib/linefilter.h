@@ -66,7 +66,9 @@ static inline bool symline_i_linefilter_gray(const symline_i_linefilter *f, uint
     if (c <= side || side > f->side_max) {
         return false;
     }
-    need = (c * f->ridge_pct + 99u) / 100u;
+    /* The ridge percentage is 0 by default: no product and division then (to
+     * save time). */
+    need = (SL_FOR_SPEED && f->ridge_pct == 0u) ? 0u : (c * f->ridge_pct + 99u) / 100u;
     if (need < f->ridge_min) {
         need = f->ridge_min;
     }
@@ -123,6 +125,71 @@ uint32_t symline_i_find_s(const uint8_t *map, uint32_t x, uint32_t n);
 #else
 #define symline_i_find_s symline_i_find_s_c
 #define SL_NEXT_S(map, x, n) ((x) + 1u)
+#endif
+
+/*
+ * A byte test that rejects most S points before the exact one: the gray
+ * value c of a line point is at least min_gray and, for the contrast filter,
+ * stands ridge_min above the brighter side max(lo, hi). In bytes, saturating
+ * at 255, it keeps every point symline_i_linefilter_gray() keeps (and some
+ * it drops: the exact test follows). For the paper's filter give lo = hi = c
+ * (ridge_min is 0 then): only the gray value counts.
+ */
+typedef struct symline_i_prefilter {
+    uint8_t min_gray;  /* c >= min_gray */
+    uint8_t ridge_min; /* c >= max(lo, hi) + ridge_min, the sum clamped to 255 */
+} symline_i_prefilter;
+
+static inline void symline_i_prefilter_setup(const symline_i_linefilter *f, symline_i_prefilter *pf)
+{
+    pf->min_gray = (uint8_t)(f->min_gray < 255u ? f->min_gray : 255u);
+    pf->ridge_min = 0u;
+    if (f->kind != SYMLINE_FILTER_PAPER) { /* a ridge of 0 fails the exact test too */
+        pf->ridge_min = (uint8_t)(f->ridge_min < 1u     ? 1u
+                                  : f->ridge_min < 255u ? f->ridge_min
+                                                        : 255u);
+    }
+}
+
+/* Most indices one call of symline_i_line_s() reports. */
+#define SL_LINE_S_MAX 32u
+
+/*
+ * The S points of map[x .. n-1] whose gray values c[i], lo[i], hi[i] pass the
+ * byte test of pf, in order: their indices to out[0 ..], at most
+ * SL_LINE_S_MAX; returns how many. *next: where to go on, the entry after
+ * the last one reported when out is full, else n. One pass over the row
+ * finds the few candidates of the exact filter (most S points are dim carpet
+ * texture). symline_i_line_s_c() is the portable reference;
+ * symline_i_line_s() is a SIMD version from port/ (SYMLINE_PORT_LINE_S, CMake
+ * option SYMLINE_SIMD) that tests 16 entries per instruction, with the same
+ * result, and the row decision uses it only where it is built: on scalar
+ * cores a loop over the entries costs the same without it.
+ */
+static inline uint32_t symline_i_line_s_c(const symline_i_prefilter *pf, const uint8_t *map,
+                                          const uint8_t *c, const uint8_t *lo, const uint8_t *hi,
+                                          uint32_t x, uint32_t n, uint16_t *out, uint32_t *next)
+{
+    uint32_t k = 0u;
+    for (; x < n; x++) {
+        const uint32_t side = lo[x] > hi[x] ? lo[x] : hi[x];
+        /* c >= min(side + ridge_min, 255): the sum or the brightest gray */
+        const bool ridge = c[x] >= side + pf->ridge_min || c[x] == 255u;
+        if (map[x] == SYMLINE_MAP_S && c[x] >= pf->min_gray && ridge) {
+            out[k++] = (uint16_t)x;
+            if (k == SL_LINE_S_MAX) {
+                *next = x + 1u;
+                return k;
+            }
+        }
+    }
+    *next = n;
+    return k;
+}
+#ifdef SYMLINE_PORT_LINE_S
+uint32_t symline_i_line_s(const symline_i_prefilter *pf, const uint8_t *map, const uint8_t *c,
+                          const uint8_t *lo, const uint8_t *hi, uint32_t x, uint32_t n,
+                          uint16_t *out, uint32_t *next);
 #endif
 
 /*

@@ -114,9 +114,11 @@ static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x
 /* The byte-lane pre-filter below pays where the compiler has vector lanes for
  * it (16 bytes per instruction); on scalar cores (Cortex-M) it would cost about
  * what it saves, in code size too, so it is left out there, unless a port has
- * byte lanes for it (Cortex-M4/M7: SYMLINE_PORT_DROP_DIM_S, port/armv7em/). */
-#if defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__) ||                           \
-    defined(SYMLINE_PORT_DROP_DIM_S)
+ * byte lanes for it (Cortex-M4/M7: SYMLINE_PORT_DROP_DIM_S, port/armv7em/).
+ * Where a port searches the row with the byte test itself
+ * (SYMLINE_PORT_LINE_S: x86-64, AArch64), the row decision uses that instead. */
+#if !defined(SYMLINE_PORT_LINE_S) && (defined(__SSE2__) || defined(__ARM_NEON) ||                  \
+                                      defined(__ARM_NEON__) || defined(SYMLINE_PORT_DROP_DIM_S))
 #define SL_ROW_PREFILTER 1
 #endif
 /* A port's version (SYMLINE_PORT_DROP_DIM_S: where the core has byte lanes of
@@ -172,6 +174,43 @@ static uint8_t *ring_map(const hring *r, uint32_t y)
     return r->cd.map + (size_t)(y % r->cd.ring) * r->p->w;
 }
 
+/* What the decision of one row reads (built in decide_row()). */
+typedef struct row_view {
+    uint8_t *map; /* written only by the pre-filter (SL_ROW_PREFILTER) */
+    const uint8_t *c, *lo, *hi;
+    const uint8_t *amap; /* the A points near: the map row, or the map ring */
+    uint32_t w, dk;      /* dk: across the line along the row (vertical axis), else 0 */
+    uint32_t aring, alen;
+    size_t astep;
+} row_view;
+
+/* S point x of row y, its sides' gray values lo and hi: added to the points
+ * when the line filter takes it. */
+static SL_ALWAYS_INLINE void decide_s(const symline_i_linefilter *f, const row_view *v, uint32_t x,
+                                      uint32_t y, uint32_t lo, uint32_t hi, bool along,
+                                      symline_point *pts, uint32_t cap, uint32_t *n,
+                                      uint32_t *dropped)
+{
+    if (!symline_i_linefilter_gray(f, v->c[x], lo, hi)) {
+        return;
+    }
+    if (f->a_distance != 0u && !symline_i_linefilter_a_near(f, v->amap + (along ? 0u : x), v->aring,
+                                                            v->astep, v->alen, along ? x : y)) {
+        return;
+    }
+    push_point(pts, cap, n, x, y, dropped);
+}
+
+/* decide_s() where the sides may lie beyond the row's ends (clamped). */
+static SL_ALWAYS_INLINE void decide_s_edge(const symline_i_linefilter *f, const row_view *v,
+                                           uint32_t x, uint32_t y, bool along, symline_point *pts,
+                                           uint32_t cap, uint32_t *n, uint32_t *dropped)
+{
+    const uint32_t w = v->w, dk = v->dk;
+    decide_s(f, v, x, y, v->lo[x >= dk ? x - dk : 0u], v->hi[x + dk < w ? x + dk : w - 1u], along,
+             pts, cap, n, dropped);
+}
+
 /* The line points of grid row y from its map row: S points whose gray
  * values pass the line filter, with an A point near when it asks for one.
  * Across the line: k entries either side along a row (vertical axis),
@@ -181,37 +220,63 @@ static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_poin
                                         uint32_t *dropped, bool along)
 {
     const symline_i_pass *p = r->p;
+    /* A copy in locals: the stores of points cannot change it (to save time). */
+    const symline_i_linefilter fcopy = p->filter;
+    const symline_i_linefilter *f = SL_FOR_SPEED ? &fcopy : &p->filter;
     const uint32_t w = p->w;
     const uint32_t dk = along ? p->k : 0u, ky = along ? 0u : p->k;
-    uint8_t *map = ring_map(r, y);
-    const uint8_t *c = ring_row(r, y);
-    const uint8_t *lo = ring_row(r, y >= ky ? y - ky : 0u);
-    const uint8_t *hi = ring_row(r, y + ky < p->h ? y + ky : p->h - 1u);
-    /* The A points near: along the map row, or down the map ring's column x. */
-    const uint8_t *amap = along ? map : r->cd.map;
-    const uint32_t aring = along ? w : r->cd.ring, alen = along ? w : p->h;
-    const size_t astep = along ? 1u : w;
-    uint32_t x;
+    uint32_t x = 0u;
+    row_view v;
+    v.map = ring_map(r, y);
+    v.c = ring_row(r, y);
+    v.lo = ring_row(r, y >= ky ? y - ky : 0u);
+    v.hi = ring_row(r, y + ky < p->h ? y + ky : p->h - 1u);
+    v.amap = along ? v.map : r->cd.map;
+    v.w = w;
+    v.dk = dk;
+    v.aring = along ? w : r->cd.ring;
+    v.alen = along ? w : p->h;
+    v.astep = along ? 1u : w;
     row_start[y] = *n;
-#ifdef SL_ROW_PREFILTER
+#ifdef SYMLINE_PORT_LINE_S
+    if (w > 2u * dk) {
+        /* The interior, where both sides lie in the row (along a row; the
+         * whole row down columns): one pass of the byte test over it gives
+         * the few S points the exact filter has to look at. */
+        const uint32_t len = w - 2u * dk;
+        const bool paper = f->kind == SYMLINE_FILTER_PAPER; /* gray only */
+        const uint8_t *ic = v.c + dk, *ilo = paper ? ic : v.lo, *ihi = paper ? ic : v.hi + 2u * dk;
+        symline_i_prefilter pf;
+        uint16_t cand[SL_LINE_S_MAX];
+        uint32_t at = 0u, i;
+        symline_i_prefilter_setup(f, &pf);
+        for (; x < dk; x++) { /* the left border */
+            if (v.map[x] == SYMLINE_MAP_S) {
+                decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
+            }
+        }
+        while (at < len) {
+            const uint32_t k = symline_i_line_s(&pf, v.map + dk, ic, ilo, ihi, at, len, cand, &at);
+            for (i = 0; i < k; i++) {
+                const uint32_t j = cand[i];
+                decide_s(f, &v, dk + j, y, v.lo[j], v.hi[j + 2u * dk], along, pts, cap, n, dropped);
+            }
+        }
+        for (x = w - dk; x < w; x++) { /* the right border */
+            if (v.map[x] == SYMLINE_MAP_S) {
+                decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
+            }
+        }
+    }
+#elif defined(SL_ROW_PREFILTER)
     if (w > 2u * dk) { /* along a row: the interior, where both sides lie in the row */
-        drop_dim_s(&p->filter, c + dk, lo, hi + (size_t)2u * dk, w - 2u * dk, map + dk);
+        drop_dim_s(f, v.c + dk, v.lo, v.hi + (size_t)2u * dk, w - 2u * dk, v.map + dk);
     }
 #endif
-    for (x = 0; x < w; x = SL_NEXT_S(map, x, w)) {
-        if (map[x] != SYMLINE_MAP_S) {
-            continue;
+    for (; x < w; x = SL_NEXT_S(v.map, x, w)) {
+        if (v.map[x] == SYMLINE_MAP_S) {
+            decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
         }
-        if (!symline_i_linefilter_gray(&p->filter, c[x], lo[x >= dk ? x - dk : 0u],
-                                       hi[x + dk < w ? x + dk : w - 1u])) {
-            continue;
-        }
-        if (p->filter.a_distance != 0u &&
-            !symline_i_linefilter_a_near(&p->filter, amap + (along ? 0u : x), aring, astep, alen,
-                                         along ? x : y)) {
-            continue;
-        }
-        push_point(pts, cap, n, x, y, dropped);
     }
 }
 

@@ -33,6 +33,15 @@ static void end_of(const symline_segment *a, const symline_segment *b, uint32_t 
     *y = (i & 1u) ? s->y1 : s->y0;
 }
 
+/* True when the spans a0..a1 and b0..b1 (either order) are more than gap
+ * apart (differences of ends within 2^25 Q8 of the frame fit 32 bits). */
+static bool apart(int32_t a0, int32_t a1, int32_t b0, int32_t b1, int32_t gap)
+{
+    const int32_t alo = a0 < a1 ? a0 : a1, ahi = a0 < a1 ? a1 : a0;
+    const int32_t blo = b0 < b1 ? b0 : b1, bhi = b0 < b1 ? b1 : b0;
+    return blo - ahi > gap || alo - bhi > gap;
+}
+
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece) as j's. */
 SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b,
@@ -92,13 +101,29 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     return true;
 }
 
+/* A slot whose segment was absorbed (kind is a symline_kind otherwise); the
+ * slots are compacted when the merge is done, so that a slot keeps its number
+ * in the grid of ends meanwhile. */
+#define SL_GONE 0xFFu
+/* A curve found not joinable (below): its points and chord do not change
+ * while it joins nothing, so it stays so; a curve again when the merge is done. */
+#define SL_STIFF 0xFEu
+
 /* A line may join; so may a piece taken for a curve whose points (p),
  * smoothed, stay within half the curve threshold of its chord: a straight
- * piece whose ridge jitters on the turf, not an arc of the circle. */
-static bool joinable(const symline_segment *s, const symline_point *p, uint32_t curve_q8)
+ * piece whose ridge jitters on the turf, not an arc of the circle. A curve
+ * is asked once (SL_STIFF). */
+static bool joinable(symline_segment *s, const symline_point *p, uint32_t curve_q8)
 {
-    return s->kind == SYMLINE_KIND_LINE ||
-           symline_i_smooth_dev(p, s->count, 0u, s) <= curve_q8 / 2u;
+    if (s->kind == SYMLINE_KIND_LINE) {
+        return true;
+    }
+    if (s->kind == SYMLINE_KIND_CURVE &&
+        symline_i_smooth_dev(p, s->count, 0u, s) <= curve_q8 / 2u) {
+        return true;
+    }
+    s->kind = SL_STIFF;
+    return false;
 }
 
 /* Byte by byte: a struct assignment or memcpy may become a libc call. */
@@ -116,11 +141,9 @@ static void copy_points(symline_point *d, const symline_point *s, uint32_t n)
     copy_bytes(d, s, (size_t)n * sizeof(symline_point));
 }
 
-/* A slot whose segment was absorbed (kind is a symline_kind otherwise); the
- * slots are compacted when the merge is done, so that a slot keeps its number
- * in the grid of ends meanwhile. */
-#define SL_GONE 0xFFu
 #define SL_NO_NODE 0xFFFFFFFFu
+/* Later pieces from which on the grid of ends is walked (join_first()). */
+#define SL_MERGE_WALK_MIN 64u
 
 /*
  * The merge's state, and what makes it near-linear without changing a
@@ -195,10 +218,10 @@ SL_NOINLINE static uint32_t joined_dev(const merger *m, const symline_segment *a
     for (k = 0; k < 2u; k++) {
         const symline_point *p = k ? m->r->points + b->first : m->ap;
         const uint32_t n = k ? b->count : a->count;
-        const uint32_t dk = symline_i_max_dev(p, n, 0u, j);
-        const uint32_t sk = symline_i_smooth_dev(p, n, 0u, j);
-        d = dk > d ? dk : d;
-        sm = sk > sm ? sk : sm;
+        uint32_t dev[2]; /* max_dev, smoothed */
+        symline_i_chord_devs(p, n, 0u, j, SL_SMOOTH_WIN, dev);
+        d = dev[0] > d ? dev[0] : d;
+        sm = dev[1] > sm ? dev[1] : sm;
     }
     return symline_i_is_curve(j, sm, m->curve_q8 + symline_i_block_half_q8(level)) ? SL_NO_JOIN : d;
 }
@@ -208,12 +231,16 @@ SL_NOINLINE static uint32_t joined_dev(const merger *m, const symline_segment *a
 static uint32_t pair_dev(const merger *m, uint32_t i, uint32_t j, symline_segment *e)
 {
     const symline_segment *a = &m->r->segments[i];
-    const symline_segment *b = &m->r->segments[j];
+    symline_segment *b = &m->r->segments[j];
     const uint32_t level = a->level > b->level ? a->level : b->level;
     const symline_point *bp = m->r->points + b->first;
-    /* The cheap geometric test first; both are pure, so the order changes
-     * nothing but the cost. */
-    if (b->kind == SL_GONE ||
+    /* The cheap geometric tests first, where speed counts the pieces' boxes
+     * before them (no product: ends further apart in x or in y than the
+     * gap fail the gap); all depend on the two pieces alone (joinable()
+     * only keeps its answer), so the order changes nothing but the cost. */
+    if (b->kind == SL_GONE || b->kind == SL_STIFF ||
+        (SL_FOR_SPEED && (apart(a->x0, a->x1, b->x0, b->x1, (int32_t)m->gap_q8) ||
+                          apart(a->y0, a->y1, b->y0, b->y1, (int32_t)m->gap_q8))) ||
         !mergeable(a, b, m->gap_q8, m->dev_q8 + symline_i_block_half_q8(level), e) ||
         !joinable(b, bp, m->curve_q8)) {
         return SL_NO_JOIN;
@@ -255,20 +282,31 @@ static bool join_first(merger *m, uint32_t i)
 {
     symline_segment e; /* the joined ends */
     uint32_t j = i + 1u;
-    if (m->cols != 0u) {
+    /* The grid's walk costs as much as testing some dozens of pieces: only
+     * for more later pieces than that (either way the same piece joins). */
+    if (m->cols != 0u && m->n - i > SL_MERGE_WALK_MIN) {
         const int32_t nc = candidates(m, &m->r->segments[i]);
         if (nc >= 0) {
             uint32_t best = SL_NO_NODE, k;
             /* The first in slot order that joins is the smallest candidate
-             * that does (the tests are pure); failing that, the pieces not
-             * in the grid. */
+             * that does (the tests depend on the two pieces alone); failing
+             * that, the pieces not in the grid. */
             for (k = 0; k < (uint32_t)nc; k++) {
                 const uint32_t c = m->cand[k];
-                if (c > i && c < best && pair_dev(m, i, c, &e) != SL_NO_JOIN) {
-                    best = c;
+                symline_segment t;
+                if (c > i && c < best) {
+                    t.max_dev = pair_dev(m, i, c, &t);
+                    if (t.max_dev != SL_NO_JOIN) {
+                        best = c;
+                        copy_bytes(&e, &t, sizeof(e));
+                    }
                 }
             }
-            j = best != SL_NO_NODE ? best : (m->indexed > j ? m->indexed : j);
+            if (best != SL_NO_NODE) {
+                absorb(m, i, best, &e);
+                return true;
+            }
+            j = m->indexed > j ? m->indexed : j;
         }
     }
     for (; j < m->n; j++) {
@@ -379,6 +417,9 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
         }
     }
     for (i = 0, w = 0; i < m.n; i++) {
+        if (r->segments[i].kind == SL_STIFF) {
+            r->segments[i].kind = SYMLINE_KIND_CURVE;
+        }
         if (r->segments[i].kind != SL_GONE) {
             copy_bytes(&r->segments[w++], &r->segments[i], sizeof(symline_segment));
         }

@@ -55,11 +55,17 @@ static symline_point *point_at(const symline_result *r, uint32_t i)
 
 /* Asks the grid of earlier segments (segindex.h), which tests the few
  * segments near the point instead of every one. */
-static bool covered(const symline_i_run *d, const symline_i_segindex *ix, const symline_point *q,
+static bool covered(const symline_i_run *d, symline_i_segindex *ix, const symline_point *q,
                     uint32_t level)
 {
     const int32_t x = symline_i_q8(q->x, level), y = symline_i_q8(q->y, level);
     return symline_i_segindex_near(ix, d->r, d->prev_seg, x, y, symline_i_cover_tol_q8(level));
+}
+
+/* Whether a piece of n points at the pass's level is long enough to report. */
+static bool piece_long_enough(const symline_i_run *d, const symline_i_pass *p, uint32_t n)
+{
+    return (n << p->level) >= d->cfg->min_length && n >= SL_MIN_PIECE_POINTS;
 }
 
 /* One piece of a chain (grid coordinates, absolute storage index `at`). */
@@ -67,7 +73,7 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
 {
     symline_point *q = d->r->points + at;
     symline_segment *s;
-    if ((n << p->level) < d->cfg->min_length || n < SL_MIN_PIECE_POINTS) {
+    if (!piece_long_enough(d, p, n)) {
         return;
     }
     if (d->field_rows != NULL &&
@@ -98,11 +104,19 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
 }
 
 /* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
-static void chain(symline_i_run *d, const symline_i_pass *p, const symline_i_segindex *ix,
-                  uint32_t at, uint32_t n)
+static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex *ix, uint32_t at,
+                  uint32_t n)
 {
     const symline_point *c = d->r->points + at;
     uint32_t i, s, from = 0u;
+    /* Every piece is part of the chain: a chain too short to be emitted
+     * (most of them: two or three points of turf) needs no per-point test. */
+    if (!piece_long_enough(d, p, n)) {
+        return;
+    }
+    if (SL_FOR_SPEED && ix != NULL) {
+        ix->hit = SL_NO_HIT; /* another chain: the last one's entry is not a better guess */
+    }
     for (i = 0; i <= n; i++) {
         /* The uncovered runs [from, i), each cut at its corners. */
         if (i < n && !covered(d, ix, &c[i], p->level)) {
@@ -170,7 +184,7 @@ SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, u
  * state, in the pass workspace. Apart from symline_i_pass_run() so that its frame
  * and the line point collection's are never on the stack together. */
 SL_NOINLINE static void trace(symline_i_run *d, const symline_i_pass *p, const uint32_t *row_start,
-                              uint32_t n, symline_i_tracer *t, const symline_i_segindex *ix)
+                              uint32_t n, symline_i_tracer *t, symline_i_segindex *ix)
 {
     symline_result *r = d->r;
     const uint32_t base = d->npts;
@@ -240,9 +254,9 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, const symline_i_pass
  * frame, not quadratic, on cluttered frames). The ids go to the workspace
  * or, when larger, to the point storage beyond what the tracing can write
  * (at most n points after the raster list). */
-SL_NOINLINE static const symline_i_segindex *index_earlier(const symline_i_run *d,
-                                                           const symline_i_pass *p, uint8_t *ws,
-                                                           uint8_t *end, uint32_t n)
+SL_NOINLINE static symline_i_segindex *index_earlier(const symline_i_run *d,
+                                                     const symline_i_pass *p, uint8_t *ws,
+                                                     uint8_t *end, uint32_t n)
 {
     symline_i_segindex *ix =
         (symline_i_segindex *)symline_i_carve(&ws, end, sizeof(symline_i_segindex));

@@ -2,10 +2,10 @@
 /*
  * The grid of earlier segments (segindex.h). Built once per pass in two
  * sweeps over the segments: count the cells each one touches, then enter its
- * id (a line) or its pieces (a curve); cells hold their entries in one array
- * (compressed rows), so the grid needs 4 bytes per cell and 4 per entry (8
- * per curve piece) and nothing else. A cell the previous piece of the same
- * line touched is skipped.
+ * id (a line) or its runs of pieces (a curve); cells hold their entries in
+ * one array (compressed rows), so the grid needs 4 bytes per cell and 4 per
+ * entry (8 per curve run) and nothing else. A cell the previous piece of the
+ * same line touched is skipped.
  *
  * A point near a chord lies within tol of one of the chord's pieces of at
  * most one cell's length, hence inside that piece's bounding box grown by
@@ -126,15 +126,42 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     }
 }
 
+/* Points of a curve's polyline in one grid entry (a run): where the build
+ * optimises for speed, four of its pieces, which makes fewer entries to
+ * enter and to list while a cell still asks only the runs near it; else
+ * one piece (the smaller code). */
+#define SL_RUN_POINTS (SL_FOR_SPEED ? SL_POLY_STEP * 4u : SL_POLY_STEP)
+
+/* Every cell within margin of the box x0..x1, y0..y1 (whole pixels), plus
+ * the rounding slack of symline_i_cellwalk_chord() for a chord as long as
+ * the box is wide: a run's cells (speed builds). */
+static void visit_box(symline_i_cellwalk *w, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1)
+{
+    const uint32_t ext = (x1 - x0 > y1 - y0 ? x1 - x0 : y1 - y0) << 8;
+    const int32_t margin =
+        w->margin + (int32_t)((ext + (uint32_t)w->margin) >> 10) + (int32_t)SL_PX_Q8(1u);
+    uint32_t cx[2], cy[2], x, y;
+    cell_span((int32_t)(x0 << 8), (int32_t)(x1 << 8), margin, w->cols, cx);
+    cell_span((int32_t)(y0 << 8), (int32_t)(y1 << 8), margin, w->rows, cy);
+    for (y = cy[0]; y <= cy[1]; y++) {
+        for (x = cx[0]; x <= cx[1]; x++) {
+            visit_cell(w, y * w->cols + x);
+        }
+    }
+}
+
 /* Every piece symline_i_near_segment() tests for segment id: a line as its
- * id, a curve piece by piece (a cell then asks only the pieces near it, not
- * a long curve along its whole length), each piece in every cell it
- * touches. Point indices from 2^31 on (16 GiB of points) list the curve whole. */
+ * id, a curve run by run (the pieces of its polyline from an entry's first
+ * point to its last; a cell then asks only the runs near it, not a long
+ * curve along its whole length), each run in every cell it touches: a
+ * piece's by its chord, a longer run's by the box of its points (which
+ * holds its pieces). Point indices from 2^31 on (16 GiB of points) list
+ * the curve whole. */
 static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32_t id)
 {
     const symline_segment *s = &r->segments[id];
     const symline_point *p = r->points + s->first;
-    uint32_t i;
+    uint32_t i, k;
     v->seg = id;
     v->width = 1u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
@@ -142,12 +169,24 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
         return;
     }
     v->width = 2u;
-    for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
-        const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
+    for (i = 0; i + 1u < s->count; i += SL_RUN_POINTS) {
+        const uint32_t j = (i + SL_RUN_POINTS < s->count) ? i + SL_RUN_POINTS : s->count - 1u;
         v->seg = SL_PIECE | (s->first + i);
         v->piece_end = s->first + j;
-        symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
-                                 (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, v->margin);
+        if (SL_FOR_SPEED) {
+            /* The box of the run's pixels (the pieces are tested in whole pixels). */
+            uint32_t x0 = p[i].x, y0 = p[i].y, x1 = x0, y1 = y0;
+            for (k = i + 1u; k <= j; k++) {
+                x0 = p[k].x < x0 ? p[k].x : x0;
+                x1 = p[k].x > x1 ? p[k].x : x1;
+                y0 = p[k].y < y0 ? p[k].y : y0;
+                y1 = p[k].y > y1 ? p[k].y : y1;
+            }
+            visit_box(v, x0, y0, x1, y1);
+        } else {
+            symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
+                                     (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, v->margin);
+        }
     }
 }
 
@@ -176,6 +215,7 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     symline_i_cellwalk v;
     ix->end = (uint32_t *)symline_i_carve(&cur, lim, (size_t)cells * sizeof(uint32_t));
     ix->indexed = 0u;
+    ix->hit = SL_NO_HIT;
     if (ix->end == NULL) {
         ix->cols = 0u; /* not reached: the workspace size was checked */
         return;
@@ -221,7 +261,26 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
 }
 
-bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
+/* Whether q lies near grid entry k (a line's id, or a curve's run: the
+ * pieces of its polyline in it). */
+static bool near_entry(const symline_i_segindex *ix, const symline_result *r, uint32_t k,
+                       const symline_i_near *q)
+{
+    const uint32_t e = ix->ids[k];
+    uint32_t a;
+    if ((e & SL_PIECE) == 0u) {
+        return symline_i_near_segment(&r->segments[e], r->points, q);
+    }
+    for (a = e - SL_PIECE; a < ix->ids[k + 1u]; a += SL_POLY_STEP) {
+        const uint32_t b = a + SL_POLY_STEP < ix->ids[k + 1u] ? a + SL_POLY_STEP : ix->ids[k + 1u];
+        if (symline_i_near_piece(&r->points[a], &r->points[b], q)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
                              int32_t x, int32_t y, int32_t tol_q8)
 {
     symline_i_near q;
@@ -232,11 +291,13 @@ bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result 
     if (ix != NULL && ix->cols != 0u) {
         const uint32_t c = symline_i_cell_at(ix->cols, ix->rows, x, y);
         uint32_t k;
-        for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c]; k++) {
-            const uint32_t e = ix->ids[k];
-            if ((e & SL_PIECE) != 0u
-                    ? symline_i_near_piece(&r->points[e - SL_PIECE], &r->points[ix->ids[++k]], &q)
-                    : symline_i_near_segment(&r->segments[e], r->points, &q)) {
+        if (SL_FOR_SPEED && ix->hit != SL_NO_HIT && near_entry(ix, r, ix->hit, &q)) {
+            return true;
+        }
+        for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c];
+             k += (ix->ids[k] & SL_PIECE) != 0u ? 2u : 1u) {
+            if (near_entry(ix, r, k, &q)) {
+                ix->hit = k;
                 return true;
             }
         }

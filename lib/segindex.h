@@ -23,10 +23,15 @@
 typedef struct symline_i_segindex {
     uint32_t cols, rows; /* cells across and down */
     uint32_t *end;       /* cols*rows: cell c holds ids[end[c-1] .. end[c]-1] (end[-1] = 0) */
-    uint32_t *ids;       /* a line's segment id, or a curve piece as two entries:
-                            SL_PIECE | its first point's index, its last point's index */
+    uint32_t *ids;       /* a line's segment id, or a run of a curve's polyline as two
+                            entries: SL_PIECE | its first point's index, its last
+                            point's index (segindex.c) */
     uint32_t indexed;    /* segments [0, indexed) are in the grid */
+    uint32_t hit;        /* the entry a point was last found near, SL_NO_HIT: none */
 } symline_i_segindex;
+
+/* No entry (symline_i_segindex.hit). */
+#define SL_NO_HIT 0xFFFFFFFFu
 
 /* A walk over the grid cells within margin (Q8, plus the rounding slack of
  * the library's distance tests: length / 1024 + 1 px) of a chord, in pieces
@@ -77,8 +82,11 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
                               const symline_result *r, uint32_t nseg, int32_t tol_q8);
 
 /* Exactly symline_i_near_segment() of any of r->segments[0 .. nseg-1] for the
- * full-resolution point (x, y) (Q8, inside the frame); ix NULL: no grid. */
-bool symline_i_segindex_near(const symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
+ * full-resolution point (x, y) (Q8, inside the frame); ix NULL: no grid.
+ * Where the build optimises for speed, the entry the last point was found
+ * near is tried first (ix->hit): a chain runs along an earlier segment for
+ * many points. */
+bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
                              int32_t x, int32_t y, int32_t tol_q8);
 
 #endif /* SYMLINE_LIB_SEGINDEX_H */

@@ -76,62 +76,140 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
     return symline_i_div_q8(cross, len);
 }
 
+/* Where the build optimises for speed, the per-point helpers below are
+ * computed in their loops (a call per point cost more than the arithmetic). */
+#if SL_FOR_SPEED
+#define SL_PER_POINT SL_ALWAYS_INLINE
+#else
+#define SL_PER_POINT SL_NOINLINE
+#endif
+
 /* Cross product of point q's offset from (x0, y0) with the chord direction
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
- * of one frame fit 25 bits: 32-bit operands, 64-bit products. */
-SL_NOINLINE static int64_t chord_cross(const symline_point *q, uint32_t level, const int32_t g[4])
+ * of one frame fit 25 bits: 32-bit operands, 64-bit products. Where the
+ * build optimises for speed, f holds the cross as a linear form of the
+ * point's grid coordinates in 1/128 (lin_form()): the same value, without
+ * the position's shifts per point. */
+static SL_PER_POINT int64_t chord_cross(const symline_point *q, uint32_t level, const int32_t g[4],
+                                        const int64_t f[3])
 {
     const int32_t dx = g[2], dy = g[3];
     int32_t wx, wy;
-    symline_i_pt_off(q, level, g, &wx, &wy);
+    if (SL_FOR_SPEED && (dx | dy) != 0) {
+        return (int64_t)(((int32_t)q->x << 7) + q->fx) * f[0] +
+               (int64_t)(((int32_t)q->y << 7) + q->fy) * f[1] + f[2];
+    }
+    if (SL_FOR_SPEED) {
+        wx = symline_i_pt_q8x(q, level) - g[0];
+        wy = symline_i_pt_q8y(q, level) - g[1];
+    } else {
+        symline_i_pt_off(q, level, g, &wx, &wy);
+    }
     return (dx | dy) == 0 ? (int64_t)wx * wx + (int64_t)wy * wy
                           : (int64_t)wx * dy - (int64_t)wy * dx;
 }
 
-/* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]. */
-static uint64_t window_max(const symline_point *p, uint32_t n, uint32_t level, const int32_t g[4],
-                           uint32_t win)
+/* The cross of chord_cross() as u f[0] + v f[1] + f[2] for a point's grid
+ * coordinates u = 128 x + fx, v = 128 y + fy: its Q8 position is u s + h
+ * (s = 2^(level+1), h the block's half, fixed.h), so the cross
+ * (u s + h - x0) dy - (v s + h - y0) dx. Every term stays below 2^53. */
+static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
 {
-    int64_t sum = 0;
-    uint64_t best = 0u;
+    const int64_t sc = (int64_t)1 << (level + 1u);
+    const int32_t h = (int32_t)symline_i_block_half_q8(level);
+    f[0] = (int64_t)g[3] * sc;
+    f[1] = -(int64_t)g[2] * sc;
+    f[2] = (int64_t)(h - g[0]) * g[3] - (int64_t)(h - g[1]) * g[2];
+}
+
+/* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]
+ * (best[1]) and, where the build optimises for speed, in the same sweep the
+ * largest |cross| of a point (best[0]). */
+static void window_max(const symline_point *p, uint32_t n, uint32_t level, const int32_t g[4],
+                       uint32_t win, uint64_t best[2])
+{
+    int64_t sum = 0, f[3];
     uint32_t i;
+    best[0] = best[1] = 0u;
+    f[0] = f[1] = f[2] = 0; /* not an initialiser: no memset call */
+    if (SL_FOR_SPEED) {
+        lin_form(level, g, f);
+    }
     for (i = 0; i < n; i++) {
-        sum += chord_cross(&p[i], level, g);
+        const int64_t c = chord_cross(&p[i], level, g, f);
+        if (SL_FOR_SPEED) {
+            const uint64_t a = (uint64_t)(c < 0 ? -c : c);
+            best[0] = a > best[0] ? a : best[0];
+            if (win == 1u) {
+                continue;
+            }
+        }
+        sum += c;
         if (i >= win) {
-            sum -= chord_cross(&p[i - win], level, g);
+            sum -= chord_cross(&p[i - win], level, g, f);
         }
         if (i + 1u >= win) {
             const uint64_t m = (uint64_t)(sum < 0 ? -sum : sum);
-            best = m > best ? m : best;
+            best[1] = m > best[1] ? m : best[1];
         }
     }
-    return best;
+    if (SL_FOR_SPEED && win == 1u) {
+        best[1] = best[0];
+    }
+}
+
+/* The sweep over p[0..n-1] (n > 0) for chord c: *win clamped to what it
+ * means for the chord, best as window_max() sets it; returns the chord's
+ * length (0: no direction, best holds squared distances to the end). */
+static uint64_t chord_sweep(const symline_point *p, uint32_t n, uint32_t level,
+                            const symline_segment *c, uint32_t *win, uint64_t best[2])
+{
+    /* The chord: its first end and its direction (x0, y0, dx, dy). */
+    const int32_t dx = c->x1 - c->x0, dy = c->y1 - c->y0, g[4] = {c->x0, c->y0, dx, dy};
+    /* The cross product is linear in the point: a window's mean point lies
+     * sum / win from the chord. The largest one first, one square root and
+     * one division at the end. With no direction: the distance to the end
+     * itself, point by point. */
+    *win = (dx | dy) == 0 || *win < 1u ? 1u : (*win > n ? n : *win);
+    window_max(p, n, level, g, *win, best);
+    return (dx | dy) == 0 ? 0u : hypot_q(dx, dy);
+}
+
+/* The distance (Q8) a sweep's best stands for: best / (win len), or its
+ * square root for no direction (len 0). */
+static uint32_t dev_of(uint64_t best, uint64_t len, uint32_t win)
+{
+    /* floor(floor(best / win) / len) = floor(best / (win len)): no 64-bit
+     * division (its library helper's frame would deepen the stack). */
+    return len == 0u ? (uint32_t)symline_i_isqrt64(best) : symline_i_div_q8(best, len * win);
 }
 
 SL_NOINLINE uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level,
                                          const symline_segment *c, uint32_t win)
 {
-    /* The chord: its first end and its direction (x0, y0, dx, dy). */
-    const int32_t dx = c->x1 - c->x0, dy = c->y1 - c->y0, g[4] = {c->x0, c->y0, dx, dy};
-    uint64_t best, len;
+    uint64_t best[2], len;
     if (n == 0u) {
         return 0u;
     }
-    /* The cross product is linear in the point: a window's mean point lies
-     * sum / win from the chord. The largest one first, one square root and
-     * one division at the end. With no direction: the distance to the end
-     * itself, point by point. */
-    win = (dx | dy) == 0 || win < 1u ? 1u : (win > n ? n : win);
-    best = window_max(p, n, level, g, win);
-    if ((dx | dy) == 0) {
-        return (uint32_t)symline_i_isqrt64(best);
-    }
-    len = hypot_q(dx, dy);
-    /* floor(floor(best / win) / len) = floor(best / (win len)): no 64-bit
-     * division (its library helper's frame would deepen the stack). */
-    return symline_i_div_q8(best, len * win);
+    len = chord_sweep(p, n, level, c, &win, best);
+    return dev_of(best[1], len, win);
 }
+
+#if SL_FOR_SPEED /* segments.h: two sweeps where the build optimises for size */
+void symline_i_chord_devs(const symline_point *p, uint32_t n, uint32_t level,
+                          const symline_segment *c, uint32_t win, uint32_t dev[2])
+{
+    uint64_t best[2], len;
+    if (n == 0u) {
+        dev[0] = dev[1] = 0u;
+        return;
+    }
+    len = chord_sweep(p, n, level, c, &win, best);
+    dev[0] = dev_of(best[0], len, 1u);
+    dev[1] = dev_of(best[1], len, win);
+}
+#endif
 
 /* A curve bends away from its chord by more than the threshold and by more
  * than 1/32 of the chord: a straight line's pixel steps and noise stay near
@@ -162,10 +240,15 @@ typedef struct symline_i_fitframe {
 } symline_i_fitframe;
 
 /* Point q in Q4 full resolution relative to the origin, minus the mean. */
-SL_NOINLINE static void rel_q4(const symline_point *q, const symline_i_fitframe *f, int32_t *x,
-                               int32_t *y)
+static SL_PER_POINT void rel_q4(const symline_point *q, const symline_i_fitframe *f, int32_t *x,
+                                int32_t *y)
 {
-    symline_i_pt_off(q, f->level, f->o, x, y);
+    if (SL_FOR_SPEED) {
+        *x = symline_i_pt_q8x(q, f->level) - f->o[0];
+        *y = symline_i_pt_q8y(q, f->level) - f->o[1];
+    } else {
+        symline_i_pt_off(q, f->level, f->o, x, y);
+    }
     *x = *x / 16 - f->mx;
     *y = *y / 16 - f->my;
 }
@@ -297,12 +380,16 @@ uint32_t symline_i_bend_q8(const symline_point *p, uint32_t n)
     return (uint32_t)d << 1;
 }
 
-/* The chord of p[0..n-1]'s first and last point as s's ends, and its max_dev. */
-static void chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
+/* The chord of p[0..n-1]'s first and last point as s's ends, its max_dev,
+ * and the smoothed deviation from it (returned). */
+static uint32_t chord_ends(const symline_point *p, uint32_t n, uint32_t level, symline_segment *s)
 {
+    uint32_t dev[2];
     symline_i_pt_off(&p[0], level, NULL, &s->x0, &s->y0);
     symline_i_pt_off(&p[n - 1u], level, NULL, &s->x1, &s->y1);
-    s->max_dev = symline_i_max_dev(p, n, level, s);
+    symline_i_chord_devs(p, n, level, s, SL_SMOOTH_WIN, dev);
+    s->max_dev = dev[0];
+    return dev[1];
 }
 
 void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t curve_dev_q8,
@@ -310,8 +397,7 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
 {
     const uint32_t thr = curve_dev_q8 + symline_i_block_half_q8(level);
     bool curve;
-    chord_ends(p, n, level, s);
-    curve = symline_i_is_curve(s, symline_i_smooth_dev(p, n, level, s), thr);
+    curve = symline_i_is_curve(s, chord_ends(p, n, level, s), thr);
     s->kind = (uint8_t)(curve ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
     if (s->kind == SYMLINE_KIND_LINE && n >= 3u && ls_ends(p, n, level, s)) {
         s->max_dev = symline_i_max_dev(p, n, level, s);
@@ -393,5 +479,5 @@ void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, ui
     }
     /* A curve keeps the chord of its first and last point (no line fit). */
     s->kind = SYMLINE_KIND_CURVE;
-    chord_ends(p, n, level, s);
+    (void)chord_ends(p, n, level, s);
 }

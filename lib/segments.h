@@ -41,6 +41,20 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
 uint32_t symline_i_chord_dev(const symline_point *p, uint32_t n, uint32_t level,
                              const symline_segment *c, uint32_t win);
 
+/* The same for win 1 (dev[0], the max_dev) and win (dev[1]): in one sweep
+ * where the build optimises for speed, else in two (the smaller code). */
+#if SL_FOR_SPEED
+void symline_i_chord_devs(const symline_point *p, uint32_t n, uint32_t level,
+                          const symline_segment *c, uint32_t win, uint32_t dev[2]);
+#else
+static inline void symline_i_chord_devs(const symline_point *p, uint32_t n, uint32_t level,
+                                        const symline_segment *c, uint32_t win, uint32_t dev[2])
+{
+    dev[0] = symline_i_chord_dev(p, n, level, c, 1u);
+    dev[1] = symline_i_chord_dev(p, n, level, c, win);
+}
+#endif
+
 /* Points per window of the smoothed deviation: a traced ridge on turf jitters
  * by a pixel or two from point to point, an arc's sagitta does not average out. */
 #define SL_SMOOTH_WIN 5u

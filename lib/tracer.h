@@ -18,8 +18,10 @@ typedef struct symline_i_tracer {
     uint32_t n;
     const uint32_t *row_start;
     uint32_t h;
-    uint32_t scan;  /* next raster index to try as a start */
-    uint32_t phase; /* 0: starts at B points, 1: everything left (loops) */
+    uint32_t scan;     /* next raster index to try as a start */
+    uint32_t phase;    /* 0: starts at B points, 1: everything left (loops) */
+    uint32_t row;      /* phase 0: the scan's row, and its cursors into the */
+    uint32_t up, down; /* rows above and below (only where speed counts) */
 } symline_i_tracer;
 
 void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
