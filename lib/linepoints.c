@@ -25,61 +25,17 @@
 #include "stagemark.h"
 #include "symmetry.h"
 
+/* The pass's grid rows (grid.c). A port's version (SYMLINE_PORT_GRID)
+ * replaces this call, which is then its reference. */
 #ifdef SYMLINE_PORT_GRID
 #define SL_GRID_ROW symline_i_grid_row_c
 #else
 #define SL_GRID_ROW symline_i_grid_row
 #endif
-
 void SL_GRID_ROW(const symline_image *img, const symline_i_pass *p, uint32_t y, uint16_t *acc,
                  uint8_t *out)
 {
-    const uint32_t s = 1u << p->level;
-    const uint32_t shift = 2u * p->level;
-    /* The width in a local: out (bytes) might alias *p, and a bound read
-     * through p after every store keeps the loops from vectorising. */
-    const uint32_t w = p->w;
-    const uint32_t span = w * s;
-    uint32_t x, d;
-    const uint8_t *src = img->data + (size_t)(y * s) * img->stride;
-    if (!SL_FOR_SPEED) {
-        /* One block at a time: the same sums without the accumulator's lane
-         * loops, which only save time. */
-        for (x = 0; x < w; x++, src += s) {
-            const uint8_t *b = src;
-            uint32_t sum = (1u << shift) >> 1, i; /* half a block: rounds; 0 at level 0 */
-            for (d = 0; d < s; d++, b += img->stride) {
-                for (i = 0; i < s; i++) {
-                    sum += b[i];
-                }
-            }
-            out[x] = (uint8_t)(sum >> shift);
-        }
-        return;
-    }
-    for (x = 0; x < span; x++) {
-        acc[x] = src[x];
-    }
-    for (d = 1u; d < s; d++) {
-        const uint8_t *r = src + (size_t)d * img->stride;
-        for (x = 0; x < span; x++) {
-            acc[x] = (uint16_t)(acc[x] + r[x]);
-        }
-    }
-    if (s == 2u) { /* the common first step, as a plain lane loop */
-        for (x = 0; x < w; x++) {
-            const uint16_t *pair = acc + (size_t)2u * x;
-            out[x] = (uint8_t)(((uint32_t)pair[0] + pair[1] + 2u) >> 2);
-        }
-        return;
-    }
-    for (x = 0; x < w; x++) {
-        uint32_t sum = 0u;
-        for (d = 0; d < s; d++) {
-            sum += acc[x * s + d];
-        }
-        out[x] = (uint8_t)((sum + ((1u << shift) >> 1)) >> shift);
-    }
+    symline_i_grid_level_row(img, p->level, y, acc, out);
 }
 
 /* Rows of the horizontal-axis rings. */

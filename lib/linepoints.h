@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * Line points of one pass (linepoints.c): the scale grid's rows, symmetry
+ * Line points of one pass (linepoints.c): the scale grid's rows (grid.c), symmetry
  * energies, extrema with the plateau limit and the line filter, streamed
  * over a ring of rows into a raster-ordered point list.
  */
@@ -8,6 +8,7 @@
 #define SYMLINE_LIB_LINEPOINTS_H
 
 #include "common.h"
+#include "grid.h"
 #include "linefilter.h"
 #include "symline/detect.h"
 
@@ -22,18 +23,6 @@ typedef struct symline_i_pass {
     uint32_t lag;   /* longest accepted plateau: end - marked index <= lag (= m) */
     symline_i_linefilter filter;
 } symline_i_pass;
-
-/* Box-downsampled row y of the pass grid into out (p->w bytes), level >= 1
- * (level 0 reads the frame's rows themselves); acc: scratch of img->width
- * uint16_t. With a SIMD version from port/ (SYMLINE_PORT_GRID, CMake option
- * SYMLINE_SIMD), symline_i_grid_row_c() is the portable reference and
- * symline_i_grid_row() the port's, with the same output. */
-void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
-                        uint16_t *acc, uint8_t *out);
-#ifdef SYMLINE_PORT_GRID
-void symline_i_grid_row_c(const symline_image *img, const symline_i_pass *p, uint32_t y,
-                          uint16_t *acc, uint8_t *out);
-#endif
 
 #ifdef SYMLINE_PORT_DROP_DIM_S
 /* The row pre-filter of the line filter (linepoints.c: drops from map[0..n-1]

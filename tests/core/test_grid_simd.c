@@ -1,0 +1,165 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * The scale grid's rows (lib/grid.c) as the build has them (a SIMD version
+ * from port/ where SYMLINE_SIMD built one, else the portable lane loops)
+ * against the definition (the rounded mean of each 2^level x 2^level block,
+ * (sum + 2^(2 level - 1)) >> 2 level), and where built, the SIMD version
+ * against the portable reference: random images, levels 0..5, odd and short
+ * widths, unaligned starts, strides, gray-value extremes, and no write past
+ * the row or the scratch.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "linepoints.h"
+#include "testutil.h"
+
+#define MAXW 1100u
+#define MAXSTRIDE (MAXW + 40u)
+#define ROWS 64u /* two grid rows at level 5 */
+#define GUARD 0x5a
+
+static uint8_t img[(size_t)MAXSTRIDE * ROWS + 16u];
+
+/* Random gray values, now and then all dark, all bright or only extremes. */
+static void fill_gray(uint32_t t, uint32_t *s)
+{
+    size_t i;
+    const uint32_t kind = t % 7u;
+    for (i = 0; i < sizeof img; i++) {
+        const uint32_t r = tu_rand(s);
+        img[i] = (uint8_t)(kind == 0u ? 255u : kind == 1u ? 0u : kind == 2u ? (r & 1u) * 255u : r);
+    }
+}
+
+/* A frame of width x (2 2^level) with the given stride, copied from img at
+ * offset off into a buffer that ends with its last pixel (the sanitizer
+ * builds then catch a read past it); free it with free_frame(). */
+static symline_image frame(uint32_t width, uint32_t level, uint32_t stride, uint32_t off)
+{
+    symline_image im;
+    const size_t n = (size_t)stride * ((2u << level) - 1u) + width;
+    uint8_t *data = (uint8_t *)malloc(n);
+    assert_non_null(data);
+    memcpy(data, img + off, n);
+    im.width = width;
+    im.height = 2u << level;
+    im.stride = stride;
+    im.data = data;
+    return im;
+}
+
+static void free_frame(symline_image *im)
+{
+    free((void *)(uintptr_t)im->data);
+}
+
+/* Grid row y by the definition. */
+static void definition(const symline_image *im, uint32_t level, uint32_t y, uint8_t *out)
+{
+    const uint32_t s = 1u << level, shift = 2u * level;
+    uint32_t x, i, j;
+    for (x = 0; x < (im->width >> level); x++) {
+        uint32_t sum = 0u;
+        for (j = 0; j < s; j++) {
+            for (i = 0; i < s; i++) {
+                sum += im->data[(size_t)(y * s + j) * im->stride + x * s + i];
+            }
+        }
+        out[x] = (uint8_t)((sum + ((1u << shift) >> 1)) >> shift);
+    }
+}
+
+/* The pass fields the grid reads. */
+static symline_i_pass pass_of(const symline_image *im, uint32_t level)
+{
+    symline_i_pass p;
+    memset(&p, 0, sizeof p);
+    p.level = level;
+    p.w = im->width >> level;
+    p.h = im->height >> level;
+    return p;
+}
+
+/* Width, level, stride and start of trial t: short widths often. */
+static symline_image pick(uint32_t t, uint32_t *s, uint32_t *level)
+{
+    const uint32_t lv = t % 6u;
+    const uint32_t width = (t % 3u == 0u) ? 1u + tu_rand(s) % 80u : 1u + tu_rand(s) % MAXW;
+    const uint32_t stride = width + tu_rand(s) % 40u, off = tu_rand(s) % 16u;
+    *level = lv;
+    return frame(width, lv, stride, off);
+}
+
+static void row_is_definition(void **state)
+{
+    uint8_t got[MAXW + 16u], want[MAXW + 16u];
+    uint16_t acc[MAXW + 8u];
+    uint32_t s = 11u, t, y, level;
+    symline_i_pass p;
+    (void)state;
+    for (t = 0; t < 1500u; t++) {
+        symline_image im;
+        if (t % 10u == 0u) {
+            fill_gray(t / 10u, &s);
+        }
+        im = pick(t, &s, &level);
+        p = pass_of(&im, level);
+        for (y = 0; y < 2u; y++) {
+            memset(got, GUARD, sizeof got);
+            memset(acc, GUARD, sizeof acc);
+            memcpy(want, got, sizeof want);
+            symline_i_grid_row(&im, &p, y, acc, got);
+            definition(&im, level, y, want);
+            assert_memory_equal(got, want, sizeof got); /* nothing past w either */
+            assert_int_equal(acc[im.width], 0x5a5au);   /* scratch: width entries */
+        }
+        free_frame(&im);
+    }
+}
+
+#ifdef SYMLINE_PORT_GRID
+/* The SIMD rows against lib/grid.c's portable reference, nothing written
+ * past the row. */
+static void simd_is_reference(void **state)
+{
+    uint8_t a[MAXW + 16u], b[MAXW + 16u];
+    uint16_t acc[MAXW + 8u];
+    uint32_t s = 5u, t, y, level;
+    symline_i_pass p;
+    (void)state;
+    for (t = 0; t < 3000u; t++) {
+        symline_image im;
+        if (t % 10u == 0u) {
+            fill_gray(t / 10u, &s);
+        }
+        im = pick(t, &s, &level);
+        p = pass_of(&im, level);
+        for (y = 0; y < 2u; y++) {
+            memset(a, GUARD, sizeof a);
+            memset(b, GUARD, sizeof b);
+            symline_i_grid_row(&im, &p, y, acc, a);
+            symline_i_grid_row_c(&im, &p, y, acc, b);
+            assert_memory_equal(a, b, sizeof a);
+        }
+        free_frame(&im);
+    }
+}
+#endif
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(row_is_definition),
+#ifdef SYMLINE_PORT_GRID
+        cmocka_unit_test(simd_is_reference),
+#endif
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
