@@ -41,22 +41,25 @@ static inline int32_t sign_of(uint32_t a, uint32_t b)
     return (int32_t)(a > b) - (int32_t)(a < b);
 }
 
+/* The kind of an entry by v = r - l + 2 (kinds_small()). */
+static const uint8_t kind_of[5] = {SYMLINE_MAP_A, SYMLINE_MAP_NONE, SYMLINE_MAP_NONE,
+                                   SYMLINE_MAP_NONE, SYMLINE_MAP_S};
+
 /*
- * The references one entry at a time, branch-free: entries x0 .. x1-1 (at
- * most 32) of mid with the signs l of mid - up and r of dn - mid. Down the
+ * The references one entry at a time, branch-free: the n <= 32 entries
+ * of mid with the signs l of mid - up and r of dn - mid. Down the
  * columns (sg not NULL) l comes from sg, which takes r for the next row;
  * along a row (sg NULL, dn = mid + 1) l is the previous entry's r. With
  * v = r - l: an S point where v = 2 (l = -1, r = +1), an A point where
  * v = -2; exactly one of l, r is zero where v is odd. Returns the plateau
  * bits.
  */
-static uint32_t kinds_small(const uint32_t *mid, const uint32_t *dn, int8_t *sg, uint32_t x0,
-                            uint32_t x1, uint8_t *map)
+static uint32_t kinds_small(const uint32_t *mid, const uint32_t *dn, int8_t *sg, uint32_t n,
+                            uint8_t *map)
 {
-    const uint32_t *const first = mid + x0;
     uint32_t x, bits = 0u;
-    int32_t l = (sg == NULL) ? sign_of(first[0], first[-1]) : 0;
-    for (x = x0; x < x1; x++) {
+    int32_t l = (sg == NULL) ? sign_of(mid[0], *(mid - 1)) : 0;
+    for (x = 0; x < n; x++) {
         const int32_t r = sign_of(dn[x], mid[x]);
         int32_t v;
         if (sg != NULL) {
@@ -64,8 +67,8 @@ static uint32_t kinds_small(const uint32_t *mid, const uint32_t *dn, int8_t *sg,
             sg[x] = (int8_t)r;
         }
         v = r - l;
-        map[x] = (uint8_t)((0u - (uint32_t)(v == 2)) | ((uint32_t)(v == -2) << 7));
-        bits |= ((uint32_t)v & 1u) << (x - x0);
+        map[x] = kind_of[v + 2];
+        bits |= ((uint32_t)v & 1u) << x;
         l = r;
     }
     return bits;
@@ -77,13 +80,13 @@ uint32_t symline_i_extrema_along_c(const uint32_t *E, uint32_t n, uint8_t *restr
     const uint32_t *const L = E - 1, *const R = E + 1; /* the neighbours */
     uint32_t x0, x, any = 0u;
     if (!SL_KINDS_LANES && SL_KINDS_MAX == 32u) { /* one word */
-        return *ev = kinds_small(E, R, NULL, 0u, n, map);
+        return *ev = kinds_small(E, R, NULL, n, map);
     }
     for (x0 = 0; x0 < n; x0 += 32u) {
         const uint32_t x1 = (n - x0 > 32u) ? x0 + 32u : n;
         uint32_t flat = 0u, bits = 0u;
         if (!SL_KINDS_LANES) {
-            ev[x0 / 32u] = bits = kinds_small(E, R, NULL, x0, x1, map);
+            ev[x0 / 32u] = bits = kinds_small(E + x0, R + x0, NULL, x1 - x0, map + x0);
             any |= bits;
             continue;
         }
@@ -115,13 +118,13 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
 {
     uint32_t x0, x, any = 0u;
     if (!SL_KINDS_LANES && SL_KINDS_MAX == 32u) { /* one word */
-        return *ev = kinds_small(mid, dn, sg, 0u, n, map);
+        return *ev = kinds_small(mid, dn, sg, n, map);
     }
     for (x0 = 0; x0 < n; x0 += 32u) {
         const uint32_t x1 = (n - x0 > 32u) ? x0 + 32u : n;
         uint32_t flat = 0u, bits = 0u;
         if (!SL_KINDS_LANES) {
-            ev[x0 / 32u] = bits = kinds_small(mid, dn, sg, x0, x1, map);
+            ev[x0 / 32u] = bits = kinds_small(mid + x0, dn + x0, sg + x0, x1 - x0, map + x0);
             any |= bits;
             continue;
         }
