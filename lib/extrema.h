@@ -14,16 +14,60 @@
 /* Plateau limit of symline_i_extrema_runs() that marks runs of any length. */
 #define SL_RUN_ANY_LENGTH UINT32_MAX
 
+/* Entries of one call of symline_i_extrema_along() or _across() at most,
+ * and the 32-bit words of their plateau masks (on the caller's stack): 256
+ * where SIMD versions decide them (fewer calls), else 32. */
+#ifdef SYMLINE_PORT_EXTREMA_ROWS
+#define SL_KINDS_MAX 256u
+#else
+#define SL_KINDS_MAX 32u
+#endif
+#define SL_KINDS_WORDS (SL_KINDS_MAX / 32u)
+
 /*
- * The run rule where runs are single entries, over whole rows in 32-bit
- * lanes: map[x] = S where mid[x] is below both up[x] and dn[x], A where it
- * is above both, NONE otherwise (n entries). Returns nonzero when some mid[x]
- * equals up[x] or dn[x]: a plateau, which the caller decides on its slow path
- * (map[x] is NONE there). Rows of a frame (extrema down the columns) or one
- * row shifted by one entry (along it). Energies below 2^31.
- * symline_i_extrema_kinds_c() is the portable reference; symline_i_extrema_kinds()
- * is the build's choice: a SIMD version from port/ (SYMLINE_PORT_EXTREMA_KINDS,
- * CMake option SYMLINE_SIMD) with the same output, or the reference.
+ * The run rule where runs are single entries, for 1 <= n <= SL_KINDS_MAX
+ * entries at once: map[x] = S where the energy of entry x is below both its
+ * neighbours', A where it is above both, NONE otherwise. The plateau mask
+ * ev[0 .. (n+31)/32 - 1]: bit x % 32 of ev[x / 32] is set where the energy
+ * equals exactly one neighbour's, that is where a run of equal energies
+ * begins or ends, which the caller decides on its slow path (map[x] is NONE
+ * there); the bits of a run's inner entries stay clear. Both return the OR
+ * of those words: nonzero when the block has such an entry. Energies below
+ * 2^31.
+ *
+ * symline_i_extrema_along(): along a row, the neighbours of E[x] are E[x-1]
+ * and E[x+1] (E[-1] and E[n] are read).
+ * symline_i_extrema_across(): down the columns, the neighbours of mid[x] are
+ * the row above, known by sg[x] = the sign of mid[x] - up[x] (-1, 0, +1;
+ * 0 where there is no row above), and dn[x]; sg[x] becomes the sign of
+ * dn[x] - mid[x], the next row's. So each difference is taken once.
+ *
+ * The _c versions are the portable references; the others are the build's
+ * choice: SIMD versions from port/ (SYMLINE_PORT_EXTREMA_ROWS, CMake option
+ * SYMLINE_SIMD) with the same output, or the references.
+ */
+uint32_t symline_i_extrema_along_c(const uint32_t *E, uint32_t n, uint8_t *restrict map,
+                                   uint32_t *restrict ev);
+uint32_t symline_i_extrema_along(const uint32_t *E, uint32_t n, uint8_t *restrict map,
+                                 uint32_t *restrict ev);
+uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t *restrict dn,
+                                    int8_t *restrict sg, uint32_t n, uint8_t *restrict map,
+                                    uint32_t *restrict ev);
+uint32_t symline_i_extrema_across(const uint32_t *restrict mid, const uint32_t *restrict dn,
+                                  int8_t *restrict sg, uint32_t n, uint8_t *restrict map,
+                                  uint32_t *restrict ev);
+#ifndef SYMLINE_PORT_EXTREMA_ROWS /* no SIMD versions: the references */
+#define symline_i_extrema_along symline_i_extrema_along_c
+#define symline_i_extrema_across symline_i_extrema_across_c
+#endif
+
+/*
+ * A port's decision of three rows (SYMLINE_PORT_EXTREMA_KINDS, a scalar
+ * core's version, port/armv7em/): map[x] as above for n entries of the rows
+ * up, mid and dn; returns nonzero when some mid[x] equals up[x] or dn[x].
+ * symline_i_extrema_kinds_c() is its portable reference. Where a port has
+ * it, the detector decides along and down with it and finds the plateau
+ * ends in the flagged blocks.
  */
 uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
                                    const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map);
@@ -40,26 +84,18 @@ uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *re
  */
 void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map);
 
-/* Entries decided together by symline_i_extrema_runs() and columns by
- * symline_i_extrema_down(); a plateau sends only its block down the slow
- * path. SL_PLATEAU_SPAN(left): the next block of the `left` still to do;
- * the blocks only save time (SL_FOR_SPEED; else all of them). */
-#ifndef SL_PLATEAU_BLOCK /* a port may take smaller blocks (port/CMakeLists.txt) */
-#define SL_PLATEAU_BLOCK 64u
-#endif
-#define SL_PLATEAU_SPAN(left)                                                                      \
-    (SL_FOR_SPEED && (left) > SL_PLATEAU_BLOCK ? SL_PLATEAU_BLOCK : (left))
-
 /*
  * Extrema down the columns, one row at a time: the state of a frame's or a
  * ring's map. Energies of row y live in E3 + (y % 3) * width; map row y at
- * map + (y % ring) * stride (ring: rows held, at least lag + 2); run_start
- * and left (width entries each) follow the plateaus.
+ * map + (y % ring) * stride (ring: rows held, at least lag + 2). sg: 2 x
+ * width entries, the signs of the last two rows' differences
+ * (symline_i_extrema_across()), then how each column's plateau was entered;
+ * run_start (width entries): where it began.
  */
 typedef struct symline_i_coldown {
     uint32_t *E3;
+    int8_t *sg;
     uint16_t *run_start;
-    int8_t *left;
     uint8_t *map;
     uint32_t stride, width, ring, lag;
 } symline_i_coldown;

@@ -86,11 +86,13 @@ size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
         return n;
     }
     n += symline_i_align_up(2u * w * sizeof(uint32_t)); /* two more rows of energies */
-    n += symline_i_align_up(w * sizeof(uint16_t)) + symline_i_align_up(w); /* plateau state */
-    /* 2 B per column unused since the column extrema need no event list; kept
+    n += symline_i_align_up(w * sizeof(uint16_t));      /* where the plateaus began */
+    /* the signs of the differences between rows and the plateaus' sides (cd.sg) */
+    n += symline_i_align_up(2u * w);
+    /* 1 B per column unused since the column extrema need no event list, kept
      * until SYMLINE_DETECT_WORKSPACE_SIZE (detect.h) and its sizing test drop
-     * them together. */
-    n += symline_i_align_up(2u * w) + (size_t)2u * SL_ALIGN;
+     * it together. */
+    n += symline_i_align_up(w) + (size_t)2u * SL_ALIGN;
     n += symline_i_align_up(w * (size_t)h_map_rows(p));
     if (p->level > 0u) {
         n += symline_i_align_up(w * (size_t)h_gray_rows(p));
@@ -343,10 +345,10 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     }
     if (!along) {
         cd->run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint16_t));
-        cd->left = (int8_t *)symline_i_carve(&cur, end, w);
+        cd->sg = (int8_t *)symline_i_carve(&cur, end, 2u * (size_t)w);
         rows = (const uint8_t **)symline_i_carve(&cur, end,
                                                  (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
-        if (cd->run_start == NULL || cd->left == NULL || rows == NULL) {
+        if (cd->run_start == NULL || cd->sg == NULL || rows == NULL) {
             return SYMLINE_ERR_BUFFER;
         }
     }

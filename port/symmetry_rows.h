@@ -97,17 +97,25 @@ static void finish(const sl_pass *ps, uint32_t count, uint32_t init, int add, ui
     }
 }
 
-/* The energy at k < m entries from the nearer end of a row, q + k its centre:
- * the pairs beyond the end count 255^2 each (lib/symmetry.c). */
-static uint32_t row_end(const uint8_t *q, uint32_t m, uint32_t k)
+/* The m entries at either end of a row of n >= 2m, where pairs leave the
+ * row: each beyond-the-end pair counts 255^2 (lib/symmetry.c). Both ends in
+ * one loop: entry k and its mirror n-1-k share the pairs' weights. */
+static void row_ends(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
 {
-    const uint32_t t = m - k;
-    uint32_t e = SL_DMAX2 * (t * (t + 1u) / 2u), j;
-    for (j = 1u; j <= k; j++) {
-        const int32_t d = (int32_t)q[k - j] - (int32_t)q[k + j];
-        e += (m + 1u - j) * (uint32_t)(d * d);
+    uint32_t k, j;
+    for (k = 0; k < m; k++) {
+        const uint32_t t = m - k;
+        const uint8_t *ql = q + k, *qr = q + (n - 1u - k);
+        uint32_t el = SL_DMAX2 * (t * (t + 1u) / 2u), er = el;
+        for (j = 1u; j <= k; j++) {
+            const int32_t dl = (int32_t)ql[-(ptrdiff_t)j] - (int32_t)ql[j];
+            const int32_t dr = (int32_t)qr[-(ptrdiff_t)j] - (int32_t)qr[j];
+            el += (m + 1u - j) * (uint32_t)(dl * dl);
+            er += (m + 1u - j) * (uint32_t)(dr * dr);
+        }
+        E[k] = el;
+        E[n - 1u - k] = er;
     }
-    return e;
 }
 
 void symline_i_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
@@ -120,11 +128,7 @@ void symline_i_energy_row(const uint8_t *q, uint32_t n, uint32_t m, uint32_t *E)
         symline_i_energy_row_c(q, n, m, E);
         return;
     }
-    /* The m entries at either end, where pairs leave the row. */
-    for (j = 0; j < m; j++) {
-        E[j] = row_end(q, m, j);
-        E[n - 1u - j] = row_end(q + (n - 1u - 2u * j), m, j);
-    }
+    row_ends(q, n, m, E);
     /* The interior m .. n-1-m, where every pair lies in the row. */
     c = q + m;
     ps.n = 0u;

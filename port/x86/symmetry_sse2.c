@@ -139,7 +139,12 @@ static inline __attribute__((always_inline)) void
 run_pass(const sl_pass *ps, uint32_t np, uint32_t count, uint32_t init, int add, uint32_t *E)
 {
     if (np == 3u && !add && ps->w[0] == 3u && ps->w[1] == 2u && ps->w[2] == 1u) {
-        rows(ps, 3u, 1, count, init, 0, E);
+        /* Rows with every pair inside the image (most) start at zero: no add. */
+        if (init == 0u) {
+            rows(ps, 3u, 1, count, 0u, 0, E);
+        } else {
+            rows(ps, 3u, 1, count, init, 0, E);
+        }
     } else {
         rows(ps, np, 0, count, init, add, E);
     }

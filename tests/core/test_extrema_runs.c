@@ -84,7 +84,7 @@ static void runs_reference(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t 
     }
 }
 
-/* Rows longer than the 64-entry blocks, runs across block borders, all lags. */
+/* Rows longer than the blocks (SL_KINDS_MAX), runs across block borders, all lags. */
 static void routine_is_the_rule(void **state)
 {
     uint32_t E[400], s = 7u, t, i;
@@ -110,29 +110,90 @@ static void routine_is_the_rule(void **state)
     }
 }
 
-/* The build's row decision (a SIMD version from port/ where built) gives the
- * portable reference's output, flat flag included, at every length and
- * alignment, for energies up to 2^31 - 1. */
+/* The kinds and plateau mask by their definition: entry x with energy b
+ * between a (left or upper neighbour) and c. */
+static void kinds_rule(const uint32_t *up, const uint32_t *mid, const uint32_t *dn, uint32_t n,
+                       uint8_t *map, uint32_t *ev)
+{
+    uint32_t x;
+    memset(ev, 0, SL_KINDS_WORDS * sizeof *ev);
+    for (x = 0; x < n; x++) {
+        const uint32_t a = up[x], b = mid[x], c = dn[x];
+        map[x] = (b < a && b < c)   ? SYMLINE_MAP_S
+                 : (b > a && b > c) ? SYMLINE_MAP_A
+                                    : SYMLINE_MAP_NONE;
+        if ((a == b) != (b == c)) {
+            ev[x / 32u] |= 1u << (x % 32u);
+        }
+    }
+}
+
+#define KN (SL_KINDS_MAX + 8u)
+
+/* Random energies below 2^31: few values (plateaus), values near 2^31 - 1,
+ * or any. */
+static void random_row(uint32_t *v, uint32_t t, uint32_t *s)
+{
+    const uint32_t big = (t % 3u == 0u) ? 0x7fffffffu - 8u : 0u;
+    const uint32_t range = (t % 2u == 0u) ? 3u : (t % 5u == 1u) ? 2u : 0x7fffffffu;
+    uint32_t i;
+    for (i = 0; i < KN; i++) {
+        v[i] = big + tu_rand(s) % range % (0x7fffffffu - big + 1u);
+    }
+}
+
+/* The build's decisions along a row and down the columns (SIMD versions
+ * from port/ where built) and the portable references give the rule's
+ * output, plateau mask and next signs included, at every length up to
+ * SL_KINDS_MAX and alignment, for energies up to 2^31 - 1. */
 static void kinds_build_is_reference(void **state)
 {
-    uint32_t up[80], mid[80], dn[80], s = 5u, t, i;
-    uint8_t a[80], b[80];
+    uint32_t up[KN], mid[KN], dn[KN], s = 5u, t, i, k;
+    uint32_t ea[SL_KINDS_WORDS], eb[SL_KINDS_WORDS], ec[SL_KINDS_WORDS], any;
+    uint8_t a[KN], b[KN], c[KN];
+    int8_t sa[KN], sb[KN], sc[KN];
     (void)state;
-    for (t = 0; t < 4000u; t++) {
-        const uint32_t n = tu_rand(&s) % 70u, off = tu_rand(&s) % 8u;
-        const uint32_t big = (t % 3u == 0u) ? 0x7fffffffu - 8u : 0u;
-        const uint32_t range = (t % 2u == 0u) ? 3u : 0x7fffffffu;
-        for (i = 0; i < 80u; i++) {
-            up[i] = big + tu_rand(&s) % range % (0x7fffffffu - big + 1u);
-            mid[i] = big + tu_rand(&s) % range % (0x7fffffffu - big + 1u);
-            dn[i] = big + tu_rand(&s) % range % (0x7fffffffu - big + 1u);
+    for (t = 0; t < 6000u; t++) {
+        const uint32_t n =
+            1u + tu_rand(&s) % ((t % 2u == 0u && SL_KINDS_MAX > 70u) ? 70u : SL_KINDS_MAX);
+        const uint32_t off = 1u + tu_rand(&s) % 6u, words = (n + 31u) / 32u;
+        random_row(up, t, &s);
+        random_row(mid, t, &s);
+        random_row(dn, t, &s);
+        for (k = 0; k < 2u; k++) {
+            uint32_t ra, rb;
+            memset(a, 0x77, sizeof a);
+            memset(b, 0x77, sizeof b);
+            memset(c, 0x77, sizeof c);
+            memset(ea, 0x55, sizeof ea);
+            memset(eb, 0x55, sizeof eb);
+            if (k == 0u) { /* along the row mid */
+                kinds_rule(mid + off - 1u, mid + off, mid + off + 1u, n, c + off, ec);
+                ra = symline_i_extrema_along(mid + off, n, a + off, ea);
+                rb = symline_i_extrema_along_c(mid + off, n, b + off, eb);
+            } else { /* down the columns: up, mid, dn */
+                kinds_rule(up + off, mid + off, dn + off, n, c + off, ec);
+                for (i = 0; i < KN; i++) {
+                    sa[i] = sb[i] = (int8_t)((mid[i] > up[i]) - (mid[i] < up[i]));
+                    sc[i] = (int8_t)((dn[i] > mid[i]) - (dn[i] < mid[i]));
+                }
+                ra = symline_i_extrema_across(mid + off, dn + off, sa + off, n, a + off, ea);
+                rb = symline_i_extrema_across_c(mid + off, dn + off, sb + off, n, b + off, eb);
+                assert_memory_equal(sa + off, sc + off, n);
+                assert_memory_equal(sb + off, sc + off, n);
+                assert_memory_equal(sa, sb, sizeof sa); /* nothing outside the n entries */
+            }
+            for (any = 0u, i = 0; i < words; i++) {
+                any |= ec[i];
+            }
+            assert_memory_equal(a + off, c + off, n);
+            assert_memory_equal(b + off, c + off, n);
+            assert_memory_equal(a, b, sizeof a);
+            assert_memory_equal(ea, ec, words * sizeof *ea);
+            assert_memory_equal(eb, ec, words * sizeof *eb);
+            assert_int_equal(ra, any);
+            assert_int_equal(rb, any);
         }
-        memset(a, 0x77, sizeof a);
-        memset(b, 0x77, sizeof b);
-        assert_int_equal(symline_i_extrema_kinds(up + off, mid + off, dn + off, n, a + off) != 0u,
-                         symline_i_extrema_kinds_c(up + off, mid + off, dn + off, n, b + off) !=
-                             0u);
-        assert_memory_equal(a, b, sizeof a);
     }
 }
 
