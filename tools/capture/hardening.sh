@@ -115,8 +115,11 @@ for sig in INT TERM; do
     fi
 done
 
-# 5. A stop signal in the middle of cluttered frames: the loop ends within one
-#    frame time (the detection time is bounded; the signal is seen after it).
+# 5. A stop signal in the middle of cluttered frames: the loop ends within about
+#    one frame time (the detection time is bounded; the signal is seen after it).
+#    Allowed: two median frames + 500 ms, since other processes on a loaded
+#    machine may slow the frame in flight beyond the median; the rest of the
+#    list (tens of frames) would take far longer.
 if [ -n "$adv" ]; then
     "$adv" rings 2560 1920 "$tmp/rings.pgm"
     i=0
@@ -135,8 +138,8 @@ if [ -n "$adv" ]; then
     frame_ms=$(sed -n 's/.*"latency_ms": \([0-9.]*\).*/\1/p' "$tmp/rings.jsonl" | sort -n |
         awk '{a[NR] = $1} END {if (NR) print a[int((NR + 1) / 2)]}')
     frame_ms=${frame_ms%.*}
-    if [ $got -ne 0 ] || [ -z "$frame_ms" ] || [ $ms -gt $((frame_ms + 250)) ]; then
-        bad "SIGTERM mid-frame: exit $got after $ms ms; a frame takes ${frame_ms:-?} ms (allowed: one frame + 250 ms)"
+    if [ $got -ne 0 ] || [ -z "$frame_ms" ] || [ $ms -gt $((2 * frame_ms + 500)) ]; then
+        bad "SIGTERM mid-frame: exit $got after $ms ms; a frame takes ${frame_ms:-?} ms (allowed: two frames + 500 ms)"
         cat "$tmp/err"
     else
         echo "SIGTERM mid-frame: stopped after $ms ms; a frame takes $frame_ms ms"
