@@ -12,9 +12,8 @@
  */
 #include "grid.h"
 
-/* Pixels x0 .. w-1 one block at a time. */
-static void blocks(const uint8_t *src, size_t stride, uint32_t level, uint32_t x0, uint32_t w,
-                   uint8_t *out)
+void symline_i_grid_blocks(const uint8_t *src, size_t stride, uint32_t level, uint32_t x0,
+                           uint32_t w, uint8_t *out)
 {
     const uint32_t s = 1u << level, shift = 2u * level;
     uint32_t x, d, i;
@@ -77,5 +76,5 @@ void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t
         lanes(src, stride, level, w, acc, out);
         return;
     }
-    blocks(src, stride, level, 0u, w, out);
+    symline_i_grid_blocks(src, stride, level, 0u, w, out);
 }
