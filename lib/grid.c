@@ -12,8 +12,9 @@
  */
 #include "grid.h"
 
-void symline_i_grid_blocks(const uint8_t *src, size_t stride, uint32_t level, uint32_t x0,
-                           uint32_t w, uint8_t *out)
+/* Pixels x0 .. w-1 one block at a time. */
+static void blocks(const uint8_t *src, size_t stride, uint32_t level, uint32_t x0, uint32_t w,
+                   uint8_t *out)
 {
     const uint32_t s = 1u << level, shift = 2u * level;
     uint32_t x, d, i;
@@ -76,5 +77,5 @@ void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t
         lanes(src, stride, level, w, acc, out);
         return;
     }
-    symline_i_grid_blocks(src, stride, level, 0u, w, out);
+    blocks(src, stride, level, 0u, w, out);
 }

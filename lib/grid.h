@@ -18,12 +18,6 @@
 void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t y, uint16_t *acc,
                               uint8_t *out);
 
-/* Grid pixels x0 .. w-1 of the row whose block rows start at src (frame
- * rows `stride` bytes apart), one block at a time: the size builds' form,
- * and where a port's lanes leave the last few blocks of a row. */
-void symline_i_grid_blocks(const uint8_t *src, size_t stride, uint32_t level, uint32_t x0,
-                           uint32_t w, uint8_t *out);
-
 struct symline_i_pass; /* linepoints.h */
 
 /* The row y of pass p's grid, as above at p->level (linepoints.c). A port's
