@@ -92,10 +92,15 @@ static uint32_t along32(const uint32_t *E, uint32_t n, uint8_t *map)
             : "cc", "memory");
         E--;
     }
-    if ((n & 1u) != 0u) {
-        uint32_t ev1;
-        (void)symline_i_extrema_along_c(E, 1u, map, &ev1);
-        bits |= ev1 << (n - 1u);
+    if ((n & 1u) != 0u) { /* the last entry, E[0] here */
+        const uint32_t d1 = E[0] - E[-1], d2 = E[0] - E[1];
+        if (d1 == 0u || d2 == 0u) {
+            *map = SYMLINE_MAP_NONE;
+            bits |= (uint32_t)((d1 == 0u) != (d2 == 0u)) << (n - 1u);
+        } else {
+            *map = (uint8_t)((((d1 | d2) >> 31) ? 0u : (uint32_t)SYMLINE_MAP_A) |
+                             ((d1 & d2) >> 31) * 0xffu);
+        }
     }
     return bits;
 }
