@@ -149,29 +149,6 @@ uint32_t symline_i_extrema_across_c(const uint32_t *restrict mid, const uint32_t
     return any;
 }
 
-#ifdef SYMLINE_PORT_EXTREMA_KINDS
-/* Entries per call of the port's decision; the plateau ends are looked for
- * only in the blocks it flags (port/CMakeLists.txt may choose). */
-#ifndef SL_PLATEAU_BLOCK
-#define SL_PLATEAU_BLOCK 16u
-#endif
-
-uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map)
-{
-    uint32_t x, flat = 0u;
-    for (x = 0; x < n; x++) {
-        const uint32_t a = up[x], b = mid[x], c = dn[x];
-        const uint32_t s = ((b - a) & (b - c)) >> 31;
-        const uint32_t l = ((a - b) & (c - b)) >> 31;
-        map[x] = (uint8_t)((0u - s) | (l << 7));
-        flat |= (uint32_t)(a == b) | (uint32_t)(b == c);
-    }
-    return flat;
-}
-
-#endif
-
 /* The plateau mask words of n <= SL_KINDS_MAX entries (one where the blocks
  * are 32 entries: the loops over words fold away). */
 #define SL_WORDS(n) (SL_KINDS_WORDS == 1u ? 1u : ((n) + 31u) / 32u)
@@ -222,21 +199,6 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
     uint32_t x0, x1, a = 0u;
     map[0] = SYMLINE_MAP_NONE;
     map[n - 1u] = SYMLINE_MAP_NONE;
-#ifdef SYMLINE_PORT_EXTREMA_KINDS
-    /* The port's three-row decision: the run ends looked for entry by entry
-     * in the blocks it flags. */
-    for (x0 = 1u; x0 + 1u < n; x0 = x1) {
-        x1 = x0 + ((n - 1u - x0 > SL_PLATEAU_BLOCK) ? SL_PLATEAU_BLOCK : n - 1u - x0);
-        if (symline_i_extrema_kinds(E + x0 - 1u, E + x0, E + x0 + 1u, x1 - x0, map + x0) != 0u) {
-            uint32_t i;
-            for (i = x0; i < x1; i++) {
-                if ((E[i - 1u] == E[i]) != (E[i] == E[i + 1u])) {
-                    run_mark(E, i, lag, map, &a);
-                }
-            }
-        }
-    }
-#else
     uint32_t k, ev[SL_KINDS_WORDS];
     for (x0 = 1u; x0 + 1u < n; x0 = x1) {
         x1 = x0 + ((n - 1u - x0 > SL_KINDS_MAX) ? SL_KINDS_MAX : n - 1u - x0);
@@ -250,7 +212,6 @@ void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t
             }
         }
     }
-#endif
 }
 
 /* Column x, where a run of equal energies begins or ends at row t-1 >= 1. A
@@ -289,21 +250,6 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
             cd->sg[i] = 0;
         }
     }
-#ifdef SYMLINE_PORT_EXTREMA_KINDS
-    /* The port's three-row decision: the plateau ends looked for column by
-     * column in the blocks it flags. */
-    for (i = 0; i < w; i += nb) {
-        nb = (w - i > SL_PLATEAU_BLOCK) ? SL_PLATEAU_BLOCK : w - i;
-        if (symline_i_extrema_kinds(up + i, mid + i, E + i, nb, mr + i) != 0u) {
-            uint32_t x;
-            for (x = i; x < i + nb; x++) {
-                if ((up[x] == mid[x]) != (mid[x] == E[x])) {
-                    plateau_down(cd, up, mid, E, t, x);
-                }
-            }
-        }
-    }
-#else
     uint32_t k, ev[SL_KINDS_WORDS];
     for (i = 0; i < w; i += nb) {
         nb = (w - i > SL_KINDS_MAX) ? SL_KINDS_MAX : w - i;
@@ -317,7 +263,6 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
             }
         }
     }
-#endif
 }
 
 symline_status symline_extrema_row(const uint32_t *E, uint32_t n, uint8_t *map)

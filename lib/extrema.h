@@ -62,19 +62,6 @@ uint32_t symline_i_extrema_across(const uint32_t *restrict mid, const uint32_t *
 #endif
 
 /*
- * A port's decision of three rows (SYMLINE_PORT_EXTREMA_KINDS, a scalar
- * core's version, port/armv7em/): map[x] as above for n entries of the rows
- * up, mid and dn; returns nonzero when some mid[x] equals up[x] or dn[x].
- * symline_i_extrema_kinds_c() is its portable reference. Where a port has
- * it, the detector decides along and down with it and finds the plateau
- * ends in the flagged blocks.
- */
-uint32_t symline_i_extrema_kinds_c(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                   const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map);
-uint32_t symline_i_extrema_kinds(const uint32_t *restrict up, const uint32_t *restrict mid,
-                                 const uint32_t *restrict dn, uint32_t n, uint8_t *restrict map);
-
-/*
  * Extrema of a row of n >= 1 energies into map (n entries: NONE, A or S) by
  * the run rule: a run of equal energies with larger neighbours on both sides
  * is an S point at its middle (lower middle for even lengths), with smaller

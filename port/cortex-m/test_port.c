@@ -19,15 +19,15 @@
 #ifdef SYMLINE_PORT_GRID
 #include "linepoints.h"
 #endif
-#ifdef SYMLINE_PORT_EXTREMA_KINDS
+#ifdef SYMLINE_PORT_EXTREMA_ROWS
 #include "extrema.h"
 #endif
 #if defined(SYMLINE_PORT_DROP_DIM_S) || defined(SYMLINE_PORT_FIND_S)
 #include "linepoints.h"
 #endif
 
-#if defined(SYMLINE_PORT_ENERGY) || defined(SYMLINE_PORT_GRID) ||                                 \
-    defined(SYMLINE_PORT_EXTREMA_KINDS) || defined(SYMLINE_PORT_DROP_DIM_S) ||                     \
+#if defined(SYMLINE_PORT_ENERGY) || defined(SYMLINE_PORT_GRID) ||                                  \
+    defined(SYMLINE_PORT_EXTREMA_ROWS) || defined(SYMLINE_PORT_DROP_DIM_S) ||                      \
     defined(SYMLINE_PORT_FIND_S)
 static uint32_t rng_state = 12345u;
 
@@ -57,8 +57,8 @@ static uint32_t pt_e1[PT_ROW], pt_e2[PT_ROW];
 static void energy_checks(void)
 {
     static const uint32_t radii[] = {1u, 2u, 3u, 4u, 5u, 7u, 10u, 32u, 128u, 129u, 255u};
-    static const uint32_t lens[] = {1u, 2u, 3u, 5u, 7u, 8u, 9u, 15u, 16u, 17u, 22u, 23u,
-                                    24u, 25u, 40u, 67u, 161u, 320u, 400u};
+    static const uint32_t lens[] = {1u,  2u,  3u,  5u,  7u,  8u,  9u,   15u,  16u, 17u,
+                                    22u, 23u, 24u, 25u, 40u, 67u, 161u, 320u, 400u};
     unsigned r, l, off, round = 0u;
     const uint8_t *rows[2u * 130u + 1u];
     for (r = 0; r < sizeof radii / sizeof radii[0]; r++) {
@@ -135,10 +135,12 @@ static void grid_checks(void)
 }
 #endif
 
-#ifdef SYMLINE_PORT_EXTREMA_KINDS
+#ifdef SYMLINE_PORT_EXTREMA_ROWS
 #define PT_N 150u
-static uint32_t pt_up[PT_N], pt_mid[PT_N + 2u], pt_dn[PT_N];
+static uint32_t pt_mid[PT_N + 2u], pt_dn[PT_N];
 static uint8_t pt_k1[PT_N], pt_k2[PT_N];
+static int8_t pt_s1[PT_N], pt_s2[PT_N];
+static uint32_t pt_w1[SL_KINDS_WORDS], pt_w2[SL_KINDS_WORDS];
 
 /* Energies from a few values only (plateaus everywhere) or from the whole
  * range below 2^31 (differences of either sign up to 2^31 - 1). */
@@ -149,32 +151,35 @@ static uint32_t rnd_energy(unsigned round)
     return (round % 3u == 0u) ? v % 3u : (round % 3u == 1u) ? v % 40u : v;
 }
 
-static void kinds_checks(void)
+/* Along a row and down the columns (signs -1, 0, +1 to the row above), the
+ * maps, the plateau masks, their OR and the next row's signs. */
+static void rows_checks(void)
 {
     unsigned round;
     for (round = 0; round < 60u; round++) {
         uint32_t n, i;
         for (i = 0; i < PT_N; i++) {
-            pt_up[i] = rnd_energy(round);
             pt_dn[i] = rnd_energy(round);
             pt_mid[i] = rnd_energy(round);
+            pt_s1[i] = pt_s2[i] = (int8_t)(rnd8() % 3u) - 1;
         }
         pt_mid[PT_N] = rnd_energy(round);
         pt_mid[PT_N + 1u] = rnd_energy(round);
-        for (n = 1u; n <= PT_N; n += 1u + n / 8u) {
-            const uint32_t f1 = symline_i_extrema_kinds(pt_up, pt_mid, pt_dn, n, pt_k1);
-            const uint32_t f2 = symline_i_extrema_kinds_c(pt_up, pt_mid, pt_dn, n, pt_k2);
-            FW_CHECK(memcmp(pt_k1, pt_k2, n) == 0 && (f1 != 0u) == (f2 != 0u),
-                     "extrema kinds of three rows, n=%lu round %u", (unsigned long)n, round);
-            /* along a row: the row shifted by one entry either way */
-            {
-                const uint32_t g1 =
-                    symline_i_extrema_kinds(pt_mid, pt_mid + 1, pt_mid + 2, n, pt_k1);
-                const uint32_t g2 =
-                    symline_i_extrema_kinds_c(pt_mid, pt_mid + 1, pt_mid + 2, n, pt_k2);
-                FW_CHECK(memcmp(pt_k1, pt_k2, n) == 0 && (g1 != 0u) == (g2 != 0u),
-                         "extrema kinds along a row, n=%lu round %u", (unsigned long)n, round);
-            }
+        for (n = 1u; n <= PT_N && n <= SL_KINDS_MAX; n += 1u + n / 8u) {
+            uint32_t f1, f2;
+            memset(pt_w1, 0xa5, sizeof pt_w1);
+            memset(pt_w2, 0xa5, sizeof pt_w2);
+            f1 = symline_i_extrema_along(pt_mid + 1, n, pt_k1, pt_w1);
+            f2 = symline_i_extrema_along_c(pt_mid + 1, n, pt_k2, pt_w2);
+            FW_CHECK(memcmp(pt_k1, pt_k2, n) == 0 && f1 == f2 &&
+                         memcmp(pt_w1, pt_w2, 4u * ((n + 31u) / 32u)) == 0,
+                     "extrema along a row, n=%lu round %u", (unsigned long)n, round);
+            f1 = symline_i_extrema_across(pt_mid, pt_dn, pt_s1, n, pt_k1, pt_w1);
+            f2 = symline_i_extrema_across_c(pt_mid, pt_dn, pt_s2, n, pt_k2, pt_w2);
+            FW_CHECK(memcmp(pt_k1, pt_k2, n) == 0 && f1 == f2 &&
+                         memcmp(pt_w1, pt_w2, 4u * ((n + 31u) / 32u)) == 0 &&
+                         memcmp(pt_s1, pt_s2, n) == 0,
+                     "extrema down the columns, n=%lu round %u", (unsigned long)n, round);
         }
     }
 }
@@ -255,8 +260,8 @@ void fw_port_checks(void)
 #ifdef SYMLINE_PORT_GRID
     grid_checks();
 #endif
-#ifdef SYMLINE_PORT_EXTREMA_KINDS
-    kinds_checks();
+#ifdef SYMLINE_PORT_EXTREMA_ROWS
+    rows_checks();
 #endif
 #ifdef SYMLINE_PORT_DROP_DIM_S
     drop_checks();
