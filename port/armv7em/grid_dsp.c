@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * symline_i_grid_row() (the scale grid's box sums, lib/linepoints.c) with the
- * ARMv7E-M DSP instructions (Cortex-M4, M7), selected at build time (CMake
+ * symline_i_grid_row() (the scale grid's box sums: lib/grid.h; the portable
+ * row call in lib/linepoints.c, over lib/grid.c) with the ARMv7E-M DSP
+ * instructions (Cortex-M4, M7), selected at build time (CMake
  * option SYMLINE_SIMD, port/CMakeLists.txt) in place of the portable
  * reference symline_i_grid_row_c(), with the same output (the target tests,
  * port/cortex-m/test_core.c, compare the two).
@@ -13,7 +14,8 @@
  * halves), four outputs per step; larger blocks four bytes per USADA8
  * (the sum of absolute differences against zero is the sum of the bytes),
  * the 4x4 and 8x8 blocks of levels 2 and 3 unrolled. The rounding half
- * block starts the sums.
+ * block starts the sums. The blocks left at a row's end go through
+ * symline_i_grid_blocks() (lib/grid.c), as in the portable size form.
  */
 #include <arm_acle.h>
 #include <string.h>
