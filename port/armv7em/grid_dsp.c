@@ -14,8 +14,7 @@
  * halves), four outputs per step; larger blocks four bytes per USADA8
  * (the sum of absolute differences against zero is the sum of the bytes),
  * the 4x4 and 8x8 blocks of levels 2 and 3 unrolled. The rounding half
- * block starts the sums. The blocks left at a row's end go through
- * symline_i_grid_blocks() (lib/grid.c), as in the portable size form.
+ * block starts the sums.
  */
 #include <arm_acle.h>
 #include <string.h>
