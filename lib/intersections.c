@@ -402,7 +402,9 @@ static void add_sorted(uint32_t *list, uint8_t *n, uint32_t cap, uint32_t v, uin
 
 /* The rays of a crossing of a and b into rays[]: their number, or 0 when
  * either gives none or the two meet at less than the minimum angle (one line
- * continuing, or parallel lines). */
+ * continuing, or parallel lines). Pieces on one line (angle 0) never meet,
+ * also with a minimum angle of 0: their rays would count once, and an
+ * intersection needs two. */
 SL_NOINLINE static uint32_t hit_rays(const ix_poly *a, uint32_t ka, const ix_poly *b,
                                      const ix_hit *h, const ix_params *ip, uint32_t *rays)
 {
@@ -412,7 +414,9 @@ SL_NOINLINE static uint32_t hit_rays(const ix_poly *a, uint32_t ka, const ix_pol
         return 0u;
     }
     nr = na + rays_of(b, 0u, h, h->tb, ip, rays + na);
-    return nr == na || lines_between(rays[0], rays[na]) < ip->min_angle ? 0u : nr;
+    return nr == na || lines_between(rays[0], rays[na]) < (ip->min_angle != 0u ? ip->min_angle : 1u)
+               ? 0u
+               : nr;
 }
 
 /* The crossing h of segments sa and sb with its rays joins the intersection

@@ -24,7 +24,8 @@
  * with curves; two curves are not crossed (where they meet end to end is the
  * centre circle cut by the tracer, not a corner). A segment gives a ray in
  * each direction in which it goes on past the crossing by at least `arm_q8`. Pieces meeting at less than `min_angle_q8` are one line
- * continuing, or parallel lines: no intersection. Crossings of several
+ * continuing, or parallel lines: no intersection (pieces on one line never
+ * meet, also with `min_angle_q8` 0). Crossings of several
  * pairs closer than `merge_q8` are one intersection: their rays are joined
  * (rays less than min_angle apart count once), so a bar split at a T by the
  * tracer still gives one T, and two L pieces crossing a line one X.
