@@ -12,24 +12,6 @@
  */
 #include "grid.h"
 
-/* Pixels x0 .. w-1 one block at a time. */
-static void blocks(const uint8_t *src, size_t stride, uint32_t level, uint32_t x0, uint32_t w,
-                   uint8_t *out)
-{
-    const uint32_t s = 1u << level, shift = 2u * level;
-    uint32_t x, d, i;
-    for (x = x0; x < w; x++) {
-        const uint8_t *b = src + (size_t)x * s;
-        uint32_t sum = (1u << shift) >> 1; /* half a block: rounds */
-        for (d = 0; d < s; d++, b += stride) {
-            for (i = 0; i < s; i++) {
-                sum += b[i];
-            }
-        }
-        out[x] = (uint8_t)(sum >> shift);
-    }
-}
-
 /* Neighbour pairs of a[0 .. 2n-1] into b[0 .. n-1]. */
 static void pairs(const uint16_t *restrict a, size_t n, uint16_t *restrict b)
 {
@@ -77,5 +59,5 @@ void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t
         lanes(src, stride, level, w, acc, out);
         return;
     }
-    blocks(src, stride, level, 0u, w, out);
+    symline_i_grid_blocks(src, stride, level, 0u, w, out);
 }

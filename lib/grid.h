@@ -18,6 +18,27 @@
 void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t y, uint16_t *acc,
                               uint8_t *out);
 
+/* Grid pixels x0 .. w-1 of the row whose blocks start at src (frame rows
+ * `stride` bytes apart), one block at a time: the size builds' form, and
+ * where a port's lanes leave the last few blocks of a row. Inline, so that
+ * the size builds keep the code they had. */
+static inline void symline_i_grid_blocks(const uint8_t *src, size_t stride, uint32_t level,
+                                         uint32_t x0, uint32_t w, uint8_t *out)
+{
+    const uint32_t s = 1u << level, shift = 2u * level;
+    uint32_t x, d, i;
+    for (x = x0; x < w; x++) {
+        const uint8_t *b = src + (size_t)x * s;
+        uint32_t sum = (1u << shift) >> 1; /* half a block: rounds */
+        for (d = 0; d < s; d++, b += stride) {
+            for (i = 0; i < s; i++) {
+                sum += b[i];
+            }
+        }
+        out[x] = (uint8_t)(sum >> shift);
+    }
+}
+
 struct symline_i_pass; /* linepoints.h */
 
 /* The row y of pass p's grid, as above at p->level (linepoints.c). A port's

@@ -125,15 +125,5 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     case 5u: x = wide(src, stride, 5u, w, out); break;
     default: symline_i_grid_row_c(img, p, y, acc, out); return;
     }
-    for (; x < w; x++) { /* at most three blocks */
-        const uint32_t s = 1u << level, shift = 2u * level;
-        const uint8_t *b = src + (size_t)x * s;
-        uint32_t sum = (1u << shift) >> 1, d, i;
-        for (d = 0; d < s; d++, b += stride) {
-            for (i = 0; i < s; i++) {
-                sum += b[i];
-            }
-        }
-        out[x] = (uint8_t)(sum >> shift);
-    }
+    symline_i_grid_blocks(src, stride, level, x, w, out); /* at most three blocks */
 }

@@ -114,19 +114,8 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
         }
         return;
     }
-    if (x < w) {
-        /* The rest of the row (the last 1..3 blocks at level 1): one block
-         * at a time as the portable code would. */
-        for (; x < w; x++) {
-            const uint8_t *b = src + (size_t)x * s;
-            uint32_t sum = (1u << shift) >> 1, d, i;
-            for (d = 0; d < s; d++, b += stride) {
-                for (i = 0; i < s; i++) {
-                    sum += b[i];
-                }
-            }
-            out[x] = (uint8_t)(sum >> shift);
-        }
-    }
+    /* The rest of the row (the last 1..3 blocks at level 1): one block at a
+     * time as the portable code would. */
+    symline_i_grid_blocks(src, stride, level, x, w, out);
     (void)acc;
 }
