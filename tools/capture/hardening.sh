@@ -77,9 +77,11 @@ fi
 expect_fast 1 "cannot create /dev/null/rec" -- --replay "$data" --record 1 /dev/null/rec --summary-every 0
 
 # 4. Recordings cut by a signal: every frame a record reports is recorded whole.
+# Long enough that the signal comes first: at about 400 frames a second (the
+# bundled frames with recording) 200 rounds ended before it.
 i=0
 : >"$tmp/frames.txt"
-while [ $i -lt 200 ]; do
+while [ $i -lt 2000 ]; do
     for f in "$data"/*.pgm; do echo "$f" >>"$tmp/frames.txt"; done
     i=$((i + 1))
 done
