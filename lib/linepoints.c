@@ -125,6 +125,39 @@ static uint32_t energy_at(const line_view *l, uint32_t i)
     return outside_pairs(j, m, sum, e);
 }
 
+/* E(i-1), E(i) and E(i+1) of entry 0 < i < n-1 of the line. */
+static SL_ALWAYS_INLINE void energies3(const line_view *l, uint32_t i, uint32_t *up, uint32_t *e,
+                                       uint32_t *dn)
+{
+    if (SL_FOR_SPEED && i > l->m && i + l->m + 1u < l->n) {
+        /* Inside the line: the three in one loop over the pairs. */
+        const ptrdiff_t step = l->step;
+        const uint8_t *lo = l->c0 + ((ptrdiff_t)i - (ptrdiff_t)l->i0) * step, *hi = lo;
+        uint32_t j, su = 0u, sc = 0u, sd = 0u, eu = 0u, ec = 0u, ed = 0u;
+        for (j = 1u; j <= l->m; j++) {
+            int32_t du, dc, dd;
+            lo -= step;
+            hi += step;
+            du = (int32_t)lo[-step] - (int32_t)hi[-step];
+            dc = (int32_t)lo[0] - (int32_t)hi[0];
+            dd = (int32_t)lo[step] - (int32_t)hi[step];
+            su += (uint32_t)(du * du);
+            sc += (uint32_t)(dc * dc);
+            sd += (uint32_t)(dd * dd);
+            eu += su;
+            ec += sc;
+            ed += sd;
+        }
+        *up = eu;
+        *e = ec;
+        *dn = ed;
+    } else {
+        *up = energy_at(l, i - 1u);
+        *e = energy_at(l, i);
+        *dn = energy_at(l, i + 1u);
+    }
+}
+
 /*
  * Whether entry i of the line is an S point (s) or an A point (!s) by the run
  * rule of docs/algorithm.md with the plateau limit: the middle of a run
@@ -140,33 +173,7 @@ static bool extremum_at(const line_view *l, uint32_t i, bool s)
         return false;
     }
     SL_STAGE(OPERATOR);
-    if (SL_FOR_SPEED && i > l->m && i + l->m + 1u < l->n) {
-        /* Inside the line: E(i-1), E(i), E(i+1) in one loop over the pairs. */
-        const ptrdiff_t step = l->step;
-        const uint8_t *lo = l->c0 + ((ptrdiff_t)i - (ptrdiff_t)l->i0) * step, *hi = lo;
-        uint32_t j, su = 0u, sc = 0u, sd = 0u;
-        up = 0u;
-        e = 0u;
-        dn = 0u;
-        for (j = 1u; j <= l->m; j++) {
-            int32_t du, dc, dd;
-            lo -= step;
-            hi += step;
-            du = (int32_t)lo[-step] - (int32_t)hi[-step];
-            dc = (int32_t)lo[0] - (int32_t)hi[0];
-            dd = (int32_t)lo[step] - (int32_t)hi[step];
-            su += (uint32_t)(du * du);
-            sc += (uint32_t)(dc * dc);
-            sd += (uint32_t)(dd * dd);
-            up += su;
-            e += sc;
-            dn += sd;
-        }
-    } else {
-        e = energy_at(l, i);
-        up = energy_at(l, i - 1u);
-        dn = energy_at(l, i + 1u);
-    }
+    energies3(l, i, &up, &e, &dn);
     SL_STAGE(EXTREMA);
     /* The run of equal energies through i, followed on the slow path. */
     while (up == e) {
@@ -238,6 +245,73 @@ static SL_ALWAYS_INLINE void decide_edge(const symline_i_linefilter *f, line_vie
               pts, cap, n, dropped);
 }
 
+/* symline_i_linefilter_gray() as one expression, for the batches below: its
+ * early returns would be branches that go either way. */
+static SL_ALWAYS_INLINE uint32_t gray_ok(const symline_i_linefilter *f, uint32_t c, uint32_t lo,
+                                         uint32_t hi)
+{
+    const uint32_t side = lo > hi ? lo : hi, diff = lo > hi ? lo - hi : hi - lo;
+    const uint32_t ridge = f->ridge_pct == 0u ? 0u : (c * f->ridge_pct + 99u) / 100u;
+    const uint32_t asym = (diff * f->asym_pct + 99u) / 100u;
+    uint32_t need = ridge > f->ridge_min ? ridge : f->ridge_min;
+    need = asym > need ? asym : need;
+    if (f->kind == SYMLINE_FILTER_PAPER) {
+        return (uint32_t)(c >= f->min_gray);
+    }
+    return (uint32_t)(c >= f->min_gray) & (uint32_t)(c > side) & (uint32_t)(side <= f->side_max) &
+           (uint32_t)(c - side >= need);
+}
+
+/* The candidates cand[0..k-1] of row v (interior entries: x = dk + cand[i])
+ * in three steps over the batch: the exact gray test, then the energies and
+ * the S decision (a plateau on extremum_at()'s slow path), then the points.
+ * A candidate passes each test about as often as it fails: one branch per
+ * test and candidate would be mispredicted half the time, the batches
+ * compact their lists without branches. */
+static SL_ALWAYS_INLINE void decide_batch(const symline_i_linefilter *f, line_view *l,
+                                          const row_view *v, uint16_t *cand, uint32_t k, bool along,
+                                          symline_point *pts, uint32_t cap, uint32_t *n,
+                                          uint32_t *dropped)
+{
+    const uint32_t dk = v->dk;
+    uint32_t i, kg = 0u, ks = 0u;
+    for (i = 0; i < k; i++) {
+        const uint32_t j = cand[i];
+        cand[kg] = (uint16_t)(dk + j);
+        kg += gray_ok(f, v->c[dk + j], v->lo[j], v->hi[j + 2u * dk]);
+    }
+    SL_STAGE(OPERATOR);
+    for (i = 0; i < kg; i++) {
+        const uint32_t x = cand[i], at = along ? x : v->y;
+        uint32_t up = 0u, e = 0u, dn = 0u, s;
+        if (!along) {
+            l->c0 = v->c + x; /* down column x from row y */
+        }
+        if (at != 0u && at + 1u < l->n) {
+            energies3(l, at, &up, &e, &dn);
+        }
+        s = (uint32_t)(up > e) & (uint32_t)(dn > e);
+        if (up == e || dn == e) {
+            s = (uint32_t)extremum_at(l, at, true);
+        }
+        cand[ks] = (uint16_t)x;
+        ks += s;
+    }
+    SL_STAGE(FILTER);
+    for (i = 0; i < ks; i++) {
+        const uint32_t x = cand[i];
+        if (f->a_distance != 0u) {
+            if (!along) {
+                l->c0 = v->c + x;
+            }
+            if (!a_near(l, along ? x : v->y, f->a_distance)) {
+                continue;
+            }
+        }
+        push_point(pts, cap, n, x, v->y, dropped);
+    }
+}
+
 /* The line points of grid row v->y: the byte test over the row's interior
  * (where both sides lie in the row; the whole row down the columns) gives
  * the few candidates, the exact tests follow at those alone. */
@@ -262,6 +336,10 @@ static SL_ALWAYS_INLINE void decide_row(const symline_i_linefilter *f, line_view
         symline_i_prefilter_setup(f, &pf);
         while (at < len) {
             k = symline_i_line_cand(&pf, ic, ilo, ihi, at, len, cand, &at);
+            if (SL_FOR_SPEED) {
+                decide_batch(f, l, v, cand, k, along, pts, cap, n, dropped);
+                continue;
+            }
             for (i = 0; i < k; i++) {
                 const uint32_t j = cand[i];
                 decide_at(f, l, v, dk + j, v->lo[j], v->hi[j + 2u * dk], along, pts, cap, n,
