@@ -125,32 +125,43 @@ static uint32_t energy_at(const line_view *l, uint32_t i)
     return outside_pairs(j, m, sum, e);
 }
 
+/* E(i-1), E(i) and E(i+1) of an entry at least m + 1 entries inside the
+ * line, in one loop over the pairs; m a constant where that pays (below). */
+static SL_ALWAYS_INLINE void energies3_in(const line_view *l, uint32_t i, uint32_t m, uint32_t *up,
+                                          uint32_t *e, uint32_t *dn)
+{
+    const ptrdiff_t step = l->step;
+    const uint8_t *lo = l->c0 + ((ptrdiff_t)i - (ptrdiff_t)l->i0) * step, *hi = lo;
+    uint32_t j, su = 0u, sc = 0u, sd = 0u, eu = 0u, ec = 0u, ed = 0u;
+    for (j = 1u; j <= m; j++) {
+        int32_t du, dc, dd;
+        lo -= step;
+        hi += step;
+        du = (int32_t)lo[-step] - (int32_t)hi[-step];
+        dc = (int32_t)lo[0] - (int32_t)hi[0];
+        dd = (int32_t)lo[step] - (int32_t)hi[step];
+        su += (uint32_t)(du * du);
+        sc += (uint32_t)(dc * dc);
+        sd += (uint32_t)(dd * dd);
+        eu += su;
+        ec += sc;
+        ed += sd;
+    }
+    *up = eu;
+    *e = ec;
+    *dn = ed;
+}
+
 /* E(i-1), E(i) and E(i+1) of entry 0 < i < n-1 of the line. */
 static SL_ALWAYS_INLINE void energies3(const line_view *l, uint32_t i, uint32_t *up, uint32_t *e,
                                        uint32_t *dn)
 {
     if (SL_FOR_SPEED && i > l->m && i + l->m + 1u < l->n) {
-        /* Inside the line: the three in one loop over the pairs. */
-        const ptrdiff_t step = l->step;
-        const uint8_t *lo = l->c0 + ((ptrdiff_t)i - (ptrdiff_t)l->i0) * step, *hi = lo;
-        uint32_t j, su = 0u, sc = 0u, sd = 0u, eu = 0u, ec = 0u, ed = 0u;
-        for (j = 1u; j <= l->m; j++) {
-            int32_t du, dc, dd;
-            lo -= step;
-            hi += step;
-            du = (int32_t)lo[-step] - (int32_t)hi[-step];
-            dc = (int32_t)lo[0] - (int32_t)hi[0];
-            dd = (int32_t)lo[step] - (int32_t)hi[step];
-            su += (uint32_t)(du * du);
-            sc += (uint32_t)(dc * dc);
-            sd += (uint32_t)(dd * dd);
-            eu += su;
-            ec += sc;
-            ed += sd;
+        if (l->m == 3u) { /* the default radius: unrolled, constant offsets */
+            energies3_in(l, i, 3u, up, e, dn);
+        } else {
+            energies3_in(l, i, l->m, up, e, dn);
         }
-        *up = eu;
-        *e = ec;
-        *dn = ed;
     } else {
         *up = energy_at(l, i - 1u);
         *e = energy_at(l, i);
