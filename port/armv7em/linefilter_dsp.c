@@ -12,10 +12,10 @@
  * (UQSUB8) that leave zero exactly where a test passes; 1 minus all three,
  * saturating, is 1 in a lane that passes. One to five entries in a hundred
  * pass, so a step tests 16 entries and one branch skips it when none
- * passes; only then are its lanes visited. The step is in assembly, 53
- * instructions (3.3 per entry: 3 loads and 9 lane instructions per word,
+ * passes; only then are its lanes visited. The step is in assembly, 54
+ * instructions (3.4 per entry: 3 loads and 9 lane instructions per word,
  * 3 ORs, 3 for the branches), where GCC's from the same intrinsics takes
- * about 70 (it keeps the row pointers on the stack). On the benchmark's
+ * 68 (it keeps the row pointers on the stack). On the benchmark's
  * 320x240 frame (tools/firmware/insnprof.sh) this function takes 12.3
  * instructions per frame pixel, the portable reference, inlined, about 37.
  */
