@@ -56,30 +56,6 @@ static uint32_t ring_rows(const symline_i_pass *p)
     return 2u * reach(p) + 1u;
 }
 
-size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
-{
-    size_t n = (size_t)2u * SL_ALIGN;
-    if (p->level > 0u) {
-        n += symline_i_align_up((size_t)img_width * sizeof(uint16_t)); /* box accumulator */
-        /* the grid row, or the ring of them down the columns */
-        n += symline_i_align_up((size_t)p->w *
-                                (p->axis == SYMLINE_AXIS_VERTICAL ? 1u : 2u * ring_rows(p)));
-    }
-    return n;
-}
-
-static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x, uint32_t y,
-                       uint32_t *dropped)
-{
-    if (*n >= cap) {
-        (*dropped)++; /* counted, so the result can say how much storage was needed */
-        return;
-    }
-    pts[*n].x = (uint16_t)x;
-    pts[*n].y = (uint16_t)y;
-    (*n)++;
-}
-
 /* The line through a candidate: entry i of it is c0[(i - i0) * step] (a
  * grid row along it, vertical axis; a column down, horizontal axis), n
  * entries. */
@@ -152,12 +128,13 @@ static SL_ALWAYS_INLINE void energies3_in(const line_view *l, uint32_t i, uint32
     *dn = ed;
 }
 
-/* E(i-1), E(i) and E(i+1) of entry 0 < i < n-1 of the line. */
+/* E(i-1), E(i) and E(i+1) of entry 0 < i < n-1 of the line; unrolled at
+ * the default radius where `unroll` is set. */
 static SL_ALWAYS_INLINE void energies3(const line_view *l, uint32_t i, uint32_t *up, uint32_t *e,
-                                       uint32_t *dn)
+                                       uint32_t *dn, bool unroll)
 {
     if (SL_FOR_SPEED && i > l->m && i + l->m + 1u < l->n) {
-        if (l->m == 3u) { /* the default radius: unrolled, constant offsets */
+        if (unroll && l->m == 3u) { /* constant offsets */
             energies3_in(l, i, 3u, up, e, dn);
         } else {
             energies3_in(l, i, l->m, up, e, dn);
@@ -184,7 +161,7 @@ static bool extremum_at(const line_view *l, uint32_t i, bool s)
         return false;
     }
     SL_STAGE(OPERATOR);
-    energies3(l, i, &up, &e, &dn);
+    energies3(l, i, &up, &e, &dn, true);
     SL_STAGE(EXTREMA);
     /* The run of equal energies through i, followed on the slow path. */
     while (up == e) {
@@ -215,45 +192,73 @@ static bool a_near(const line_view *l, uint32_t i, uint32_t d)
     return false;
 }
 
-/* Grid row y's gray values (rows[r] = grid row y0 + r, the decided row at
- * `mid`) and the line filter's candidates in it. */
-typedef struct row_view {
-    const uint8_t *c, *lo, *hi; /* the row, and its sides across the line (down: rows y -+ k) */
-    uint32_t y, w, dk;          /* dk: across the line along the row (vertical axis), else 0 */
-} row_view;
+/* The state of one pass's collection, in the workspace (not on the stack:
+ * the deepest call chain of the detector runs through here). */
+typedef struct lp_ctx {
+    symline_i_linefilter f;     /* a copy: the stores of points cannot change it */
+    line_view l;                /* the line through the candidate at hand */
+    const uint8_t *c, *lo, *hi; /* row y, and its sides across the line (down: rows y -+ k) */
+    symline_point *pts;
+    uint32_t *n, *dropped;
+    uint32_t cap, y, w, dk; /* dk: across the line along the row (vertical axis), else 0 */
+    const symline_image *img;
+    const symline_i_pass *p;
+    uint16_t *acc;     /* box sums of the coarse grids' rows (speed builds) */
+    uint8_t *gray;     /* the coarse grid's row, or ring of rows */
+    uint32_t produced; /* grid rows in the ring so far */
+    uint16_t cand[SL_LINE_CAND_MAX];
+} lp_ctx;
 
-/* Candidate x of row v (its sides lo, hi): a line point when the exact gray
- * test passes, it is an S point along the line l, and, for the paper's
- * filter, an A point lies near it across the line. */
-static SL_ALWAYS_INLINE void decide_at(const symline_i_linefilter *f, line_view *l,
-                                       const row_view *v, uint32_t x, uint32_t lo, uint32_t hi,
-                                       bool along, symline_point *pts, uint32_t cap, uint32_t *n,
-                                       uint32_t *dropped)
+/* In the speed builds each decision is copied into its callers (one copy per
+ * axis); the size builds keep one of each. */
+#if SL_FOR_SPEED
+#define SL_LP_INLINE SL_ALWAYS_INLINE
+#else
+#define SL_LP_INLINE
+#endif
+
+static void push_point(lp_ctx *c, uint32_t x)
 {
-    const uint32_t i = along ? x : v->y;
-    if (!symline_i_linefilter_gray(f, v->c[x], lo, hi)) {
+    if (*c->n >= c->cap) {
+        (*c->dropped)++; /* counted, so the result can say how much storage was needed */
+        return;
+    }
+    c->pts[*c->n].x = (uint16_t)x;
+    c->pts[*c->n].y = (uint16_t)c->y;
+    (*c->n)++;
+}
+
+/* Entry x of row y with sides lo, hi: a line point when the exact gray test
+ * passes, it is an S point along the line through it, and, for the paper's
+ * filter, an A point lies near it across the line. */
+static SL_LP_INLINE void decide_at(lp_ctx *c, uint32_t x, uint32_t lo, uint32_t hi, bool along)
+{
+    const uint32_t i = along ? x : c->y;
+    if (!symline_i_linefilter_gray(&c->f, c->c[x], lo, hi)) {
         return;
     }
     if (!along) {
-        l->c0 = v->c + x; /* down column x from row y */
+        c->l.c0 = c->c + x; /* down column x from row y */
     }
-    if (!extremum_at(l, i, true) || (f->a_distance != 0u && !a_near(l, i, f->a_distance))) {
+    if (!extremum_at(&c->l, i, true) ||
+        (c->f.a_distance != 0u && !a_near(&c->l, i, c->f.a_distance))) {
         SL_STAGE(FILTER);
         return;
     }
     SL_STAGE(FILTER);
-    push_point(pts, cap, n, x, v->y, dropped);
+    push_point(c, x);
 }
 
-/* decide_at() where the sides may lie beyond the row's ends (clamped). */
-static SL_ALWAYS_INLINE void decide_edge(const symline_i_linefilter *f, line_view *l,
-                                         const row_view *v, uint32_t x, bool along,
-                                         symline_point *pts, uint32_t cap, uint32_t *n,
-                                         uint32_t *dropped)
+/* decide_at() for entries x0 .. x1-1, where the sides may lie beyond the
+ * row's ends (clamped): the row's first and last dk entries (all of it in
+ * the size builds). */
+static SL_LP_INLINE void decide_edge(lp_ctx *c, uint32_t x0, uint32_t x1, bool along)
 {
-    const uint32_t w = v->w, dk = v->dk;
-    decide_at(f, l, v, x, v->lo[x >= dk ? x - dk : 0u], v->hi[x + dk < w ? x + dk : w - 1u], along,
-              pts, cap, n, dropped);
+    const uint32_t w = c->w, dk = c->dk;
+    uint32_t x;
+    for (x = x0; x < x1; x++) {
+        decide_at(c, x, c->lo[x >= dk ? x - dk : 0u], c->hi[x + dk < w ? x + dk : w - 1u], along);
+    }
 }
 
 /* symline_i_linefilter_gray() as one expression, for the batches below: its
@@ -273,37 +278,35 @@ static SL_ALWAYS_INLINE uint32_t gray_ok(const symline_i_linefilter *f, uint32_t
            (uint32_t)(c - side >= need);
 }
 
-/* The candidates cand[0..k-1] of row v (interior entries: x = dk + cand[i])
+/* The candidates cand[0..k-1] of row y (interior entries: x = dk + cand[i])
  * in three steps over the batch: the exact gray test, then the energies and
  * the S decision (a plateau on extremum_at()'s slow path), then the points.
  * A candidate passes each test about as often as it fails: one branch per
  * test and candidate would be mispredicted half the time, the batches
- * compact their lists without branches. */
-static SL_ALWAYS_INLINE void decide_batch(const symline_i_linefilter *f, line_view *l,
-                                          const row_view *v, uint16_t *cand, uint32_t k, bool along,
-                                          symline_point *pts, uint32_t cap, uint32_t *n,
-                                          uint32_t *dropped)
+ * compact their lists without branches. Speed builds only. */
+static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
 {
-    const uint32_t dk = v->dk;
+    const uint32_t dk = c->dk;
+    uint16_t *cand = c->cand;
     uint32_t i, kg = 0u, ks = 0u;
     for (i = 0; i < k; i++) {
         const uint32_t j = cand[i];
         cand[kg] = (uint16_t)(dk + j);
-        kg += gray_ok(f, v->c[dk + j], v->lo[j], v->hi[j + 2u * dk]);
+        kg += gray_ok(&c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
     }
     SL_STAGE(OPERATOR);
     for (i = 0; i < kg; i++) {
-        const uint32_t x = cand[i], at = along ? x : v->y;
+        const uint32_t x = cand[i], at = along ? x : c->y;
         uint32_t up = 0u, e = 0u, dn = 0u, s;
         if (!along) {
-            l->c0 = v->c + x; /* down column x from row y */
+            c->l.c0 = c->c + x; /* down column x from row y */
         }
-        if (at != 0u && at + 1u < l->n) {
-            energies3(l, at, &up, &e, &dn);
+        if (at != 0u && at + 1u < c->l.n) {
+            energies3(&c->l, at, &up, &e, &dn, true);
         }
         s = (uint32_t)(up > e) & (uint32_t)(dn > e);
         if (up == e || dn == e) {
-            s = (uint32_t)extremum_at(l, at, true);
+            s = (uint32_t)extremum_at(&c->l, at, true);
         }
         cand[ks] = (uint16_t)x;
         ks += s;
@@ -311,71 +314,102 @@ static SL_ALWAYS_INLINE void decide_batch(const symline_i_linefilter *f, line_vi
     SL_STAGE(FILTER);
     for (i = 0; i < ks; i++) {
         const uint32_t x = cand[i];
-        if (f->a_distance != 0u) {
+        if (c->f.a_distance != 0u) {
             if (!along) {
-                l->c0 = v->c + x;
+                c->l.c0 = c->c + x;
             }
-            if (!a_near(l, along ? x : v->y, f->a_distance)) {
+            if (!a_near(&c->l, along ? x : c->y, c->f.a_distance)) {
                 continue;
             }
         }
-        push_point(pts, cap, n, x, v->y, dropped);
+        push_point(c, x);
     }
 }
 
-/* The line points of grid row v->y: the byte test over the row's interior
+/* The line points of grid row y: the byte test over the row's interior
  * (where both sides lie in the row; the whole row down the columns) gives
  * the few candidates, the exact tests follow at those alone. */
-static SL_ALWAYS_INLINE void decide_row(const symline_i_linefilter *f, line_view *l,
-                                        const row_view *v, symline_point *pts, uint32_t cap,
-                                        uint32_t *n, uint32_t *dropped, bool along)
+static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
 {
-    const uint32_t w = v->w, dk = v->dk;
-    uint32_t x;
+    const uint32_t w = c->w, dk = c->dk;
     SL_STAGE(FILTER);
-    for (x = 0u; x < dk && x < w; x++) { /* the left border */
-        decide_edge(f, l, v, x, along, pts, cap, n, dropped);
+    if (!SL_FOR_SPEED || w <= 2u * dk) {
+        /* Every entry with clamped sides: on scalar cores the byte test
+         * costs what the exact test's first compares cost, and code. */
+        decide_edge(c, 0u, w, along);
+        return;
     }
-    if (w > 2u * dk) {
+    decide_edge(c, 0u, dk, along); /* the left border */
+    {
         const uint32_t len = w - 2u * dk;
-        const bool paper = f->kind == SYMLINE_FILTER_PAPER; /* gray only */
-        const uint8_t *ic = v->c + dk, *ilo = paper ? ic : v->lo,
-                      *ihi = paper ? ic : v->hi + 2u * dk;
+        const bool paper = c->f.kind == SYMLINE_FILTER_PAPER; /* gray only */
+        const uint8_t *ic = c->c + dk, *ilo = paper ? ic : c->lo,
+                      *ihi = paper ? ic : c->hi + (size_t)2u * dk;
         symline_i_prefilter pf;
-        uint16_t cand[SL_LINE_CAND_MAX];
-        uint32_t at = 0u, k, i;
-        symline_i_prefilter_setup(f, &pf);
+        uint32_t at = 0u;
+        symline_i_prefilter_setup(&c->f, &pf);
         while (at < len) {
-            k = symline_i_line_cand(&pf, ic, ilo, ihi, at, len, cand, &at);
-            if (SL_FOR_SPEED) {
-                decide_batch(f, l, v, cand, k, along, pts, cap, n, dropped);
-                continue;
-            }
-            for (i = 0; i < k; i++) {
-                const uint32_t j = cand[i];
-                decide_at(f, l, v, dk + j, v->lo[j], v->hi[j + 2u * dk], along, pts, cap, n,
-                          dropped);
-            }
+            decide_batch(c, symline_i_line_cand(&pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
-        x = w - dk;
     }
-    for (; x < w; x++) { /* the right border */
-        decide_edge(f, l, v, x, along, pts, cap, n, dropped);
-    }
+    decide_edge(c, w - dk, w, along); /* the right border */
 }
 
 /* The row decision; to save time (SL_FOR_SPEED), one copy per axis. */
-SL_NOINLINE static void decide(const symline_i_linefilter *f, line_view *l, const row_view *v,
-                               symline_point *pts, uint32_t cap, uint32_t *n, uint32_t *dropped)
+SL_NOINLINE static void decide(lp_ctx *c)
 {
-    const bool along = l->step == 1;
+    const bool along = c->l.step == 1;
     if (SL_FOR_SPEED && along) {
-        decide_row(f, l, v, pts, cap, n, dropped, true);
+        decide_row(c, true);
     } else if (SL_FOR_SPEED) {
-        decide_row(f, l, v, pts, cap, n, dropped, false);
+        decide_row(c, false);
     } else {
-        decide_row(f, l, v, pts, cap, n, dropped, along);
+        decide_row(c, along);
     }
+}
+
+/* Grid row y of the pass (c->y): the frame's row at full resolution; at a
+ * coarse level the grid row, and down the columns the ring's rows up to
+ * y + R produced (each stored twice, see symline_i_collect()), with rows
+ * y - R .. y + R at the ring's stride around the row returned. Apart from
+ * the collection's loop: its frame is not on the deepest call chain. */
+SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
+{
+    const symline_i_pass *p = c->p;
+    const uint32_t w = p->w, h = p->h;
+    if (p->level == 0u) {
+        return c->img->data + (size_t)y * c->img->stride;
+    }
+    SL_STAGE(GRID);
+    if (p->axis == SYMLINE_AXIS_VERTICAL) {
+        symline_i_grid_row(c->img, p, y, c->acc, c->gray);
+        return c->gray;
+    } else {
+        const uint32_t R = reach(p), held = ring_rows(p);
+        const uint32_t need = y + R < h ? y + R : h - 1u, first = y > R ? y - R : 0u;
+        for (; c->produced <= need; c->produced++) {
+            uint8_t *g = c->gray + (size_t)(c->produced % held) * w, *g2 = g + (size_t)held * w;
+            uint32_t x;
+            symline_i_grid_row(c->img, p, c->produced, c->acc, g);
+            for (x = 0; x < w; x++) {
+                g2[x] = g[x];
+            }
+        }
+        /* Rows first .. need from the slot of row first on. */
+        return c->gray + (size_t)(first % held + (y - first)) * w;
+    }
+}
+
+size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
+{
+    size_t n = (size_t)3u * SL_ALIGN + symline_i_align_up(sizeof(lp_ctx));
+    if (p->level > 0u) {
+        n += symline_i_align_up((size_t)img_width * sizeof(uint16_t)); /* box accumulator */
+        /* the grid row, or the ring of them down the columns */
+        n += symline_i_align_up((size_t)p->w *
+                                (p->axis == SYMLINE_AXIS_VERTICAL ? 1u : 2u * ring_rows(p)));
+    }
+    return n;
 }
 
 symline_status symline_i_collect(const symline_image *img, const symline_i_pass *p, void *ws,
@@ -384,76 +418,63 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
 {
     uint8_t *cur = (uint8_t *)ws;
     uint8_t *const end = cur + ws_size;
-    const uint32_t w = p->w, h = p->h;
+    const uint32_t h = p->h;
     const bool along = p->axis == SYMLINE_AXIS_VERTICAL;
-    /* Down the columns at coarse levels, row y is decided once row y + R is in. */
-    const uint32_t R = along ? 0u : reach(p), held = along ? 1u : ring_rows(p);
-    /* A copy in locals: the stores of points cannot change it (to save time). */
-    const symline_i_linefilter fcopy = p->filter;
-    const symline_i_linefilter *f = SL_FOR_SPEED ? &fcopy : &p->filter;
-    uint16_t *acc = NULL;
-    uint8_t *gray = NULL;
-    uint32_t y, produced = 0u;
-    line_view l;
-    row_view v;
+    lp_ctx *c = (lp_ctx *)symline_i_carve(&cur, end, sizeof(lp_ctx));
+    uint32_t y;
     *n = 0u;
-    if (w == 0u || h == 0u) {
+    if (p->w == 0u || h == 0u) {
         return SYMLINE_ERR_SIZE;
     }
+    if (c == NULL) {
+        return SYMLINE_ERR_BUFFER;
+    }
+    c->acc = NULL;
+    c->gray = NULL;
     if (p->level > 0u) { /* else the frame's rows are read */
         /* The box accumulator serves the lane loops alone (SL_FOR_SPEED); its
          * room stays in the workspace size either way. */
         if (SL_FOR_SPEED) {
-            acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+            c->acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
         }
         /* Down the columns each grid row twice, in slots r % held and
          * r % held + held: any held rows in a row lie one after the other. */
-        gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * (along ? 1u : 2u * held));
-        if (gray == NULL || (SL_FOR_SPEED && acc == NULL)) {
+        c->gray =
+            (uint8_t *)symline_i_carve(&cur, end, (size_t)p->w * (along ? 1u : 2u * ring_rows(p)));
+        if (c->gray == NULL || (SL_FOR_SPEED && c->acc == NULL)) {
             return SYMLINE_ERR_BUFFER;
         }
     }
-    l.n = along ? w : h;
-    l.m = p->m;
-    l.lag = p->lag;
-    l.i0 = 0u;
-    l.step = along ? 1 : (ptrdiff_t)(p->level == 0u ? img->stride : w);
-    v.w = w;
-    v.dk = along ? p->k : 0u;
+    c->img = img;
+    c->p = p;
+    c->produced = 0u;
+    c->f = p->filter;
+    c->pts = pts;
+    c->n = n;
+    c->dropped = dropped;
+    c->cap = cap;
+    c->w = p->w;
+    c->dk = along ? p->k : 0u;
+    c->l.n = along ? p->w : h;
+    c->l.m = p->m;
+    c->l.lag = p->lag;
+    c->l.i0 = 0u;
+    c->l.step = along ? 1 : (ptrdiff_t)(p->level == 0u ? img->stride : p->w);
     for (y = 0; y < h; y++) {
-        if (p->level == 0u) {
-            v.c = img->data + (size_t)y * img->stride;
-        } else if (along) {
-            SL_STAGE(GRID);
-            symline_i_grid_row(img, p, y, acc, gray);
-            v.c = gray;
-        } else {
-            const uint32_t need = y + R < h ? y + R : h - 1u, first = y > R ? y - R : 0u;
-            SL_STAGE(GRID);
-            for (; produced <= need; produced++) {
-                uint8_t *g = gray + (size_t)(produced % held) * w, *g2 = g + (size_t)held * w;
-                uint32_t x;
-                symline_i_grid_row(img, p, produced, acc, g);
-                for (x = 0; x < w; x++) {
-                    g2[x] = g[x];
-                }
-            }
-            /* Rows first .. need from the slot of row first on. */
-            v.c = gray + (size_t)(first % held + (y - first)) * w;
+        const uint8_t *row = grid_row_at(c, y);
+        c->c = row;
+        c->lo = row;
+        c->hi = row;
+        c->l.c0 = row;
+        if (!along) {
+            const ptrdiff_t st = c->l.step;
+            c->lo = row - (ptrdiff_t)(y >= p->k ? p->k : y) * st;
+            c->hi = row + (ptrdiff_t)(y + p->k < h ? p->k : h - 1u - y) * st;
+            c->l.i0 = y;
         }
-        if (along) {
-            v.lo = v.c;
-            v.hi = v.c;
-            l.c0 = v.c;
-        } else {
-            const ptrdiff_t st = l.step;
-            v.lo = v.c - (ptrdiff_t)(y >= p->k ? p->k : y) * st;
-            v.hi = v.c + (ptrdiff_t)(y + p->k < h ? p->k : h - 1u - y) * st;
-            l.i0 = y;
-        }
-        v.y = y;
+        c->y = y;
         row_start[y] = *n;
-        decide(f, &l, &v, pts, cap, n, dropped);
+        decide(c);
     }
     row_start[h] = *n;
     return SYMLINE_OK;
