@@ -179,14 +179,32 @@ static bool extremum_at(const line_view *l, uint32_t i, bool s)
     return (up > e) == s && (dn > e) == s && (a + b) / 2u == i;
 }
 
-/* Whether an A point lies within a_distance entries of entry i (the paper's filter). */
+/* Whether an A point lies within a_distance entries of entry i (the paper's
+ * filter; i is an S point, so 1 <= i <= n - 2 and both neighbours' energies
+ * are larger). The window is walked outwards from i, one new energy per
+ * entry: an A point next to a line's centre is found at once. Where a
+ * neighbour is equal the run rule decides (extremum_at()). */
 static bool a_near(const line_view *l, uint32_t i, uint32_t d)
 {
-    uint32_t j = i >= d ? i - d : 0u;
-    const uint32_t last = i + d < l->n ? i + d : l->n - 1u;
-    for (; j <= last; j++) {
-        if (extremum_at(l, j, false)) {
-            return true;
+    uint32_t up, e, dn, j, k;
+    energies3(l, i, &up, &e, &dn, true);
+    for (k = 0; k < 2u; k++) {
+        /* k = 0: entries i-1, i-2, .. (at least 1); k = 1: i+1, .. (at most n-2).
+         * near: E of the entry on i's side of j, cur: E(j). */
+        uint32_t near = e, cur = k == 0u ? up : dn;
+        for (j = 1u; j <= d; j++) {
+            const uint32_t at = k == 0u ? i - j : i + j;
+            uint32_t far;
+            if (k == 0u ? at == 0u : at + 1u >= l->n) {
+                break;
+            }
+            far = energy_at(l, k == 0u ? at - 1u : at + 1u);
+            if ((near < cur && far < cur) ||
+                ((near == cur || far == cur) && extremum_at(l, at, false))) {
+                return true;
+            }
+            near = cur;
+            cur = far;
         }
     }
     return false;
