@@ -179,32 +179,14 @@ static bool extremum_at(const line_view *l, uint32_t i, bool s)
     return (up > e) == s && (dn > e) == s && (a + b) / 2u == i;
 }
 
-/* Whether an A point lies within a_distance entries of entry i (the paper's
- * filter; i is an S point, so 1 <= i <= n - 2 and both neighbours' energies
- * are larger). The window is walked outwards from i, one new energy per
- * entry: an A point next to a line's centre is found at once. Where a
- * neighbour is equal the run rule decides (extremum_at()). */
+/* Whether an A point lies within a_distance entries of entry i (the paper's filter). */
 static bool a_near(const line_view *l, uint32_t i, uint32_t d)
 {
-    uint32_t up, e, dn, j, k;
-    energies3(l, i, &up, &e, &dn, true);
-    for (k = 0; k < 2u; k++) {
-        /* k = 0: entries i-1, i-2, .. (at least 1); k = 1: i+1, .. (at most n-2).
-         * near: E of the entry on i's side of j, cur: E(j). */
-        uint32_t near = e, cur = k == 0u ? up : dn;
-        for (j = 1u; j <= d; j++) {
-            const uint32_t at = k == 0u ? i - j : i + j;
-            uint32_t far;
-            if (k == 0u ? at == 0u : at + 1u >= l->n) {
-                break;
-            }
-            far = energy_at(l, k == 0u ? at - 1u : at + 1u);
-            if ((near < cur && far < cur) ||
-                ((near == cur || far == cur) && extremum_at(l, at, false))) {
-                return true;
-            }
-            near = cur;
-            cur = far;
+    uint32_t j = i >= d ? i - d : 0u;
+    const uint32_t last = i + d < l->n ? i + d : l->n - 1u;
+    for (; j <= last; j++) {
+        if (extremum_at(l, j, false)) {
+            return true;
         }
     }
     return false;
@@ -213,9 +195,9 @@ static bool a_near(const line_view *l, uint32_t i, uint32_t d)
 /* The state of one pass's collection, in the workspace (not on the stack:
  * the deepest call chain of the detector runs through here). */
 typedef struct lp_ctx {
-    symline_i_linefilter f;     /* a copy: the stores of points cannot change it */
-    line_view l;                /* the line through the candidate at hand */
-    const uint8_t *c, *lo, *hi; /* row y, and its sides across the line (down: rows y -+ k) */
+    const symline_i_linefilter *f; /* the pass's filter */
+    line_view l;                   /* the line through the candidate at hand */
+    const uint8_t *c, *lo, *hi;    /* row y, and its sides across the line (down: rows y -+ k) */
     symline_point *pts;
     uint32_t *n, *dropped;
     uint32_t cap, y, w, dk; /* dk: across the line along the row (vertical axis), else 0 */
@@ -252,14 +234,14 @@ static void push_point(lp_ctx *c, uint32_t x)
 static SL_LP_INLINE void decide_at(lp_ctx *c, uint32_t x, uint32_t lo, uint32_t hi, bool along)
 {
     const uint32_t i = along ? x : c->y;
-    if (!symline_i_linefilter_gray(&c->f, c->c[x], lo, hi)) {
+    if (!symline_i_linefilter_gray(c->f, c->c[x], lo, hi)) {
         return;
     }
     if (!along) {
         c->l.c0 = c->c + x; /* down column x from row y */
     }
     if (!extremum_at(&c->l, i, true) ||
-        (c->f.a_distance != 0u && !a_near(&c->l, i, c->f.a_distance))) {
+        (c->f->a_distance != 0u && !a_near(&c->l, i, c->f->a_distance))) {
         SL_STAGE(FILTER);
         return;
     }
@@ -310,7 +292,7 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
     for (i = 0; i < k; i++) {
         const uint32_t j = cand[i];
         cand[kg] = (uint16_t)(dk + j);
-        kg += gray_ok(&c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
+        kg += gray_ok(c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
     }
     SL_STAGE(OPERATOR);
     for (i = 0; i < kg; i++) {
@@ -332,11 +314,11 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
     SL_STAGE(FILTER);
     for (i = 0; i < ks; i++) {
         const uint32_t x = cand[i];
-        if (c->f.a_distance != 0u) {
+        if (c->f->a_distance != 0u) {
             if (!along) {
                 c->l.c0 = c->c + x;
             }
-            if (!a_near(&c->l, along ? x : c->y, c->f.a_distance)) {
+            if (!a_near(&c->l, along ? x : c->y, c->f->a_distance)) {
                 continue;
             }
         }
@@ -360,12 +342,12 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
     decide_edge(c, 0u, dk, along); /* the left border */
     {
         const uint32_t len = w - 2u * dk;
-        const bool paper = c->f.kind == SYMLINE_FILTER_PAPER; /* gray only */
+        const bool paper = c->f->kind == SYMLINE_FILTER_PAPER; /* gray only */
         const uint8_t *ic = c->c + dk, *ilo = paper ? ic : c->lo,
                       *ihi = paper ? ic : c->hi + (size_t)2u * dk;
         symline_i_prefilter pf;
         uint32_t at = 0u;
-        symline_i_prefilter_setup(&c->f, &pf);
+        symline_i_prefilter_setup(c->f, &pf);
         while (at < len) {
             decide_batch(c, symline_i_line_cand(&pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
@@ -466,7 +448,7 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->img = img;
     c->p = p;
     c->produced = 0u;
-    c->f = p->filter;
+    c->f = &p->filter;
     c->pts = pts;
     c->n = n;
     c->dropped = dropped;
