@@ -80,104 +80,59 @@ static inline bool symline_i_linefilter_gray(const symline_i_linefilter *f, uint
 }
 
 /*
- * The paper filter's A-point test: true when an A point lies within
- * f->a_distance entries of entry `at` of a line of n extrema map entries
- * across the line. Entry i is map[(i % ring) * step]: step 1 and ring n for
- * a row, the row length and the ring's row count for a column of a ring of
- * rows. Inline like the gray test: it runs for every S point that passed it.
- */
-static inline bool symline_i_linefilter_a_near(const symline_i_linefilter *f, const uint8_t *map,
-                                               uint32_t ring, size_t step, uint32_t n, uint32_t at)
-{
-    const uint32_t d = f->a_distance;
-    const uint32_t lo = at >= d ? at - d : 0u;
-    const uint32_t hi = at + d < n ? at + d : n - 1u;
-    uint32_t i;
-    for (i = lo; i <= hi; i++) {
-        if (map[(size_t)(i % ring) * step] == SYMLINE_MAP_A) {
-            return true;
-        }
-    }
-    return false;
-}
-
-/*
- * The first entry at or after x <= n of map[0..n-1] that is an S point, n when
- * there is none: how the detector's rows find the S points the filter
- * decides (most entries are not). symline_i_find_s_c() is the portable
- * reference; symline_i_find_s() is the build's choice: a SIMD version from
- * port/ (SYMLINE_PORT_FIND_S, CMake option SYMLINE_SIMD) that tests 16
- * entries at a time, with the same result, or the reference.
- * SL_NEXT_S(map, x, n) is the entry a row loop over the S points looks at
- * after x: the next S point where the SIMD search is built, x + 1 otherwise
- * (the loop tests each entry itself, which is shorter on scalar cores).
- */
-static inline uint32_t symline_i_find_s_c(const uint8_t *map, uint32_t x, uint32_t n)
-{
-    while (x < n && map[x] != SYMLINE_MAP_S) {
-        x++;
-    }
-    return x;
-}
-#ifdef SYMLINE_PORT_FIND_S
-uint32_t symline_i_find_s(const uint8_t *map, uint32_t x, uint32_t n);
-#define SL_NEXT_S(map, x, n) symline_i_find_s((map), (x) + 1u, (n))
-#else
-#define symline_i_find_s symline_i_find_s_c
-#define SL_NEXT_S(map, x, n) ((x) + 1u)
-#endif
-
-/*
- * A byte test that rejects most S points before the exact one: the gray
- * value c of a line point is at least min_gray and, for the contrast filter,
- * stands ridge_min above the brighter side max(lo, hi). In bytes, saturating
- * at 255, it keeps every point symline_i_linefilter_gray() keeps (and some
- * it drops: the exact test follows). For the paper's filter give lo = hi = c
- * (ridge_min is 0 then): only the gray value counts.
+ * A byte test that rejects most pixels before the exact one: the gray value
+ * c of a line point is at least min_gray and, for the contrast filter,
+ * stands ridge_min above the brighter side max(lo, hi), which is at most
+ * side_max. In bytes, the sum side + ridge_min saturating at 255, it keeps
+ * every point symline_i_linefilter_gray() keeps (and some it drops: the
+ * exact test follows). For the paper's filter give lo = hi = c (ridge_min
+ * is 0 and side_max 255 then): only the gray value counts.
  */
 typedef struct symline_i_prefilter {
     uint8_t min_gray;  /* c >= min_gray */
     uint8_t ridge_min; /* c >= max(lo, hi) + ridge_min, the sum clamped to 255 */
+    uint8_t side_max;  /* max(lo, hi) <= side_max */
 } symline_i_prefilter;
 
 static inline void symline_i_prefilter_setup(const symline_i_linefilter *f, symline_i_prefilter *pf)
 {
     pf->min_gray = (uint8_t)(f->min_gray < 255u ? f->min_gray : 255u);
     pf->ridge_min = 0u;
+    pf->side_max = 255u;
     if (f->kind != SYMLINE_FILTER_PAPER) { /* a ridge of 0 fails the exact test too */
         pf->ridge_min = (uint8_t)(f->ridge_min < 1u     ? 1u
                                   : f->ridge_min < 255u ? f->ridge_min
                                                         : 255u);
+        pf->side_max = (uint8_t)(f->side_max < 255u ? f->side_max : 255u);
     }
 }
 
-/* Most indices one call of symline_i_line_s() reports. */
-#define SL_LINE_S_MAX 32u
+/* Most indices one call of symline_i_line_cand() reports. */
+#define SL_LINE_CAND_MAX 32u
 
 /*
- * The S points of map[x .. n-1] whose gray values c[i], lo[i], hi[i] pass the
+ * The entries of c[x .. n-1] whose gray values c[i], lo[i], hi[i] pass the
  * byte test of pf, in order: their indices to out[0 ..], at most
- * SL_LINE_S_MAX; returns how many. *next: where to go on, the entry after
- * the last one reported when out is full, else n. One pass over the row
- * finds the few candidates of the exact filter (most S points are dim carpet
- * texture). symline_i_line_s_c() is the portable reference;
- * symline_i_line_s() is a SIMD version from port/ (SYMLINE_PORT_LINE_S, CMake
- * option SYMLINE_SIMD) that tests 16 entries per instruction, with the same
- * result, and the row decision uses it only where it is built: on scalar
- * cores a loop over the entries costs the same without it.
+ * SL_LINE_CAND_MAX; returns how many. *next: where to go on, the entry
+ * after the last one reported when out is full, else n. On field frames 1
+ * to 5 entries in 100 pass (docs/detector.md): the detector computes
+ * energies at those alone. symline_i_line_cand_c() is the portable
+ * reference; symline_i_line_cand() the build's choice: a version from port/
+ * (SYMLINE_PORT_LINE_CAND, CMake option SYMLINE_SIMD) that tests 4 to 16
+ * entries per instruction, with the same result, or the reference.
  */
-static inline uint32_t symline_i_line_s_c(const symline_i_prefilter *pf, const uint8_t *map,
-                                          const uint8_t *c, const uint8_t *lo, const uint8_t *hi,
-                                          uint32_t x, uint32_t n, uint16_t *out, uint32_t *next)
+static inline uint32_t symline_i_line_cand_c(const symline_i_prefilter *pf, const uint8_t *c,
+                                             const uint8_t *lo, const uint8_t *hi, uint32_t x,
+                                             uint32_t n, uint16_t *out, uint32_t *next)
 {
     uint32_t k = 0u;
     for (; x < n; x++) {
         const uint32_t side = lo[x] > hi[x] ? lo[x] : hi[x];
         /* c >= min(side + ridge_min, 255): the sum or the brightest gray */
         const bool ridge = c[x] >= side + pf->ridge_min || c[x] == 255u;
-        if (map[x] == SYMLINE_MAP_S && c[x] >= pf->min_gray && ridge) {
+        if (c[x] >= pf->min_gray && ridge && side <= pf->side_max) {
             out[k++] = (uint16_t)x;
-            if (k == SL_LINE_S_MAX) {
+            if (k == SL_LINE_CAND_MAX) {
                 *next = x + 1u;
                 return k;
             }
@@ -186,10 +141,12 @@ static inline uint32_t symline_i_line_s_c(const symline_i_prefilter *pf, const u
     *next = n;
     return k;
 }
-#ifdef SYMLINE_PORT_LINE_S
-uint32_t symline_i_line_s(const symline_i_prefilter *pf, const uint8_t *map, const uint8_t *c,
-                          const uint8_t *lo, const uint8_t *hi, uint32_t x, uint32_t n,
-                          uint16_t *out, uint32_t *next);
+#ifdef SYMLINE_PORT_LINE_CAND
+uint32_t symline_i_line_cand(const symline_i_prefilter *pf, const uint8_t *c, const uint8_t *lo,
+                             const uint8_t *hi, uint32_t x, uint32_t n, uint16_t *out,
+                             uint32_t *next);
+#else
+#define symline_i_line_cand symline_i_line_cand_c
 #endif
 
 /*

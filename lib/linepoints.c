@@ -1,29 +1,31 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * Line points of one pass, streamed over a ring of rows.
+ * Line points of one pass, streamed row by row.
  *
- * Vertical axis (symmetry along rows): every grid row is complete on its own:
- * energies, extrema and the filter run row by row.
+ * A line point is an S point (a symmetry maximum, with the plateau limit)
+ * that passes the line filter. The filter's gray-value tests need no
+ * energies, and on field frames only 1 to 5 grid pixels in 100 pass them,
+ * so each grid row is first searched with the byte test (whole rows, byte
+ * lanes) and energies are computed at those candidates alone, where the
+ * extremum is decided exactly by the run rule of docs/algorithm.md: the
+ * points are those the whole energy and extrema images would give
+ * (tests/detect/test_linepoints.c compares them).
  *
- * Horizontal axis (symmetry along columns): energies of grid row t need rows
- * t-m .. t+m. Three rows of energies decide the extrema of the middle one
- * with row-wise comparisons; a run of equal energies [a, b] down a column (a
- * plateau, rare) is followed on a slow path and reported when row b+1
- * arrives, at row (a+b) div 2. Extrema of plateaus longer than
- * 2*lag+1 rows are not line points (no thin line has them), so every
- * extremum of row y is known once row y+lag+1 has been pushed, and the
- * decision for row y (which looks a_distance rows of extrema and k rows of gray
- * values up and down) is taken delta = a_distance+lag+1 rows later. The ring holds
- * just those rows: working memory grows with width * radius, not with height.
+ * Vertical axis (symmetry along rows): every grid row is complete on its own.
+ * Horizontal axis (symmetry down the columns): a candidate of row y reads
+ * energies of rows y - a_distance - lag - 1 .. y + a_distance + lag + 1
+ * (plateaus longer than 2*lag+1 rows are not line points: no thin line has
+ * them; the paper's filter looks a_distance rows for an A point), each m
+ * rows more. At full resolution those are the frame's rows; at coarser
+ * scales a ring holds just those grid rows: working memory grows with
+ * width * radius, not with height.
  *
  * Output: points appended in raster order, so the list is its own spatial
  * index together with row_start.
  */
 #include "linepoints.h"
 
-#include "extrema.h"
 #include "stagemark.h"
-#include "symmetry.h"
 
 /* The pass's grid rows (grid.c). A port's version (SYMLINE_PORT_GRID)
  * replaces this call, which is then its reference. */
@@ -38,262 +40,376 @@ void SL_GRID_ROW(const symline_image *img, const symline_i_pass *p, uint32_t y, 
     symline_i_grid_level_row(img, p->level, y, acc, out);
 }
 
-/* Rows of the horizontal-axis rings. */
-static uint32_t h_delta(const symline_i_pass *p)
+/* How far from a decided row a candidate's work reaches down the columns
+ * (horizontal axis), in grid rows: energies of rows y - a_distance - lag - 1
+ * .. y + a_distance + lag + 1 (the plateau limit and the A point search),
+ * each reading m rows more, and the contrast sides k = m + 1 <= that. */
+static uint32_t reach(const symline_i_pass *p)
 {
-    return p->filter.a_distance + p->lag + 1u;
-}
-static uint32_t h_map_rows(const symline_i_pass *p)
-{
-    return h_delta(p) + p->filter.a_distance;
-}
-static uint32_t h_gray_rows(const symline_i_pass *p)
-{
-    return h_delta(p) + p->k + p->m + 1u;
+    return p->filter.a_distance + p->lag + 1u + p->m;
 }
 
-/* State of the rings (kept in the workspace). Along rows (vertical axis)
- * every ring holds one row: a grid row is decided as soon as it is in. */
-typedef struct hring {
+/* Grid rows held down the columns at coarse levels: the decided row and
+ * reach() rows to either side. */
+static uint32_t ring_rows(const symline_i_pass *p)
+{
+    return 2u * reach(p) + 1u;
+}
+
+/* The line through a candidate: entry i of it is c0[(i - i0) * step] (a
+ * grid row along it, vertical axis; a column down, horizontal axis), n
+ * entries. */
+typedef struct line_view {
+    const uint8_t *c0;
+    ptrdiff_t step;
+    uint32_t i0, n, m, lag;
+} line_view;
+
+/* The contribution of m - j pairs that leave the line to the sums of
+ * energy_at(): each adds 255^2 to the partial sum, which the energy adds. */
+static uint32_t outside_pairs(uint32_t j, uint32_t m, uint32_t sum, uint32_t e)
+{
+    for (; j <= m; j++) {
+        sum += 255u * 255u;
+        e += sum;
+    }
+    return e;
+}
+
+/*
+ * The symmetry energy E(i) of entry i of the line (docs/algorithm.md),
+ * exactly: sum over j = 1..m of (m + 1 - j) d_j^2, as the sum over
+ * k = 1..m of the partial sums d_1^2 + .. + d_k^2 (one product per pair),
+ * d_j = 255 where the pair leaves the line. At most 255^2 m (m + 1) / 2 <
+ * 2^31.
+ */
+static uint32_t energy_at(const line_view *l, uint32_t i)
+{
+    const uint32_t m = l->m, in = i < l->n - 1u - i ? i : l->n - 1u - i;
+    const uint32_t inner = in < m ? in : m; /* pairs inside the line */
+    const ptrdiff_t step = l->step;
+    const uint8_t *a = l->c0 + ((ptrdiff_t)i - (ptrdiff_t)l->i0) * step, *b = a;
+    uint32_t j, sum = 0u, e = 0u;
+    for (j = 1u; j <= inner; j++) {
+        int32_t d;
+        a -= step;
+        b += step;
+        d = (int32_t)*a - (int32_t)*b;
+        sum += (uint32_t)(d * d);
+        e += sum;
+    }
+    return outside_pairs(j, m, sum, e);
+}
+
+/* E(i-1), E(i) and E(i+1) of an entry at least m + 1 entries inside the
+ * line, in one loop over the pairs; m a constant where that pays (below). */
+static SL_ALWAYS_INLINE void energies3_in(const line_view *l, uint32_t i, uint32_t m, uint32_t *up,
+                                          uint32_t *e, uint32_t *dn)
+{
+    const ptrdiff_t step = l->step;
+    const uint8_t *lo = l->c0 + ((ptrdiff_t)i - (ptrdiff_t)l->i0) * step, *hi = lo;
+    uint32_t j, su = 0u, sc = 0u, sd = 0u, eu = 0u, ec = 0u, ed = 0u;
+    for (j = 1u; j <= m; j++) {
+        int32_t du, dc, dd;
+        lo -= step;
+        hi += step;
+        du = (int32_t)lo[-step] - (int32_t)hi[-step];
+        dc = (int32_t)lo[0] - (int32_t)hi[0];
+        dd = (int32_t)lo[step] - (int32_t)hi[step];
+        su += (uint32_t)(du * du);
+        sc += (uint32_t)(dc * dc);
+        sd += (uint32_t)(dd * dd);
+        eu += su;
+        ec += sc;
+        ed += sd;
+    }
+    *up = eu;
+    *e = ec;
+    *dn = ed;
+}
+
+/* E(i-1), E(i) and E(i+1) of entry 0 < i < n-1 of the line; unrolled at
+ * the default radius where `unroll` is set. */
+static SL_ALWAYS_INLINE void energies3(const line_view *l, uint32_t i, uint32_t *up, uint32_t *e,
+                                       uint32_t *dn, bool unroll)
+{
+    if (SL_FOR_SPEED && i > l->m && i + l->m + 1u < l->n) {
+        if (unroll && l->m == 3u) { /* constant offsets */
+            energies3_in(l, i, 3u, up, e, dn);
+        } else {
+            energies3_in(l, i, l->m, up, e, dn);
+        }
+    } else {
+        *up = energy_at(l, i - 1u);
+        *e = energy_at(l, i);
+        *dn = energy_at(l, i + 1u);
+    }
+}
+
+/*
+ * Whether entry i of the line is an S point (s) or an A point (!s) by the run
+ * rule of docs/algorithm.md with the plateau limit: the middle of a run
+ * [a, b] of equal energies, a >= 1, b <= n - 2, b - i <= lag, whose
+ * neighbours E(a-1), E(b+1) are both larger (S) or both smaller (A). Most
+ * runs are single entries: three energies decide; a run is followed at most
+ * lag + 1 entries each way (a longer one is not marked).
+ */
+static bool extremum_at(const line_view *l, uint32_t i, bool s)
+{
+    uint32_t e, up, dn, a = i, b = i;
+    if (i == 0u || i + 1u >= l->n) {
+        return false;
+    }
+    SL_STAGE(OPERATOR);
+    energies3(l, i, &up, &e, &dn, true);
+    SL_STAGE(EXTREMA);
+    /* The run of equal energies through i, followed on the slow path. */
+    while (up == e) {
+        if (--a == 0u || i - a > l->lag) {
+            return false;
+        }
+        up = energy_at(l, a - 1u);
+    }
+    while (dn == e) {
+        if (++b + 1u >= l->n || b - i > l->lag) {
+            return false;
+        }
+        dn = energy_at(l, b + 1u);
+    }
+    return (up > e) == s && (dn > e) == s && (a + b) / 2u == i;
+}
+
+/* Whether an A point lies within a_distance entries of entry i (the paper's filter). */
+static bool a_near(const line_view *l, uint32_t i, uint32_t d)
+{
+    uint32_t j = i >= d ? i - d : 0u;
+    const uint32_t last = i + d < l->n ? i + d : l->n - 1u;
+    for (; j <= last; j++) {
+        if (extremum_at(l, j, false)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/* The state of one pass's collection, in the workspace (not on the stack:
+ * the deepest call chain of the detector runs through here). */
+typedef struct lp_ctx {
+    const symline_i_linefilter *f; /* the pass's filter */
+    line_view l;                   /* the line through the candidate at hand */
+    const uint8_t *c, *lo, *hi;    /* row y, and its sides across the line (down: rows y -+ k) */
+    symline_point *pts;
+    uint32_t *n, *dropped;
+    uint32_t cap, y, w, dk; /* dk: across the line along the row (vertical axis), else 0 */
     const symline_image *img;
     const symline_i_pass *p;
-    uint8_t *gray; /* gray_rows rows of w (levels > 0) */
-    uint32_t gray_rows;
-    symline_i_coldown cd; /* extrema (down the columns) into the map ring (cd.ring rows of w) */
-} hring;
+    uint16_t *acc;     /* box sums of the coarse grids' rows (speed builds) */
+    uint8_t *gray;     /* the coarse grid's row, or ring of rows */
+    uint32_t produced; /* grid rows in the ring so far */
+    uint16_t cand[SL_LINE_CAND_MAX];
+} lp_ctx;
 
-/* SYMLINE_DETECT_WORKSPACE_SIZE() (detect.h) counts 6 bytes per extremum and 8 per
- * row pointer, and the ring state within its fixed part (see pass.c). */
-typedef char
-    symline_i_ring_state_fits_ws_budget[(sizeof(hring) <= 80u && sizeof(symline_extremum) <= 6u &&
-                                         sizeof(const uint8_t *) <= 8u)
-                                            ? 1
-                                            : -1];
-
-size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
-{
-    size_t n = (size_t)6u * SL_ALIGN + symline_i_align_up(sizeof(hring));
-    const size_t w = p->w;
-    n += symline_i_align_up(w * sizeof(uint32_t)); /* energies */
-    if (p->level > 0u) {
-        n += symline_i_align_up((size_t)img_width * sizeof(uint16_t)); /* box accumulator */
-    }
-    if (p->axis == SYMLINE_AXIS_VERTICAL) {
-        n += symline_i_align_up(w); /* extrema of the row */
-        if (p->level > 0u) {
-            n += symline_i_align_up(w); /* the grid row */
-        }
-        return n;
-    }
-    n += symline_i_align_up(2u * w * sizeof(uint32_t)); /* two more rows of energies */
-    n += symline_i_align_up(w * sizeof(uint16_t));      /* where the plateaus began */
-    /* the signs of the differences between rows and the plateaus' sides (cd.sg) */
-    n += symline_i_align_up(2u * w);
-    /* 1 B per column unused since the column extrema need no event list, kept
-     * until SYMLINE_DETECT_WORKSPACE_SIZE (detect.h) and its sizing test drop
-     * it together. */
-    n += symline_i_align_up(w) + (size_t)2u * SL_ALIGN;
-    n += symline_i_align_up(w * (size_t)h_map_rows(p));
-    if (p->level > 0u) {
-        n += symline_i_align_up(w * (size_t)h_gray_rows(p));
-    }
-    n += symline_i_align_up((2u * (size_t)p->m + 1u) * sizeof(const uint8_t *));
-    return n;
-}
-
-static void push_point(symline_point *pts, uint32_t cap, uint32_t *n, uint32_t x, uint32_t y,
-                       uint32_t *dropped)
-{
-    if (*n >= cap) {
-        (*dropped)++; /* counted, so the result can say how much storage was needed */
-        return;
-    }
-    pts[*n].x = (uint16_t)x;
-    pts[*n].y = (uint16_t)y;
-    (*n)++;
-}
-
-/* The byte-lane pre-filter below pays where the compiler has vector lanes for
- * it (16 bytes per instruction); on scalar cores (Cortex-M) it would cost about
- * what it saves, in code size too, so it is left out there, unless a port has
- * byte lanes for it (Cortex-M4/M7: SYMLINE_PORT_DROP_DIM_S, port/armv7em/).
- * Where a port searches the row with the byte test itself
- * (SYMLINE_PORT_LINE_S: x86-64, AArch64), the row decision uses that instead. */
-#if !defined(SYMLINE_PORT_LINE_S) && (defined(__SSE2__) || defined(__ARM_NEON) ||                  \
-                                      defined(__ARM_NEON__) || defined(SYMLINE_PORT_DROP_DIM_S))
-#define SL_ROW_PREFILTER 1
-#endif
-/* A port's version (SYMLINE_PORT_DROP_DIM_S: where the core has byte lanes of
- * its own, linepoints.h) replaces it; this one is then the reference. */
-#ifdef SYMLINE_PORT_DROP_DIM_S
-#define SL_DROP_DIM_S_REF void symline_i_drop_dim_s_c
-#define drop_dim_s symline_i_drop_dim_s
+/* In the speed builds each decision is copied into its callers (one copy per
+ * axis); the size builds keep one of each. */
+#if SL_FOR_SPEED
+#define SL_LP_INLINE SL_ALWAYS_INLINE
 #else
-#define SL_DROP_DIM_S_REF SL_NOINLINE static void drop_dim_s
+#define SL_LP_INLINE
 #endif
 
-#ifdef SL_ROW_PREFILTER
-/*
- * Drops from map[0 .. n-1] the S points that the line filter's first tests
- * reject (symline_i_linefilter_gray() repeats them on what is left): gray c
- * below the illumination minimum and, for the contrast filter, a ridge not
- * above its sides lo, hi by ridge_min or sides brighter than side_max. Byte
- * lanes, whole rows; A points stay. Limits above 255 are clamped, which only
- * keeps more points for the exact test.
- */
-SL_DROP_DIM_S_REF(const symline_i_linefilter *f, const uint8_t *c, const uint8_t *lo,
-                  const uint8_t *hi, uint32_t n, uint8_t *map)
+static void push_point(lp_ctx *c, uint32_t x)
 {
-    const uint8_t mg = (uint8_t)(f->min_gray < 255u ? f->min_gray : 255u);
-    uint8_t sm = 255u, rm = 0u;
+    if (*c->n >= c->cap) {
+        (*c->dropped)++; /* counted, so the result can say how much storage was needed */
+        return;
+    }
+    c->pts[*c->n].x = (uint16_t)x;
+    c->pts[*c->n].y = (uint16_t)c->y;
+    (*c->n)++;
+}
+
+/* Entry x of row y with sides lo, hi: a line point when the exact gray test
+ * passes, it is an S point along the line through it, and, for the paper's
+ * filter, an A point lies near it across the line. */
+static SL_LP_INLINE void decide_at(lp_ctx *c, uint32_t x, uint32_t lo, uint32_t hi, bool along)
+{
+    const uint32_t i = along ? x : c->y;
+    if (!symline_i_linefilter_gray(c->f, c->c[x], lo, hi)) {
+        return;
+    }
+    if (!along) {
+        c->l.c0 = c->c + x; /* down column x from row y */
+    }
+    if (!extremum_at(&c->l, i, true) ||
+        (c->f->a_distance != 0u && !a_near(&c->l, i, c->f->a_distance))) {
+        SL_STAGE(FILTER);
+        return;
+    }
+    SL_STAGE(FILTER);
+    push_point(c, x);
+}
+
+/* decide_at() for entries x0 .. x1-1, where the sides may lie beyond the
+ * row's ends (clamped): the row's first and last dk entries (all of it in
+ * the size builds). */
+static SL_LP_INLINE void decide_edge(lp_ctx *c, uint32_t x0, uint32_t x1, bool along)
+{
+    const uint32_t w = c->w, dk = c->dk;
     uint32_t x;
-    if (f->kind != SYMLINE_FILTER_PAPER) {
-        sm = (uint8_t)(f->side_max < 255u ? f->side_max : 255u);
-        rm = (uint8_t)(f->ridge_min < 1u ? 1u : f->ridge_min < 255u ? f->ridge_min : 255u);
-    } else {
-        lo = c; /* the paper's filter: gray only (side c, ridge 0 >= rm = 0) */
-        hi = c;
-    }
-    for (x = 0; x < n; x++) {
-        const uint8_t side = lo[x] > hi[x] ? lo[x] : hi[x];
-        const uint8_t d = (uint8_t)(c[x] > side ? (uint32_t)c[x] - side : 0u);
-        const unsigned keep = (unsigned)(c[x] >= mg) & (unsigned)(side <= sm) & (unsigned)(d >= rm);
-        map[x] = (uint8_t)((map[x] == SYMLINE_MAP_S && keep == 0u) ? SYMLINE_MAP_NONE : map[x]);
+    for (x = x0; x < x1; x++) {
+        decide_at(c, x, c->lo[x >= dk ? x - dk : 0u], c->hi[x + dk < w ? x + dk : w - 1u], along);
     }
 }
-#endif
 
-static const uint8_t *ring_row(const hring *r, uint32_t y)
+/* symline_i_linefilter_gray() as one expression, for the batches below: its
+ * early returns would be branches that go either way. */
+static SL_ALWAYS_INLINE uint32_t gray_ok(const symline_i_linefilter *f, uint32_t c, uint32_t lo,
+                                         uint32_t hi)
 {
-    if (r->p->level == 0u) {
-        return r->img->data + (size_t)y * r->img->stride;
+    const uint32_t side = lo > hi ? lo : hi, diff = lo > hi ? lo - hi : hi - lo;
+    const uint32_t ridge = f->ridge_pct == 0u ? 0u : (c * f->ridge_pct + 99u) / 100u;
+    const uint32_t asym = (diff * f->asym_pct + 99u) / 100u;
+    uint32_t need = ridge > f->ridge_min ? ridge : f->ridge_min;
+    need = asym > need ? asym : need;
+    if (f->kind == SYMLINE_FILTER_PAPER) {
+        return (uint32_t)(c >= f->min_gray);
     }
-    return r->gray + (size_t)(y % r->gray_rows) * r->p->w;
+    return (uint32_t)(c >= f->min_gray) & (uint32_t)(c > side) & (uint32_t)(side <= f->side_max) &
+           (uint32_t)(c - side >= need);
 }
 
-static uint8_t *ring_map(const hring *r, uint32_t y)
+/* The candidates cand[0..k-1] of row y (interior entries: x = dk + cand[i])
+ * in three steps over the batch: the exact gray test, then the energies and
+ * the S decision (a plateau on extremum_at()'s slow path), then the points.
+ * A candidate passes each test about as often as it fails: one branch per
+ * test and candidate would be mispredicted half the time, the batches
+ * compact their lists without branches. Speed builds only. */
+static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
 {
-    return r->cd.map + (size_t)(y % r->cd.ring) * r->p->w;
+    const uint32_t dk = c->dk;
+    uint16_t *cand = c->cand;
+    uint32_t i, kg = 0u, ks = 0u;
+    for (i = 0; i < k; i++) {
+        const uint32_t j = cand[i];
+        cand[kg] = (uint16_t)(dk + j);
+        kg += gray_ok(c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
+    }
+    SL_STAGE(OPERATOR);
+    for (i = 0; i < kg; i++) {
+        const uint32_t x = cand[i], at = along ? x : c->y;
+        uint32_t up = 0u, e = 0u, dn = 0u, s;
+        if (!along) {
+            c->l.c0 = c->c + x; /* down column x from row y */
+        }
+        if (at != 0u && at + 1u < c->l.n) {
+            energies3(&c->l, at, &up, &e, &dn, true);
+        }
+        s = (uint32_t)(up > e) & (uint32_t)(dn > e);
+        if (up == e || dn == e) {
+            s = (uint32_t)extremum_at(&c->l, at, true);
+        }
+        cand[ks] = (uint16_t)x;
+        ks += s;
+    }
+    SL_STAGE(FILTER);
+    for (i = 0; i < ks; i++) {
+        const uint32_t x = cand[i];
+        if (c->f->a_distance != 0u) {
+            if (!along) {
+                c->l.c0 = c->c + x;
+            }
+            if (!a_near(&c->l, along ? x : c->y, c->f->a_distance)) {
+                continue;
+            }
+        }
+        push_point(c, x);
+    }
 }
 
-/* What the decision of one row reads (built in decide_row()). */
-typedef struct row_view {
-    uint8_t *map; /* written only by the pre-filter (SL_ROW_PREFILTER) */
-    const uint8_t *c, *lo, *hi;
-    const uint8_t *amap; /* the A points near: the map row, or the map ring */
-    uint32_t w, dk;      /* dk: across the line along the row (vertical axis), else 0 */
-    uint32_t aring, alen;
-    size_t astep;
-} row_view;
-
-/* S point x of row y, its sides' gray values lo and hi: added to the points
- * when the line filter takes it. */
-static SL_ALWAYS_INLINE void decide_s(const symline_i_linefilter *f, const row_view *v, uint32_t x,
-                                      uint32_t y, uint32_t lo, uint32_t hi, bool along,
-                                      symline_point *pts, uint32_t cap, uint32_t *n,
-                                      uint32_t *dropped)
+/* The line points of grid row y: the byte test over the row's interior
+ * (where both sides lie in the row; the whole row down the columns) gives
+ * the few candidates, the exact tests follow at those alone. */
+static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
 {
-    if (!symline_i_linefilter_gray(f, v->c[x], lo, hi)) {
+    const uint32_t w = c->w, dk = c->dk;
+    SL_STAGE(FILTER);
+    if (!SL_FOR_SPEED || w <= 2u * dk) {
+        /* Every entry with clamped sides: on scalar cores the byte test
+         * costs what the exact test's first compares cost, and code. */
+        decide_edge(c, 0u, w, along);
         return;
     }
-    if (f->a_distance != 0u && !symline_i_linefilter_a_near(f, v->amap + (along ? 0u : x), v->aring,
-                                                            v->astep, v->alen, along ? x : y)) {
-        return;
-    }
-    push_point(pts, cap, n, x, y, dropped);
-}
-
-/* decide_s() where the sides may lie beyond the row's ends (clamped). */
-static SL_ALWAYS_INLINE void decide_s_edge(const symline_i_linefilter *f, const row_view *v,
-                                           uint32_t x, uint32_t y, bool along, symline_point *pts,
-                                           uint32_t cap, uint32_t *n, uint32_t *dropped)
-{
-    const uint32_t w = v->w, dk = v->dk;
-    decide_s(f, v, x, y, v->lo[x >= dk ? x - dk : 0u], v->hi[x + dk < w ? x + dk : w - 1u], along,
-             pts, cap, n, dropped);
-}
-
-/* The line points of grid row y from its map row: S points whose gray
- * values pass the line filter, with an A point near when it asks for one.
- * Across the line: k entries either side along a row (vertical axis),
- * k rows up and down a column (horizontal axis). */
-static SL_ALWAYS_INLINE void decide_row(const hring *r, uint32_t y, symline_point *pts,
-                                        uint32_t cap, uint32_t *n, uint32_t *row_start,
-                                        uint32_t *dropped, bool along)
-{
-    const symline_i_pass *p = r->p;
-    /* A copy in locals: the stores of points cannot change it (to save time). */
-    const symline_i_linefilter fcopy = p->filter;
-    const symline_i_linefilter *f = SL_FOR_SPEED ? &fcopy : &p->filter;
-    const uint32_t w = p->w;
-    const uint32_t dk = along ? p->k : 0u, ky = along ? 0u : p->k;
-    uint32_t x = 0u;
-    row_view v;
-    v.map = ring_map(r, y);
-    v.c = ring_row(r, y);
-    v.lo = ring_row(r, y >= ky ? y - ky : 0u);
-    v.hi = ring_row(r, y + ky < p->h ? y + ky : p->h - 1u);
-    v.amap = along ? v.map : r->cd.map;
-    v.w = w;
-    v.dk = dk;
-    v.aring = along ? w : r->cd.ring;
-    v.alen = along ? w : p->h;
-    v.astep = along ? 1u : w;
-    row_start[y] = *n;
-#ifdef SYMLINE_PORT_LINE_S
-    if (w > 2u * dk) {
-        /* The interior, where both sides lie in the row (along a row; the
-         * whole row down columns): one pass of the byte test over it gives
-         * the few S points the exact filter has to look at. */
+    decide_edge(c, 0u, dk, along); /* the left border */
+    {
         const uint32_t len = w - 2u * dk;
-        const bool paper = f->kind == SYMLINE_FILTER_PAPER; /* gray only */
-        const uint8_t *ic = v.c + dk, *ilo = paper ? ic : v.lo, *ihi = paper ? ic : v.hi + 2u * dk;
+        const bool paper = c->f->kind == SYMLINE_FILTER_PAPER; /* gray only */
+        const uint8_t *ic = c->c + dk, *ilo = paper ? ic : c->lo,
+                      *ihi = paper ? ic : c->hi + (size_t)2u * dk;
         symline_i_prefilter pf;
-        uint16_t cand[SL_LINE_S_MAX];
-        uint32_t at = 0u, i;
-        symline_i_prefilter_setup(f, &pf);
-        for (; x < dk; x++) { /* the left border */
-            if (v.map[x] == SYMLINE_MAP_S) {
-                decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
-            }
-        }
+        uint32_t at = 0u;
+        symline_i_prefilter_setup(c->f, &pf);
         while (at < len) {
-            const uint32_t k = symline_i_line_s(&pf, v.map + dk, ic, ilo, ihi, at, len, cand, &at);
-            for (i = 0; i < k; i++) {
-                const uint32_t j = cand[i];
-                decide_s(f, &v, dk + j, y, v.lo[j], v.hi[j + 2u * dk], along, pts, cap, n, dropped);
-            }
-        }
-        for (x = w - dk; x < w; x++) { /* the right border */
-            if (v.map[x] == SYMLINE_MAP_S) {
-                decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
-            }
+            decide_batch(c, symline_i_line_cand(&pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
     }
-#elif defined(SL_ROW_PREFILTER)
-    if (w > 2u * dk) { /* along a row: the interior, where both sides lie in the row */
-        drop_dim_s(f, v.c + dk, v.lo, v.hi + (size_t)2u * dk, w - 2u * dk, v.map + dk);
-    }
-#endif
-    for (; x < w; x = SL_NEXT_S(v.map, x, w)) {
-        if (v.map[x] == SYMLINE_MAP_S) {
-            decide_s_edge(f, &v, x, y, along, pts, cap, n, dropped);
-        }
-    }
+    decide_edge(c, w - dk, w, along); /* the right border */
 }
 
 /* The row decision; to save time (SL_FOR_SPEED), one copy per axis. */
-SL_NOINLINE static void decide(const hring *r, uint32_t y, symline_point *pts, uint32_t cap,
-                               uint32_t *n, uint32_t *row_start, uint32_t *dropped)
+SL_NOINLINE static void decide(lp_ctx *c)
 {
-    const bool along = r->p->axis == SYMLINE_AXIS_VERTICAL;
+    const bool along = c->l.step == 1;
     if (SL_FOR_SPEED && along) {
-        decide_row(r, y, pts, cap, n, row_start, dropped, true);
+        decide_row(c, true);
     } else if (SL_FOR_SPEED) {
-        decide_row(r, y, pts, cap, n, row_start, dropped, false);
+        decide_row(c, false);
     } else {
-        decide_row(r, y, pts, cap, n, row_start, dropped, along);
+        decide_row(c, along);
     }
+}
+
+/* Grid row y of the pass (c->y): the frame's row at full resolution; at a
+ * coarse level the grid row, and down the columns the ring's rows up to
+ * y + R produced (each stored twice, see symline_i_collect()), with rows
+ * y - R .. y + R at the ring's stride around the row returned. Apart from
+ * the collection's loop: its frame is not on the deepest call chain. */
+SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
+{
+    const symline_i_pass *p = c->p;
+    const uint32_t w = p->w, h = p->h;
+    if (p->level == 0u) {
+        return c->img->data + (size_t)y * c->img->stride;
+    }
+    SL_STAGE(GRID);
+    if (p->axis == SYMLINE_AXIS_VERTICAL) {
+        symline_i_grid_row(c->img, p, y, c->acc, c->gray);
+        return c->gray;
+    } else {
+        const uint32_t R = reach(p), held = ring_rows(p);
+        const uint32_t need = y + R < h ? y + R : h - 1u, first = y > R ? y - R : 0u;
+        for (; c->produced <= need; c->produced++) {
+            uint8_t *g = c->gray + (size_t)(c->produced % held) * w, *g2 = g + (size_t)held * w;
+            uint32_t x;
+            symline_i_grid_row(c->img, p, c->produced, c->acc, g);
+            for (x = 0; x < w; x++) {
+                g2[x] = g[x];
+            }
+        }
+        /* Rows first .. need from the slot of row first on. */
+        return c->gray + (size_t)(first % held + (y - first)) * w;
+    }
+}
+
+size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width)
+{
+    size_t n = (size_t)3u * SL_ALIGN + symline_i_align_up(sizeof(lp_ctx));
+    if (p->level > 0u) {
+        n += symline_i_align_up((size_t)img_width * sizeof(uint16_t)); /* box accumulator */
+        /* the grid row, or the ring of them down the columns */
+        n += symline_i_align_up((size_t)p->w *
+                                (p->axis == SYMLINE_AXIS_VERTICAL ? 1u : 2u * ring_rows(p)));
+    }
+    return n;
 }
 
 symline_status symline_i_collect(const symline_image *img, const symline_i_pass *p, void *ws,
@@ -302,103 +418,63 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
 {
     uint8_t *cur = (uint8_t *)ws;
     uint8_t *const end = cur + ws_size;
-    hring *rp = (hring *)symline_i_carve(&cur, end, sizeof(hring));
-    const uint32_t w = p->w, h = p->h, m = p->m;
+    const uint32_t h = p->h;
     const bool along = p->axis == SYMLINE_AXIS_VERTICAL;
-    /* Down the columns, row t's extrema are known once row t + lag + 1 is in,
-     * and its decision waits for a_distance more rows of extrema. */
-    const uint32_t delta = along ? 0u : h_delta(p);
-    /* Energies of rows t-2, t-1, t in turn (E3 + w * (row % 3)); one row along rows. */
-    const uint32_t erows = along ? 1u : 3u;
-    uint32_t *E3 = (uint32_t *)symline_i_carve(&cur, end, (size_t)erows * w * sizeof(uint32_t));
-    symline_i_coldown *cd;
-    const uint8_t **rows = NULL;
-    uint16_t *acc = NULL;
-    uint32_t t, produced = 0u;
+    lp_ctx *c = (lp_ctx *)symline_i_carve(&cur, end, sizeof(lp_ctx));
+    uint32_t y;
     *n = 0u;
-    if (w == 0u || h == 0u) {
+    if (p->w == 0u || h == 0u) {
         return SYMLINE_ERR_SIZE;
     }
-    if (rp == NULL) {
+    if (c == NULL) {
         return SYMLINE_ERR_BUFFER;
     }
-    cd = &rp->cd;
-    rp->img = img;
-    rp->p = p;
-    rp->gray_rows = along ? 1u : h_gray_rows(p);
-    cd->E3 = E3;
-    cd->stride = w;
-    cd->width = w;
-    cd->ring = along ? 1u : h_map_rows(p);
-    cd->lag = p->lag;
-    cd->map = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * cd->ring);
-    if (p->level > 0u) { /* else the frame's rows are read (ring_row()) */
-        rp->gray = (uint8_t *)symline_i_carve(&cur, end, (size_t)w * rp->gray_rows);
+    c->acc = NULL;
+    c->gray = NULL;
+    if (p->level > 0u) { /* else the frame's rows are read */
         /* The box accumulator serves the lane loops alone (SL_FOR_SPEED); its
          * room stays in the workspace size either way. */
         if (SL_FOR_SPEED) {
-            acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
+            c->acc = (uint16_t *)symline_i_carve(&cur, end, (size_t)img->width * sizeof(uint16_t));
         }
-        if (rp->gray == NULL || (SL_FOR_SPEED && acc == NULL)) {
+        /* Down the columns each grid row twice, in slots r % held and
+         * r % held + held: any held rows in a row lie one after the other. */
+        c->gray =
+            (uint8_t *)symline_i_carve(&cur, end, (size_t)p->w * (along ? 1u : 2u * ring_rows(p)));
+        if (c->gray == NULL || (SL_FOR_SPEED && c->acc == NULL)) {
             return SYMLINE_ERR_BUFFER;
         }
     }
-    if (!along) {
-        cd->run_start = (uint16_t *)symline_i_carve(&cur, end, (size_t)w * sizeof(uint16_t));
-        cd->sg = (int8_t *)symline_i_carve(&cur, end, 2u * (size_t)w);
-        rows = (const uint8_t **)symline_i_carve(&cur, end,
-                                                 (2u * (size_t)m + 1u) * sizeof(const uint8_t *));
-        if (cd->run_start == NULL || cd->sg == NULL || rows == NULL) {
-            return SYMLINE_ERR_BUFFER;
+    c->img = img;
+    c->p = p;
+    c->produced = 0u;
+    c->f = &p->filter;
+    c->pts = pts;
+    c->n = n;
+    c->dropped = dropped;
+    c->cap = cap;
+    c->w = p->w;
+    c->dk = along ? p->k : 0u;
+    c->l.n = along ? p->w : h;
+    c->l.m = p->m;
+    c->l.lag = p->lag;
+    c->l.i0 = 0u;
+    c->l.step = along ? 1 : (ptrdiff_t)(p->level == 0u ? img->stride : p->w);
+    for (y = 0; y < h; y++) {
+        const uint8_t *row = grid_row_at(c, y);
+        c->c = row;
+        c->lo = row;
+        c->hi = row;
+        c->l.c0 = row;
+        if (!along) {
+            const ptrdiff_t st = c->l.step;
+            c->lo = row - (ptrdiff_t)(y >= p->k ? p->k : y) * st;
+            c->hi = row + (ptrdiff_t)(y + p->k < h ? p->k : h - 1u - y) * st;
+            c->l.i0 = y;
         }
-    }
-    if (E3 == NULL || cd->map == NULL) {
-        return SYMLINE_ERR_BUFFER;
-    }
-    /* Rows t >= h only decide the last delta rows. */
-    for (t = 0; t < h + delta; t++) {
-        uint32_t *E = E3 + (size_t)(t % erows) * w;
-        if (t >= h) {
-            if (t == h) {
-                /* The last row touches the bottom: never marked. */
-                uint8_t *mr = ring_map(rp, h - 1u);
-                uint32_t x;
-                for (x = 0; x < w; x++) {
-                    mr[x] = SYMLINE_MAP_NONE;
-                }
-            }
-        } else {
-            if (p->level > 0u) {
-                const uint32_t need = along ? t : (t + m < h) ? t + m : h - 1u;
-                SL_STAGE(GRID);
-                while (produced <= need) {
-                    symline_i_grid_row(img, p, produced, acc,
-                                       rp->gray + (size_t)(produced % rp->gray_rows) * w);
-                    produced++;
-                }
-            }
-            SL_STAGE(OPERATOR);
-            if (along) {
-                (void)symline_energy_row(ring_row(rp, t), w, m, E);
-                SL_STAGE(EXTREMA);
-                symline_i_extrema_runs(E, w, p->lag, cd->map);
-            } else {
-                uint32_t j;
-                for (j = 0; j <= 2u * m; j++) {
-                    const uint32_t yy = t + j; /* row t - m + j, offset by m to stay unsigned */
-                    rows[j] = (yy >= m && yy - m < h) ? ring_row(rp, yy - m) : NULL;
-                }
-                (void)symline_energy_across(rows, m, w, E);
-                SL_STAGE(EXTREMA);
-                if (t >= 1u) {
-                    symline_i_extrema_down(cd, E, t);
-                }
-            }
-        }
-        if (t >= delta) {
-            SL_STAGE(FILTER);
-            decide(rp, t - delta, pts, cap, n, row_start, dropped);
-        }
+        c->y = y;
+        row_start[y] = *n;
+        decide(c);
     }
     row_start[h] = *n;
     return SYMLINE_OK;

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * Line points of one pass (linepoints.c): the scale grid's rows (grid.c), symmetry
- * energies, extrema with the plateau limit and the line filter, streamed
+ * Line points of one pass (linepoints.c): the scale grid's rows (grid.c), the
+ * line filter's byte test over each row, and at its few candidates the exact
+ * filter, symmetry energies and the extremum with the plateau limit, streamed
  * over a ring of rows into a raster-ordered point list.
  */
 #ifndef SYMLINE_LIB_LINEPOINTS_H
@@ -23,17 +24,6 @@ typedef struct symline_i_pass {
     uint32_t lag;   /* longest accepted plateau: end - marked index <= lag (= m) */
     symline_i_linefilter filter;
 } symline_i_pass;
-
-#ifdef SYMLINE_PORT_DROP_DIM_S
-/* The row pre-filter of the line filter (linepoints.c: drops from map[0..n-1]
- * the S points whose gray values c, lo, hi the filter's first tests reject),
- * replaced by a port's version with the same output (SYMLINE_PORT_DROP_DIM_S,
- * CMake option SYMLINE_SIMD); symline_i_drop_dim_s_c() is the reference. */
-void symline_i_drop_dim_s_c(const symline_i_linefilter *f, const uint8_t *c, const uint8_t *lo,
-                            const uint8_t *hi, uint32_t n, uint8_t *map);
-void symline_i_drop_dim_s(const symline_i_linefilter *f, const uint8_t *c, const uint8_t *lo,
-                          const uint8_t *hi, uint32_t n, uint8_t *map);
-#endif
 
 /* Workspace bytes of symline_i_collect() (row index excluded). */
 size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width);

@@ -204,6 +204,7 @@ quote docs/detector.md '): \([0-9,]*\) B of code on Cortex-M4 -Os, listed with t
 figure "worst-case stack of any public entry point, Cortex-M0+ -Os" "$(stack_max m0plus-os)" B
 quote README.md 'at most \([0-9]*\) bytes of'
 figure "worst-case stack of any public entry point, Cortex-M4 -O3" "$(stack_max m4)" B
+quote README.md 'stack per call on Cortex-M0+ `-Os`, \([0-9]*\) on Cortex-M4'
 figure "stack of symline_detect, Cortex-M0+ -Os" "$(stack m0plus-os symline_detect)" B
 figure "stack of symline_detect, Cortex-M4 -O3" "$(stack m4 symline_detect)" B
 figure "stack of symline_field_find, Cortex-M0+ -Os" "$(stack m0plus-os symline_field_find)" B
@@ -222,9 +223,9 @@ for s in 160x120 320x240 640x480; do
     case $s in
     320x240)
         quote docs/detector.md 'ws\[[0-9]*\]; *\/\* \([0-9]*\) B at 320x240'
-        quote docs/detector.md '7,960 → \([0-9,]*\) B at 320x240'
+        quote docs/detector.md '^\([0-9,]*\) B at 320x240 and [0-9,]* B at 640x480 (the line'
         quote README.md '; \([0-9.]*\) KiB of working memory for a 320x240' KiB ;;
-    640x480) quote docs/detector.md '15,640 → \([0-9,]*\) B at 640x480' ;;
+    640x480) quote docs/detector.md '^[0-9,]* B at 320x240 and \([0-9,]*\) B at 640x480 (the line' ;;
     esac
     figure "workspace $s m=10, default configuration, Cortex-M4" "$(ws_m4 $s 10 default)" B
     quote docs/porting.md "^| $s | [0-9]* B | \\([0-9]*\\) B |"

@@ -295,15 +295,13 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
                                 2u * (size_t)(width) + 16u,                                        \
                             SYMLINE_DETECT_WS_MAX_(2u * (size_t)(width) + 1056u,                   \
                                                    SYMLINE_DETECT_WS_FIELD_(width, height))))
-/* The passes over axes and scales (lib/pass.h), the largest of them. */
+/* The passes over axes and scales (lib/pass.h), the largest of them: at full
+ * resolution the frame's rows are read in place; a coarser scale holds its
+ * grid rows (twice 2 (a_distance + 2 radius + 1) + 1 of them down the columns). */
 #define SYMLINE_DETECT_WS_PASSES_(width, height, radius, a_distance, levels)                       \
     ((size_t)SYMLINE_DETECT_WS_FIXED + (size_t)4u * ((size_t)(height) + 1u) +                      \
-     (size_t)8u * (2u * (size_t)(radius) + 1u) +                                                   \
-     SYMLINE_DETECT_WS_MAX_(                                                                       \
-         SYMLINE_DETECT_WS_MAX_(                                                                   \
-             (size_t)(width) * (18u + 2u * (size_t)(a_distance) + (size_t)(radius)),               \
-             SYMLINE_DETECT_WS_COARSE_(width, height, radius, a_distance, levels)),                \
-         SYMLINE_DETECT_WS_GRID_(width, height)))
+     SYMLINE_DETECT_WS_MAX_(SYMLINE_DETECT_WS_COARSE_(width, height, radius, a_distance, levels),  \
+                            SYMLINE_DETECT_WS_GRID_(width, height)))
 /* The tracing's state and the grid of earlier segments (lib/segindex.h):
  * 32 px cells, 4 bytes each plus 4 segment ids of 4 bytes. */
 #define SYMLINE_DETECT_WS_GRID_(width, height)                                                     \
@@ -322,7 +320,7 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
     (((levels) == 0u ? 2u * (size_t)(radius) + 1u < (size_t)(width) / 16u : (levels) >= 2u) &&     \
              (size_t)(width) / 2u >= 2u * (size_t)(radius) + 3u &&                                 \
              (size_t)(height) / 2u >= 2u * (size_t)(radius) + 3u                                   \
-         ? ((size_t)(width) / 2u) * (21u + 3u * (size_t)(a_distance) + 4u * (size_t)(radius)) +    \
+         ? ((size_t)(width) / 2u) * (6u + 4u * (size_t)(a_distance) + 8u * (size_t)(radius)) +     \
                2u * (size_t)(width)                                                                \
          : (size_t)0u)
 /* Bytes of the detection's own state within that bound (checked when the library is compiled). */

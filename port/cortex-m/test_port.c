@@ -22,13 +22,12 @@
 #ifdef SYMLINE_PORT_EXTREMA_ROWS
 #include "extrema.h"
 #endif
-#if defined(SYMLINE_PORT_DROP_DIM_S) || defined(SYMLINE_PORT_FIND_S)
-#include "linepoints.h"
+#ifdef SYMLINE_PORT_LINE_CAND
+#include "linefilter.h"
 #endif
 
 #if defined(SYMLINE_PORT_ENERGY) || defined(SYMLINE_PORT_GRID) ||                                  \
-    defined(SYMLINE_PORT_EXTREMA_ROWS) || defined(SYMLINE_PORT_DROP_DIM_S) ||                      \
-    defined(SYMLINE_PORT_FIND_S)
+    defined(SYMLINE_PORT_EXTREMA_ROWS) || defined(SYMLINE_PORT_LINE_CAND)
 static uint32_t rng_state = 12345u;
 
 static uint8_t rnd8(void)
@@ -185,67 +184,71 @@ static void rows_checks(void)
 }
 #endif
 
-#if defined(SYMLINE_PORT_DROP_DIM_S) || defined(SYMLINE_PORT_FIND_S)
-#define PT_M 80u
+#ifdef SYMLINE_PORT_LINE_CAND
+#define PT_M 100u
 static uint8_t pt_c[PT_M + 4u], pt_lo[PT_M + 4u], pt_hi[PT_M + 4u];
-static uint8_t pt_m0[PT_M + 4u], pt_m1[PT_M + 4u], pt_m2[PT_M + 4u];
 
-/* A map row: S points with probability s_in_8 / 8, else A or NONE. */
-static void fill_map(uint8_t *map, uint32_t n, unsigned s_in_8)
+/* Rows of gray values near each other (every test a close call), anywhere,
+ * or only 0 and 255. */
+static void fill_rows(unsigned round)
 {
+    const uint32_t base = rnd8(), spread = 1u + rnd8() % 48u;
     uint32_t i;
-    for (i = 0; i < n; i++) {
-        const uint8_t v = rnd8();
-        map[i] = (uint8_t)((v & 7u) < s_in_8 ? SYMLINE_MAP_S
-                           : (v & 8u)        ? SYMLINE_MAP_A
-                                             : SYMLINE_MAP_NONE);
+    for (i = 0; i < PT_M + 4u; i++) {
+        uint8_t *g[3] = {pt_c, pt_lo, pt_hi};
+        unsigned j;
+        for (j = 0; j < 3u; j++) {
+            const uint32_t v = round % 3u == 0u   ? rnd8()
+                               : round % 3u == 1u ? ((rnd8() & 1u) ? 255u : 0u)
+                                                  : base + rnd8() % spread;
+            g[j][i] = (uint8_t)(v < 255u ? v : 255u);
+        }
     }
 }
-#endif
 
-#ifdef SYMLINE_PORT_DROP_DIM_S
-static void drop_checks(void)
+/* Both filters' thresholds as symline_i_prefilter_setup() makes them, from
+ * 0 to beyond a byte's range. */
+static void pick_prefilter(symline_i_prefilter *pf, unsigned round)
 {
     static const uint32_t limits[] = {0u, 1u, 2u, 17u, 100u, 200u, 254u, 255u, 256u, 1000u};
-    unsigned round;
-    for (round = 0; round < 400u; round++) {
-        symline_i_linefilter f;
-        const uint32_t n = round % 70u, off = round % 4u;
-        memset(&f, 0, sizeof f);
-        f.kind = (round % 5u == 0u) ? SYMLINE_FILTER_PAPER : SYMLINE_FILTER_CONTRAST;
-        f.min_gray = limits[rnd8() % 10u];
-        f.side_max = limits[rnd8() % 10u];
-        f.ridge_min = limits[rnd8() % 10u];
-        fill_gray(pt_c, PT_M + 4u, round);
-        fill_gray(pt_lo, PT_M + 4u, round / 2u);
-        fill_gray(pt_hi, PT_M + 4u, round / 3u);
-        fill_map(pt_m1, PT_M + 4u, 1u + round % 8u);
-        memcpy(pt_m2, pt_m1, sizeof pt_m1);
-        symline_i_drop_dim_s(&f, pt_c + off, pt_lo, pt_hi + off, n, pt_m1 + off);
-        symline_i_drop_dim_s_c(&f, pt_c + off, pt_lo, pt_hi + off, n, pt_m2 + off);
-        FW_CHECK(memcmp(pt_m1, pt_m2, sizeof pt_m1) == 0, "row pre-filter n=%lu round %u",
-                 (unsigned long)n, round);
-    }
+    symline_i_linefilter f;
+    memset(&f, 0, sizeof f);
+    f.kind = (round % 4u == 0u) ? SYMLINE_FILTER_PAPER : SYMLINE_FILTER_CONTRAST;
+    f.min_gray = rnd8() % 2u ? limits[rnd8() % 10u] : rnd8() % 160u;
+    f.ridge_min = rnd8() % 2u ? limits[rnd8() % 10u] : rnd8() % 24u;
+    f.side_max = rnd8() % 2u ? limits[rnd8() % 10u] : 255u - rnd8() % 64u;
+    symline_i_prefilter_setup(&f, pf);
 }
-#endif
 
-#ifdef SYMLINE_PORT_FIND_S
-static void find_s_checks(void)
+/* The same count, indices and resumption point as the reference for every
+ * start x of rows of every length up to PT_M at every alignment, and no
+ * write past the count. The paper filter gets lo = hi = c, as the detector
+ * calls it. */
+static void line_cand_checks(void)
 {
     unsigned round;
-    for (round = 0; round < 64u; round++) {
+    for (round = 0; round < 24u; round++) {
+        const uint32_t off = round % 4u;
+        const int paper = round % 4u == 0u;
+        const uint8_t *c = pt_c + off, *lo = paper ? c : pt_lo + (round / 4u) % 4u,
+                      *hi = paper ? c : pt_hi + 3u - off;
+        symline_i_prefilter pf;
         uint32_t n, x;
-        fill_map(pt_m0, PT_M + 4u, round % 4u); /* S points dense to none */
-        if (round % 16u == 15u) {
-            pt_m0[PT_M - 1u] = SYMLINE_MAP_S; /* one at the very end */
-        }
-        for (n = 0; n <= PT_M; n += 1u + round % 7u) {
+        pick_prefilter(&pf, round);
+        fill_rows(round);
+        for (n = 0; n <= PT_M; n++) {
+            unsigned bad = 0u;
             for (x = 0; x <= n; x++) {
-                FW_CHECK(symline_i_find_s(pt_m0 + round % 4u, x, n) ==
-                             symline_i_find_s_c(pt_m0 + round % 4u, x, n),
-                         "find S from %lu of %lu, round %u", (unsigned long)x, (unsigned long)n,
-                         round);
+                uint16_t a[SL_LINE_CAND_MAX + 1u], b[SL_LINE_CAND_MAX + 1u];
+                uint32_t na = 0xfffu, nb = 0xeeeu, ka, kb;
+                memset(a, 0x5a, sizeof a);
+                memset(b, 0x5a, sizeof b);
+                ka = symline_i_line_cand(&pf, c, lo, hi, x, n, a, &na);
+                kb = symline_i_line_cand_c(&pf, c, lo, hi, x, n, b, &nb);
+                bad += ka != kb || na != nb || memcmp(a, b, sizeof a) != 0;
             }
+            FW_CHECK(bad == 0u, "line candidates n=%lu round %u: %u starts differ",
+                     (unsigned long)n, round, bad);
         }
     }
 }
@@ -263,11 +266,8 @@ void fw_port_checks(void)
 #ifdef SYMLINE_PORT_EXTREMA_ROWS
     rows_checks();
 #endif
-#ifdef SYMLINE_PORT_DROP_DIM_S
-    drop_checks();
-#endif
-#ifdef SYMLINE_PORT_FIND_S
-    find_s_checks();
+#ifdef SYMLINE_PORT_LINE_CAND
+    line_cand_checks();
 #endif
     printf("port versions against the portable references: %u checks\n", fw_checks - before);
 }

@@ -1,12 +1,13 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * The line filter's byte test and S search (symline_i_line_s_c(),
- * lib/linefilter.h) against the exact filter: it reports every S point the
- * gray-value test symline_i_linefilter_gray() keeps, in order, and only S
- * points. Where the build has a SIMD version (SYMLINE_PORT_LINE_S, CMake
- * option SYMLINE_SIMD) it is compared with the reference call by call: every
- * start, rows of every length up to 100 at every alignment, both filters,
- * thresholds from 0 to beyond 255, S points dense to absent, full outputs.
+ * The line filter's byte test over a row (symline_i_line_cand_c(),
+ * lib/linefilter.h) against the exact filter: it reports every entry the
+ * gray-value test symline_i_linefilter_gray() keeps, in order, and only
+ * entries that pass the byte test as stated. Where the build has a SIMD
+ * version (SYMLINE_PORT_LINE_CAND, CMake option SYMLINE_SIMD) it is compared
+ * with the reference call by call: every start, rows of every length up to
+ * 100 at every alignment, both filters, thresholds from 0 to beyond 255,
+ * candidates dense to absent, full outputs.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -21,20 +22,16 @@
 
 #define ROW 128u
 
-/* A random row: map entries with S points one in `one_in`, and gray values
- * c, lo, hi mostly near each other (so all tests are close calls), or
- * anywhere, or at the extremes 0 and 255. */
-static void fill(uint8_t *map, uint8_t *c, uint8_t *lo, uint8_t *hi, uint32_t *s)
+/* A random row: gray values c, lo, hi mostly near each other (so all tests
+ * are close calls), or anywhere, or at the extremes 0 and 255. */
+static void fill(uint8_t *c, uint8_t *lo, uint8_t *hi, uint32_t *s)
 {
-    static const uint8_t kinds[] = {SYMLINE_MAP_NONE, SYMLINE_MAP_A, SYMLINE_MAP_S};
-    const uint32_t one_in = 1u + tu_rand(s) % 8u, spread = 1u + tu_rand(s) % 64u;
+    const uint32_t spread = 1u + tu_rand(s) % 64u;
     const uint32_t base = tu_rand(s) % 256u, kind = tu_rand(s) % 4u;
     uint32_t i;
     for (i = 0; i < ROW; i++) {
-        const uint32_t r = tu_rand(s);
         uint8_t *g[3] = {c, lo, hi};
         uint32_t j;
-        map[i] = (r % one_in == 0u) ? SYMLINE_MAP_S : kinds[(r >> 8) % 2u];
         for (j = 0; j < 3u; j++) {
             const uint32_t q = tu_rand(s);
             const uint32_t v = kind == 0u   ? q
@@ -58,12 +55,21 @@ static void pick_filter(symline_i_linefilter *f, uint32_t *s)
     f->side_max = tu_rand(s) % 2u == 0u ? 255u : tu_rand(s) % 256u;
 }
 
+/* The byte test as lib/linefilter.h states it. */
+static int byte_test(const symline_i_prefilter *pf, uint32_t c, uint32_t lo, uint32_t hi)
+{
+    const uint32_t side = lo > hi ? lo : hi;
+    const uint32_t need = side + pf->ridge_min < 255u ? side + pf->ridge_min : 255u;
+    return c >= pf->min_gray && c >= need && side <= pf->side_max;
+}
+
 /* The reference over the whole of [x, n), call after call as the detector
- * makes them: every S point the exact test keeps is reported, and everything
- * reported is an S point, in increasing order, at most SL_LINE_S_MAX a call. */
+ * makes them: every entry the exact test keeps is reported, everything
+ * reported passes the byte test, in increasing order, at most
+ * SL_LINE_CAND_MAX a call. */
 static void reference_keeps_line_points(void **state)
 {
-    uint8_t map[ROW], c[ROW], lo[ROW], hi[ROW];
+    uint8_t c[ROW], lo[ROW], hi[ROW];
     uint32_t s = 5u, t;
     (void)state;
     for (t = 0; t < 20000u; t++) {
@@ -74,23 +80,23 @@ static void reference_keeps_line_points(void **state)
         uint32_t x = 0u, i, last = 0u, any = 0u;
         pick_filter(&f, &s);
         symline_i_prefilter_setup(&f, &pf);
-        fill(map, c, lo, hi, &s);
+        fill(c, lo, hi, &s);
         if (f.kind == SYMLINE_FILTER_PAPER) { /* as the detector calls it */
             memcpy(lo, c, sizeof lo);
             memcpy(hi, c, sizeof hi);
         }
         memset(seen, 0, sizeof seen);
         while (x < n) {
-            uint16_t out[SL_LINE_S_MAX];
+            uint16_t out[SL_LINE_CAND_MAX];
             uint32_t next = 0xffffffffu;
-            const uint32_t k = symline_i_line_s_c(&pf, map, c, lo, hi, x, n, out, &next);
-            assert_true(k <= SL_LINE_S_MAX);
+            const uint32_t k = symline_i_line_cand_c(&pf, c, lo, hi, x, n, out, &next);
+            assert_true(k <= SL_LINE_CAND_MAX);
             assert_true(next > x && next <= n);
-            assert_true(k == SL_LINE_S_MAX || next == n);
+            assert_true(k == SL_LINE_CAND_MAX || next == n);
             for (i = 0; i < k; i++) {
                 assert_true(out[i] >= x && out[i] < next);
                 assert_true(any == 0u || out[i] > last);
-                assert_int_equal(map[out[i]], SYMLINE_MAP_S);
+                assert_true(byte_test(&pf, c[out[i]], lo[out[i]], hi[out[i]]));
                 seen[out[i]] = 1u;
                 last = out[i];
                 any = 1u;
@@ -98,20 +104,20 @@ static void reference_keeps_line_points(void **state)
             x = next;
         }
         for (i = 0; i < n; i++) {
-            if (map[i] == SYMLINE_MAP_S && symline_i_linefilter_gray(&f, c[i], lo[i], hi[i])) {
+            if (symline_i_linefilter_gray(&f, c[i], lo[i], hi[i])) {
                 assert_int_equal(seen[i], 1u);
             }
         }
     }
 }
 
-#ifdef SYMLINE_PORT_LINE_S
+#ifdef SYMLINE_PORT_LINE_CAND
 /* The SIMD version against the reference: the same count, indices and
  * resumption point for every start x of rows of every length and alignment,
  * and no write past the count it returns. */
 static void simd_is_reference(void **state)
 {
-    uint8_t map[ROW + 16u], c[ROW + 16u], lo[ROW + 16u], hi[ROW + 16u];
+    uint8_t c[ROW + 16u], lo[ROW + 16u], hi[ROW + 16u];
     uint32_t s = 7u, t;
     (void)state;
     for (t = 0; t < 6000u; t++) {
@@ -121,15 +127,15 @@ static void simd_is_reference(void **state)
         uint32_t x;
         pick_filter(&f, &s);
         symline_i_prefilter_setup(&f, &pf);
-        fill(map, c, lo, hi, &s);
-        fill(map + 16u, c + 16u, lo + 16u, hi + 16u, &s);
+        fill(c, lo, hi, &s);
+        fill(c + 16u, lo + 16u, hi + 16u, &s);
         for (x = 0; x <= n; x++) {
-            uint16_t a[SL_LINE_S_MAX + 1u], b[SL_LINE_S_MAX + 1u];
+            uint16_t a[SL_LINE_CAND_MAX + 1u], b[SL_LINE_CAND_MAX + 1u];
             uint32_t na = 0xfffu, nb = 0xeeeu, ka, kb;
             memset(a, 0x5a, sizeof a);
             memset(b, 0x5a, sizeof b);
-            ka = symline_i_line_s(&pf, map + off, c + off, lo + off, hi + off, x, n, a, &na);
-            kb = symline_i_line_s_c(&pf, map + off, c + off, lo + off, hi + off, x, n, b, &nb);
+            ka = symline_i_line_cand(&pf, c + off, lo + off, hi + off, x, n, a, &na);
+            kb = symline_i_line_cand_c(&pf, c + off, lo + off, hi + off, x, n, b, &nb);
             assert_int_equal(ka, kb);
             assert_int_equal(na, nb);
             assert_memory_equal(a, b, sizeof a);
@@ -142,7 +148,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(reference_keeps_line_points),
-#ifdef SYMLINE_PORT_LINE_S
+#ifdef SYMLINE_PORT_LINE_CAND
         cmocka_unit_test(simd_is_reference),
 #endif
     };

@@ -214,40 +214,14 @@ static void simd_is_reference(void **state)
 }
 #endif
 
-#ifdef SYMLINE_PORT_FIND_S
-/* The SIMD search for S points against the reference: every start, maps of
- * every length up to 100 at every alignment, S points dense to absent. */
-static void find_s_is_reference(void **state)
-{
-    static const uint8_t kinds[] = {SYMLINE_MAP_NONE, SYMLINE_MAP_A, SYMLINE_MAP_S};
-    uint8_t map[128];
-    uint32_t s = 3u, t, i, x;
-    (void)state;
-    for (t = 0; t < 4000u; t++) {
-        const uint32_t n = tu_rand(&s) % 101u, off = tu_rand(&s) % 16u;
-        const uint32_t one_in = 1u + tu_rand(&s) % 64u; /* S density */
-        for (i = 0; i < sizeof map; i++) {
-            const uint32_t r = tu_rand(&s);
-            map[i] = (r % one_in == 0u) ? SYMLINE_MAP_S : kinds[(r >> 8) % 2u];
-        }
-        for (x = 0; x <= n; x++) {
-            assert_int_equal(symline_i_find_s(map + off, x, n),
-                             symline_i_find_s_c(map + off, x, n));
-        }
-    }
-}
-#endif
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(row_is_definition),     cmocka_unit_test(across_is_definition),
+        cmocka_unit_test(row_is_definition),
+        cmocka_unit_test(across_is_definition),
         cmocka_unit_test(frames_are_definition),
 #ifdef SYMLINE_PORT_ENERGY
         cmocka_unit_test(simd_is_reference),
-#endif
-#ifdef SYMLINE_PORT_FIND_S
-        cmocka_unit_test(find_s_is_reference),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -68,33 +68,6 @@ static void gray_test(void **state)
     assert_false(symline_i_linefilter_gray(&f, 99, 0, 0));
 }
 
-static void a_point_near(void **state)
-{
-    symline_i_linefilter f;
-    uint8_t row[12];
-    uint8_t ring[4 * 3];
-    (void)state;
-    memset(&f, 0, sizeof f);
-    f.kind = SYMLINE_FILTER_PAPER;
-    f.a_distance = 2u;
-    /* Along a row: an A point at 5 and an S point at 9. */
-    memset(row, SYMLINE_MAP_NONE, sizeof row);
-    row[5] = SYMLINE_MAP_A;
-    row[9] = SYMLINE_MAP_S;
-    assert_true(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 3));
-    assert_true(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 7));
-    assert_false(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 8)); /* 6..10: the S point only */
-    assert_false(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 0));
-    assert_false(symline_i_linefilter_a_near(&f, row, 12, 1, 12, 11)); /* clipped at the end */
-    /* Down column 1 of a ring of 4 rows of 3: row y sits in slot y % 4. */
-    memset(ring, SYMLINE_MAP_NONE, sizeof ring);
-    ring[(6 % 4) * 3 + 1] = SYMLINE_MAP_A; /* row 6 */
-    assert_true(symline_i_linefilter_a_near(&f, ring + 1, 4, 3, 10, 4));
-    assert_true(symline_i_linefilter_a_near(&f, ring + 1, 4, 3, 10, 8));
-    assert_false(symline_i_linefilter_a_near(&f, ring + 1, 4, 3, 10, 9)); /* rows 7..9 */
-    assert_false(symline_i_linefilter_a_near(&f, ring, 4, 3, 10, 4));     /* column 0 */
-}
-
 static void statistics_and_adaptive_thresholds(void **state)
 {
     static uint8_t px[20 * 20];
@@ -217,7 +190,6 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(setup_from_config),
         cmocka_unit_test(gray_test),
-        cmocka_unit_test(a_point_near),
         cmocka_unit_test(statistics_and_adaptive_thresholds),
         cmocka_unit_test(whole_piece_side_test),
     };

@@ -4,7 +4,8 @@
  * ring of rows gives exactly the points of a plain full-frame path (whole
  * grid image, whole energy and extrema maps, the same filter rule), for both
  * axes, three scales, both filters and two radii, on a synthetic and a real
- * frame; nothing is written outside the workspace.
+ * frame and on one of flat bands (plateaus); nothing is written outside the
+ * workspace.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -209,11 +210,48 @@ static void strip_identity_real(void **state)
     imgio_free(&g);
 }
 
+/* Flat bands and steps of a few gray levels: runs of equal energies
+ * (plateaus) of every length, down the columns and along the rows, which
+ * the extremum decision follows on its slow path. */
+static void strip_identity_plateaus(void **state)
+{
+    const uint32_t w = 97u, h = 83u;
+    uint8_t *px = (uint8_t *)malloc((size_t)w * h);
+    uint32_t s = 11u, x, y;
+    symline_image img;
+    (void)state;
+    for (y = 0; y < h;) {
+        /* a band of 1..7 rows; blocks of 1..7 columns of 2 gray values */
+        const uint32_t rows = 1u + tu_rand(&s) % 7u;
+        const uint8_t g0 = (uint8_t)(80u + 40u * (tu_rand(&s) % 4u));
+        uint32_t r;
+        for (x = 0; x < w;) {
+            const uint32_t cols = 1u + tu_rand(&s) % 7u;
+            const uint8_t g = (uint8_t)(tu_rand(&s) % 3u == 0u ? 250u : g0);
+            for (r = 0; r < rows && y + r < h; r++) {
+                uint32_t c;
+                for (c = 0; c < cols && x + c < w; c++) {
+                    px[(y + r) * w + x + c] = g;
+                }
+            }
+            x += cols;
+        }
+        y += rows;
+    }
+    img.width = w;
+    img.height = h;
+    img.stride = w;
+    img.data = px;
+    strip_identity_on(&img);
+    free(px);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(strip_identity_synthetic),
         cmocka_unit_test(strip_identity_real),
+        cmocka_unit_test(strip_identity_plateaus),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -33,10 +33,19 @@ static uint32_t filter_a(const symline_config *c)
 /* The bound holds and stays within the fixed part plus a little per row and column. */
 static void check_bound(uint32_t w, uint32_t h, const symline_config *c)
 {
-    const size_t exact = symline_detect_workspace_size(w, h, c);
-    const size_t bound = SYMLINE_DETECT_WORKSPACE_SIZE(w, h, c->radius, filter_a(c), c->levels);
+    symline_config worst = *c;
+    size_t exact, bound;
+    /* The field boundary's search at its largest: every grid column, the
+     * carpet model from all rows (the bound holds for any such setting). */
+    worst.field.band_pct = 100u;
+    worst.field.col_cells = 1u;
+    exact = symline_detect_workspace_size(w, h, &worst);
+    bound = SYMLINE_DETECT_WORKSPACE_SIZE(w, h, c->radius, filter_a(c), c->levels);
     if (exact == 0u) {
         return; /* a size the detector rejects */
+    }
+    if (bound < symline_detect_workspace_size(w, h, c)) {
+        fail();
     }
     /* Never below; and where the horizontal axis runs (the bound's case), a few hundred
      * bytes over at most, plus an eighth where the scales differ from its worst case. */
