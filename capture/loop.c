@@ -268,6 +268,7 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
         double lat_ms, det_ms;
         symline_image img;
         symline_status st;
+        uint32_t rep;
         capsrc_result r = capsrc_next(src, &frame, o->timeout_ms);
         if (r == CAPSRC_INTERRUPTED) {
             continue;
@@ -297,6 +298,9 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
             stageprof_begin();
         }
         st = symline_detect(&img, o->cfg, det.ws, det.ws_size, &det.res);
+        for (rep = 1u; rep < o->repeat && st == SYMLINE_OK; rep++) {
+            st = symline_detect(&img, o->cfg, det.ws, det.ws_size, &det.res);
+        }
         if (o->profile) {
             stageprof_end(stage_ns);
         }

@@ -25,6 +25,8 @@ typedef struct caploop_options {
     const char *record_dir;    /* must exist */
     int profile;               /* 1: time per detector stage in each record and the final
                                   summary (needs stageprof_available()) */
+    uint32_t repeat;           /* detections per frame, >= 1 (a load test: the records hold
+                                  one detection's output and the time of all of them) */
     const symline_config *cfg; /* detector settings */
 } caploop_options;
 

@@ -147,12 +147,12 @@ no_exposure() {
 check exposure-not-offered no_exposure
 
 # Freshest-frame mode when detection is slower than the camera: vivid grants
-# 12.5 fps at 1280x720 (80 ms a frame); the default detection takes about 58 ms
-# of it under emulation, radius 32 about three times the default's instructions
-# (docs/RESULTS.md), so frames queue up. Older frames are re-queued
-# unprocessed, frames keep rising, none is handed out twice.
+# 12.5 fps at 1280x720 (80 ms a frame); the default detection takes a fraction
+# of that under emulation, so each frame is detected 40 times (--repeat), and
+# frames queue up. Older frames are re-queued unprocessed, frames keep
+# rising, none is handed out twice.
 freshest() {
-    cap --device /dev/video0 --format NV12 --width 1280 --height 720 --fps 30 --buffers 4 --frames 10 --radius 32 \
+    cap --device /dev/video0 --format NV12 --width 1280 --height 720 --fps 30 --buffers 4 --frames 10 --repeat 40 \
         >/tmp/f.json 2>/tmp/f.err
     rc=$?; cat /tmp/f.err; [ $rc -eq 0 ] || return 1
     ! grep -q "skipped_stale=0 " /tmp/f.err && grep -q '"skipped": [1-9]' /tmp/f.json && capture-check json /tmp/f.json 10
@@ -160,7 +160,7 @@ freshest() {
 check freshest-frames freshest
 # The same with --all-frames: every frame in order, none skipped.
 all_frames() {
-    cap --device /dev/video0 --format NV12 --width 1280 --height 720 --fps 30 --buffers 4 --frames 10 --radius 32 --all-frames \
+    cap --device /dev/video0 --format NV12 --width 1280 --height 720 --fps 30 --buffers 4 --frames 10 --repeat 40 --all-frames \
         >/tmp/a.json 2>/tmp/a.err
     rc=$?; cat /tmp/a.err; [ $rc -eq 0 ] && grep -q "skipped_stale=0 " /tmp/a.err && capture-check json /tmp/a.json 10
 }

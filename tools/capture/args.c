@@ -74,6 +74,9 @@ static void usage(FILE *f)
           "  --profile              split each frame's detect time by the detector's stages\n"
           "                         (\"detect_stages_ms\" in the records, means in the final\n"
           "                         summary)\n"
+          "  --repeat N             run the detection N times per frame, 1..1000 (default 1):\n"
+          "                         a slower processor, or the detector beside other work;\n"
+          "                         records hold one detection's output, the time of all N\n"
           "\n"
           "Options take --opt VALUE or --opt=VALUE. --version prints the version.\n"
           "Exit status: 0 stopped normally (frame count, end of replay, SIGINT/SIGTERM,\n"
@@ -121,7 +124,8 @@ enum {
     OPT_SUMMARY,
     OPT_RECORD,
     OPT_SNAPSHOT,
-    OPT_PROFILE
+    OPT_PROFILE,
+    OPT_REPEAT
 };
 
 static const struct option own_options[] = {
@@ -148,6 +152,7 @@ static const struct option own_options[] = {
     {"record", required_argument, NULL, OPT_RECORD},
     {"snapshot-every", required_argument, NULL, OPT_SNAPSHOT},
     {"profile", no_argument, NULL, OPT_PROFILE},
+    {"repeat", required_argument, NULL, OPT_REPEAT},
 };
 #define OWN_OPTIONS (sizeof own_options / sizeof own_options[0])
 
@@ -217,6 +222,10 @@ static int apply_own(app_options *o, int c, const char *arg, int argc, char **ar
         }
         o->profile = 1;
         return 0;
+    case OPT_REPEAT:
+        return detopts_u32(arg, 1, 1000, &o->repeat) == 0
+                   ? 0
+                   : usage_error("--repeat needs a count 1..1000%s", "");
     case OPT_SUMMARY:
         return detopts_u32(arg, 0, 86400, &o->summary_s) == 0
                    ? 0
@@ -252,6 +261,7 @@ int app_parse_args(int argc, char **argv, app_options *o)
     o->exposure_us = -1;
     detopts_init(&det);
     o->timeout_ms = 2000;
+    o->repeat = 1u;
     o->summary_s = 5;
     memcpy(longopts, own_options, sizeof own_options);
     n = OWN_OPTIONS + detopts_longopts(longopts + OWN_OPTIONS, 63);

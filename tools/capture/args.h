@@ -34,6 +34,7 @@ typedef struct app_options {
     uint32_t record_every;
     const char *record_dir;
     int profile;        /* --profile: time per detector stage */
+    uint32_t repeat;    /* --repeat: detections per frame */
     symline_config cfg; /* detector settings, options as in `symline lines` */
 } app_options;
 

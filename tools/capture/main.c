@@ -147,6 +147,7 @@ int main(int argc, char **argv)
     lo.record_every = o.record_every;
     lo.record_dir = o.record_dir;
     lo.profile = o.profile;
+    lo.repeat = o.repeat;
     lo.cfg = &o.cfg;
     rc = caploop_run(src, &lo, &stop_signal);
     capsrc_close(src);
