@@ -4,8 +4,9 @@
  * extrema down the columns reported as events, with a small per-column state
  * (E of the row above, where the run began, and how the run was entered), so
  * a caller processes a frame row by row without holding more than one row of
- * energies. The detector and symline_extrema() decide the same extrema over
- * whole rows instead (symline_i_extrema_down()); the feature points use this.
+ * energies. symline_extrema() decides the same extrema over whole rows
+ * instead (symline_i_extrema_down()), the detector at its filter's
+ * candidates (linepoints.c); the feature points use this.
  */
 #include "common.h"
 #include "symline/extrema.h"

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * The extrema stage's private interface (extrema.c): the one routine for the
- * run rule of docs/algorithm.md along a row, used by the public
- * symline_extrema_row() and by the detector's line point collection
- * (linepoints.c).
+ * The extrema stage's private interface (extrema.c): the run rule of
+ * docs/algorithm.md over whole rows, for the public symline_extrema_row() and
+ * symline_extrema(). The detector decides its extrema at the line filter's
+ * candidates instead (linepoints.c, the same rule entry by entry).
  */
 #ifndef SYMLINE_LIB_EXTREMA_H
 #define SYMLINE_LIB_EXTREMA_H
@@ -67,7 +67,8 @@ uint32_t symline_i_extrema_across(const uint32_t *restrict mid, const uint32_t *
  * is an S point at its middle (lower middle for even lengths), with smaller
  * neighbours an A point; runs touching either end are never marked. A run
  * whose middle lies more than `lag` entries before its end is not marked
- * either (the detector's plateau limit; SL_RUN_ANY_LENGTH for none).
+ * either (a plateau limit like the detector's; SL_RUN_ANY_LENGTH, what the
+ * public calls pass, for none).
  */
 void symline_i_extrema_runs(const uint32_t *E, uint32_t n, uint32_t lag, uint8_t *map);
 

@@ -51,7 +51,7 @@ void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *c
 /* The gray-value part of the line filter for an S point with centre value c
  * and values lo, hi at k pixels before and after it across the line (clamped
  * at the border). True for a line point (the paper filter's A-point test is
- * symline_i_linefilter_a_near()). Inline: it runs for every S point. */
+ * a_near() in linepoints.c). Inline: it runs for every candidate. */
 static inline bool symline_i_linefilter_gray(const symline_i_linefilter *f, uint32_t c, uint32_t lo,
                                              uint32_t hi)
 {
