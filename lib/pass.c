@@ -109,6 +109,16 @@ static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex 
 {
     const symline_point *c = d->r->points + at;
     uint32_t i, s, from = 0u;
+    /* Where the build optimises for speed, points in a cell the grid lists
+     * nothing in are not covered, without asking: a grid cell's points have
+     * grid coordinates (x >> sh, y >> sh) (inside the frame, at levels up to
+     * SL_CELL_SHIFT: a block never straddles a cell), and the chain's last
+     * such cell (cx, cy) is remembered, as a chain steps a grid pixel at a
+     * time. The first pass has no earlier segment at all. */
+    const bool quick = SL_FOR_SPEED && ix != NULL && ix->cols != 0u &&
+                       ix->indexed == d->prev_seg && p->level <= SL_CELL_SHIFT;
+    const uint32_t sh = SL_CELL_SHIFT - p->level;
+    uint32_t cx = UINT32_MAX, cy = UINT32_MAX;
     /* Every piece is part of the chain: a chain too short to be emitted
      * (most of them: two or three points of turf) needs no per-point test. */
     if (!piece_long_enough(d, p, n)) {
@@ -119,6 +129,17 @@ static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex 
     }
     for (i = 0; i <= n; i++) {
         /* The uncovered runs [from, i), each cut at its corners. */
+        if (SL_FOR_SPEED && quick && i < n) {
+            const uint32_t x = (uint32_t)c[i].x >> sh, y = (uint32_t)c[i].y >> sh;
+            if (d->prev_seg == 0u || (x == cx && y == cy)) {
+                continue;
+            }
+            if (symline_i_segindex_cell_empty(ix, y * ix->cols + x)) {
+                cx = x;
+                cy = y;
+                continue;
+            }
+        }
         if (i < n && !covered(d, ix, &c[i], p->level)) {
             continue;
         }

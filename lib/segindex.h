@@ -89,4 +89,13 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
 bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
                              int32_t x, int32_t y, int32_t tol_q8);
 
+/* True when the grid lists nothing in cell c: symline_i_segindex_near() of
+ * any point in it is then false once every segment is in the grid
+ * (ix->indexed = nseg), whatever entry it would try first (a point near an
+ * entry lies in a cell that lists it). */
+static inline bool symline_i_segindex_cell_empty(const symline_i_segindex *ix, uint32_t c)
+{
+    return ix->end[c] == (c == 0u ? 0u : ix->end[c - 1u]);
+}
+
 #endif /* SYMLINE_LIB_SEGINDEX_H */
