@@ -123,13 +123,18 @@ static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
     f[2] = (int64_t)(h - g[0]) * g[3] - (int64_t)(h - g[1]) * g[2];
 }
 
+/* Where the build optimises for speed, the crosses of the last SL_RING
+ * points are kept (a power of two), so that a window of up to that many
+ * points drops its oldest cross without computing it again. */
+#define SL_RING 8u
+
 /* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]
  * (best[1]) and, where the build optimises for speed, in the same sweep the
  * largest |cross| of a point (best[0]). */
 static void window_max(const symline_point *p, uint32_t n, uint32_t level, const int32_t g[4],
                        uint32_t win, uint64_t best[2])
 {
-    int64_t sum = 0, f[3];
+    int64_t sum = 0, f[3], ring[SL_FOR_SPEED ? SL_RING : 1u];
     uint32_t i;
     best[0] = best[1] = 0u;
     f[0] = f[1] = f[2] = 0; /* not an initialiser: no memset call */
