@@ -103,22 +103,51 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
     s->count = n;
 }
 
+/* The first of the chain's points c[i..n-1] that an earlier segment covers
+ * (cov true) or does not (false); n if none. Where the build optimises for
+ * speed, a point in a cell the grid lists nothing in is not covered, without
+ * asking: a cell's points have grid coordinates (x >> sh, y >> sh) (inside
+ * the frame, at levels up to SL_CELL_SHIFT: a block never straddles a cell),
+ * and the last such cell (cx, cy) is remembered, as a chain steps a grid
+ * pixel at a time. The first pass has no earlier segment at all. Apart from
+ * chain() so that its frame is not under the fit's. Only where the build
+ * optimises for speed (chain()). */
+SL_NOINLINE static uint32_t next_point(const symline_i_run *d, const symline_i_pass *p,
+                                       symline_i_segindex *ix, const symline_point *c, uint32_t i,
+                                       uint32_t n, bool cov)
+{
+    const bool quick = SL_FOR_SPEED && ix != NULL && ix->cols != 0u && ix->indexed == d->prev_seg &&
+                       p->level <= SL_CELL_SHIFT;
+    const uint32_t sh = SL_CELL_SHIFT - p->level;
+    uint32_t cx = UINT32_MAX, cy = UINT32_MAX;
+    if (quick && d->prev_seg == 0u) {
+        return cov ? n : i;
+    }
+    for (; i < n; i++) {
+        if (quick) {
+            const uint32_t x = (uint32_t)c[i].x >> sh, y = (uint32_t)c[i].y >> sh;
+            if ((x == cx && y == cy) || symline_i_segindex_cell_empty(ix, y * ix->cols + x)) {
+                cx = x;
+                cy = y;
+                if (!cov) {
+                    break;
+                }
+                continue;
+            }
+        }
+        if (covered(d, ix, &c[i], p->level) == cov) {
+            break;
+        }
+    }
+    return i;
+}
+
 /* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
 static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex *ix, uint32_t at,
                   uint32_t n)
 {
     const symline_point *c = d->r->points + at;
     uint32_t i, s, from = 0u;
-    /* Where the build optimises for speed, points in a cell the grid lists
-     * nothing in are not covered, without asking: a grid cell's points have
-     * grid coordinates (x >> sh, y >> sh) (inside the frame, at levels up to
-     * SL_CELL_SHIFT: a block never straddles a cell), and the chain's last
-     * such cell (cx, cy) is remembered, as a chain steps a grid pixel at a
-     * time. The first pass has no earlier segment at all. */
-    const bool quick = SL_FOR_SPEED && ix != NULL && ix->cols != 0u &&
-                       ix->indexed == d->prev_seg && p->level <= SL_CELL_SHIFT;
-    const uint32_t sh = SL_CELL_SHIFT - p->level;
-    uint32_t cx = UINT32_MAX, cy = UINT32_MAX;
     /* Every piece is part of the chain: a chain too short to be emitted
      * (most of them: two or three points of turf) needs no per-point test. */
     if (!piece_long_enough(d, p, n)) {
@@ -128,19 +157,13 @@ static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex 
         ix->hit = SL_NO_HIT; /* another chain: the last one's entry is not a better guess */
     }
     for (i = 0; i <= n; i++) {
-        /* The uncovered runs [from, i), each cut at its corners. */
-        if (SL_FOR_SPEED && quick && i < n) {
-            const uint32_t x = (uint32_t)c[i].x >> sh, y = (uint32_t)c[i].y >> sh;
-            if (d->prev_seg == 0u || (x == cx && y == cy)) {
-                continue;
-            }
-            if (symline_i_segindex_cell_empty(ix, y * ix->cols + x)) {
-                cx = x;
-                cy = y;
-                continue;
-            }
-        }
-        if (i < n && !covered(d, ix, &c[i], p->level)) {
+        /* The uncovered runs [from, i), each cut at its corners. Where the
+         * build optimises for speed, a run's first point and its end found
+         * by next_point(). */
+        if (SL_FOR_SPEED) {
+            from = next_point(d, p, ix, c, from, n, false);
+            i = next_point(d, p, ix, c, from, n, true);
+        } else if (i < n && !covered(d, ix, &c[i], p->level)) {
             continue;
         }
         for (s = from; s < i;) {
