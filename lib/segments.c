@@ -123,10 +123,14 @@ static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
     f[2] = (int64_t)(h - g[0]) * g[3] - (int64_t)(h - g[1]) * g[2];
 }
 
-/* Where the build optimises for speed, the crosses of the last SL_RING
- * points are kept (a power of two), so that a window of up to that many
- * points drops its oldest cross without computing it again. */
+/* Where the build optimises for speed on a 64-bit core, the crosses of the
+ * last SL_RING points are kept (a power of two), so that a window of up to
+ * that many points drops its oldest cross without computing it again. A
+ * 32-bit core would hold them on the stack, on the fit's path, the deepest
+ * of the detection (the firmware's 512 B budget): it computes that cross
+ * again. */
 #define SL_RING 8u
+#define SL_RING_CROSSES (SL_FOR_SPEED && UINTPTR_MAX > 0xFFFFFFFFu)
 
 /* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]
  * (best[1]) and, where the build optimises for speed, in the same sweep the
@@ -134,7 +138,7 @@ static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
 static void window_max(const symline_point *p, uint32_t n, uint32_t level, const int32_t g[4],
                        uint32_t win, uint64_t best[2])
 {
-    int64_t sum = 0, f[3], ring[SL_FOR_SPEED ? SL_RING : 1u];
+    int64_t sum = 0, f[3], ring[SL_RING_CROSSES ? SL_RING : 1u];
     uint32_t i;
     best[0] = best[1] = 0u;
     f[0] = f[1] = f[2] = 0; /* not an initialiser: no memset call */
@@ -151,7 +155,7 @@ static void window_max(const symline_point *p, uint32_t n, uint32_t level, const
             }
         }
         sum += c;
-        if (SL_FOR_SPEED && win <= SL_RING) {
+        if (SL_RING_CROSSES && win <= SL_RING) {
             /* Read before written: win = SL_RING drops the entry it replaces. */
             if (i >= win) {
                 sum -= ring[(i - win) & (SL_RING - 1u)];
