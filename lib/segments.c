@@ -445,52 +445,11 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     s->merged = false;
 }
 
-/* True when (px, py) lies within tol of the segment a-b (all Q8). */
-static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by,
-                              const symline_i_near *q)
-{
-    const int32_t px = q->x, py = q->y, tol = q->tol;
-    /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
-    int32_t dx, dy, wx, wy, t2, c;
-    int64_t t, dd;
-    if ((px < ax - tol && px < bx - tol) || (px > ax + tol && px > bx + tol) ||
-        (py < ay - tol && py < by - tol) || (py > ay + tol && py > by + tol)) {
-        return false;
-    }
-    dx = bx - ax;
-    dy = by - ay;
-    wx = px - ax;
-    wy = py - ay;
-    t = (int64_t)wx * dx + (int64_t)wy * dy;
-    dd = (int64_t)dx * dx + (int64_t)dy * dy;
-    if (t <= 0 || t >= dd) {
-        /* Beyond an end (or no chord, t = 0): the distance to that end. */
-        const int32_t ex = t <= 0 ? wx : px - bx, ey = t <= 0 ? wy : py - by;
-        return (int64_t)ex * ex + (int64_t)ey * ey <= (int64_t)tol * tol;
-    }
-    /* Inside the chord: |w x d| <= tol |d|, squared. Coarsen all lengths alike
-     * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
-     * no square root and no division, so this stays cheap and shallow. */
-    t2 = tol;
-    while (SL_OUTSIDE(dx, 32767) || SL_OUTSIDE(dy, 32767) || SL_OUTSIDE(wx, 32767) ||
-           SL_OUTSIDE(wy, 32767) || t2 > 32767) {
-        dx /= 2;
-        dy /= 2;
-        wx /= 2;
-        wy /= 2;
-        t2 /= 2;
-    }
-    /* All within +-32767 now: the cross and the squares fit 32 bits. */
-    c = wx * dy - wy * dx;
-    return (int64_t)c * c <=
-           (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
-}
-
 bool symline_i_near_piece(const symline_point *a, const symline_point *b, const symline_i_near *q)
 {
     /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
-    return near_chord((int32_t)a->x << SL_Q8_SHIFT, (int32_t)a->y << SL_Q8_SHIFT,
-                      (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, q);
+    return symline_i_near_chord((int32_t)a->x << SL_Q8_SHIFT, (int32_t)a->y << SL_Q8_SHIFT,
+                                (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, q);
 }
 
 bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
@@ -499,7 +458,7 @@ bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
     uint32_t i;
     const symline_point *p = pts + s->first;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
-        return near_chord(s->x0, s->y0, s->x1, s->y1, q);
+        return symline_i_near_chord(s->x0, s->y0, s->x1, s->y1, q);
     }
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
