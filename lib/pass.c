@@ -202,12 +202,29 @@ SL_NOINLINE static void note_listed(symline_i_run *d, uint32_t n, uint32_t dropp
 SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, uint32_t nseg,
                                         uint32_t w, uint32_t level)
 {
+    /* Where the build optimises for speed, each point is converted as it is
+     * copied: its Q7 full-resolution coordinate u 2^level + (2^level - 1) 64
+     * (u = 128 x + fx, fixed.h) plus 64 is never negative (fx >= -64) and
+     * below 2^32, so 32-bit unsigned arithmetic gives it exactly; its pixel
+     * is that over 128, its remainder the low 7 bits less 64 (as
+     * symline_i_pt_to_full() rounds). */
+    const uint32_t add = (((1u << level) - 1u) << 6) + 64u;
     uint32_t k;
     for (k = first_seg; k < nseg; k++) {
         symline_segment *s = &r->segments[k];
         uint32_t i;
         /* w <= s->first: a forward copy. */
-        for (i = 0; i < s->count; i++) {
+        for (i = 0; SL_FOR_SPEED && i < s->count; i++) {
+            const symline_point *q = &r->points[s->first + i];
+            const uint32_t vx = ((((uint32_t)q->x << 7) + (uint32_t)(int32_t)q->fx) << level) + add;
+            const uint32_t vy = ((((uint32_t)q->y << 7) + (uint32_t)(int32_t)q->fy) << level) + add;
+            symline_point *o = &r->points[w + i];
+            o->x = (uint16_t)(vx >> 7);
+            o->y = (uint16_t)(vy >> 7);
+            o->fx = (int8_t)((int32_t)(vx & 127u) - 64);
+            o->fy = (int8_t)((int32_t)(vy & 127u) - 64);
+        }
+        for (i = 0; !SL_FOR_SPEED && i < s->count; i++) {
             /* Converted in place (read only once), then copied field by
              * field: a struct copy may become a libc memcpy call. */
             symline_point *q = &r->points[s->first + i];
