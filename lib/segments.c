@@ -123,14 +123,46 @@ static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
     f[2] = (int64_t)(h - g[0]) * g[3] - (int64_t)(h - g[1]) * g[2];
 }
 
-/* Where the build optimises for speed on a 64-bit core, the crosses of the
- * last SL_RING points are kept (a power of two), so that a window of up to
- * that many points drops its oldest cross without computing it again. A
- * 32-bit core would hold them on the stack, on the fit's path, the deepest
- * of the detection (the firmware's 512 B budget): it computes that cross
- * again. */
+/* Where the build optimises for speed on a 64-bit core, a chord with a
+ * direction is swept by window_ring(): the crosses of the last SL_RING
+ * points are kept (a power of two), so that a window of up to that many
+ * points drops its oldest cross without computing it again. A 32-bit core
+ * would hold them on the stack, on the fit's path, the deepest of the
+ * detection (the firmware's 512 B budget): it computes that cross again. */
 #define SL_RING 8u
 #define SL_RING_CROSSES (SL_FOR_SPEED && UINTPTR_MAX > 0xFFFFFFFFu)
+
+/* window_max() for a chord with a direction and 1 <= win <= SL_RING, f its
+ * linear form (lin_form()): the largest and smallest cross and window sum
+ * (from 0), whose larger magnitude is the largest |.|. The ring starts at
+ * zero, so a window's first points drop nothing; an entry is read before it
+ * is written (win = SL_RING drops the one it replaces). */
+static void window_ring(const symline_point *p, uint32_t n, const int64_t f[3], uint32_t win,
+                        uint64_t best[2])
+{
+    int64_t hi = 0, lo = 0, shi = 0, slo = 0, sum = 0, ring[SL_RING];
+    uint32_t i;
+    for (i = 0; i < SL_RING; i++) {
+        ring[i] = 0;
+    }
+    for (i = 0; i < n; i++) {
+        const int64_t c = (int64_t)(((int32_t)p[i].x << 7) + p[i].fx) * f[0] +
+                          (int64_t)(((int32_t)p[i].y << 7) + p[i].fy) * f[1] + f[2];
+        hi = c > hi ? c : hi;
+        lo = c < lo ? c : lo;
+        if (win == 1u) {
+            continue;
+        }
+        sum += c - ring[(i - win) & (SL_RING - 1u)];
+        ring[i & (SL_RING - 1u)] = c;
+        if (i + 1u >= win) {
+            shi = sum > shi ? sum : shi;
+            slo = sum < slo ? sum : slo;
+        }
+    }
+    best[0] = (uint64_t)(hi > -lo ? hi : -lo);
+    best[1] = win == 1u ? best[0] : (uint64_t)(shi > -slo ? shi : -slo);
+}
 
 /* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]
  * (best[1]) and, where the build optimises for speed, in the same sweep the
@@ -138,12 +170,16 @@ static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
 static void window_max(const symline_point *p, uint32_t n, uint32_t level, const int32_t g[4],
                        uint32_t win, uint64_t best[2])
 {
-    int64_t sum = 0, f[3], ring[SL_RING_CROSSES ? SL_RING : 1u];
+    int64_t sum = 0, f[3];
     uint32_t i;
     best[0] = best[1] = 0u;
     f[0] = f[1] = f[2] = 0; /* not an initialiser: no memset call */
     if (SL_FOR_SPEED) {
         lin_form(level, g, f);
+    }
+    if (SL_RING_CROSSES && (g[2] | g[3]) != 0 && win <= SL_RING) {
+        window_ring(p, n, f, win, best);
+        return;
     }
     for (i = 0; i < n; i++) {
         const int64_t c = chord_cross(&p[i], level, g, f);
@@ -155,13 +191,7 @@ static void window_max(const symline_point *p, uint32_t n, uint32_t level, const
             }
         }
         sum += c;
-        if (SL_RING_CROSSES && win <= SL_RING) {
-            /* Read before written: win = SL_RING drops the entry it replaces. */
-            if (i >= win) {
-                sum -= ring[(i - win) & (SL_RING - 1u)];
-            }
-            ring[i & (SL_RING - 1u)] = c;
-        } else if (i >= win) {
+        if (i >= win) {
             sum -= chord_cross(&p[i - win], level, g, f);
         }
         if (i + 1u >= win) {
