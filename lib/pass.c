@@ -103,43 +103,41 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
     s->count = n;
 }
 
-/* The first of the chain's points c[i..n-1] that an earlier segment covers
- * (cov true) or does not (false); n if none. Where the build optimises for
- * speed, a point in a cell the grid lists nothing in is not covered, without
- * asking: a cell's points have grid coordinates (x >> sh, y >> sh) (inside
- * the frame, at levels up to SL_CELL_SHIFT: a block never straddles a cell),
- * and the last such cell (cx, cy) is remembered, as a chain steps a grid
- * pixel at a time. The first pass has no earlier segment at all. Apart from
- * chain() so that its frame is not under the fit's. Only where the build
- * optimises for speed (chain()). */
-SL_NOINLINE static uint32_t next_point(const symline_i_run *d, const symline_i_pass *p,
-                                       symline_i_segindex *ix, const symline_point *c, uint32_t i,
-                                       uint32_t n, bool cov)
+/* The first of the chain's points q[0..e-q-1] that an earlier segment
+ * covers (cov true) or does not (false); e if none. A point in a cell the
+ * grid lists nothing in is not covered, without asking: a cell's points have
+ * grid coordinates (x >> sh, y >> sh) (inside the frame, at levels up to
+ * SL_CELL_SHIFT: a block never straddles a cell), and the last such cell is
+ * remembered, as a chain steps a grid pixel at a time. The first pass has no
+ * earlier segment at all. Only where the build optimises for speed
+ * (chain()); apart from it so that its frame is not under the fit's. */
+SL_NOINLINE static const symline_point *next_point(const symline_i_run *d, uint32_t level,
+                                                   symline_i_segindex *ix, const symline_point *q,
+                                                   const symline_point *e, bool cov)
 {
-    const bool quick = SL_FOR_SPEED && ix != NULL && ix->cols != 0u && ix->indexed == d->prev_seg &&
-                       p->level <= SL_CELL_SHIFT;
-    const uint32_t sh = SL_CELL_SHIFT - p->level;
-    uint32_t cx = UINT32_MAX, cy = UINT32_MAX;
-    if (quick && d->prev_seg == 0u) {
-        return cov ? n : i;
-    }
-    for (; i < n; i++) {
-        if (quick) {
-            const uint32_t x = (uint32_t)c[i].x >> sh, y = (uint32_t)c[i].y >> sh;
-            if ((x == cx && y == cy) || symline_i_segindex_cell_empty(ix, y * ix->cols + x)) {
-                cx = x;
-                cy = y;
-                if (!cov) {
-                    break;
-                }
-                continue;
-            }
+    uint32_t cell = UINT32_MAX;
+    if (ix == NULL || ix->cols == 0u || ix->indexed != d->prev_seg || level > SL_CELL_SHIFT) {
+        while (q < e && covered(d, ix, q, level) != cov) {
+            q++;
         }
-        if (covered(d, ix, &c[i], p->level) == cov) {
+        return q;
+    }
+    if (d->prev_seg == 0u) {
+        return cov ? e : q;
+    }
+    for (; q < e; q++) {
+        const uint32_t sh = SL_CELL_SHIFT - level;
+        const uint32_t at = ((uint32_t)q->y >> sh) * ix->cols + ((uint32_t)q->x >> sh);
+        if (at == cell || symline_i_segindex_cell_empty(ix, at)) {
+            cell = at;
+            if (!cov) {
+                break;
+            }
+        } else if (covered(d, ix, q, level) == cov) {
             break;
         }
     }
-    return i;
+    return q;
 }
 
 /* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
@@ -161,8 +159,8 @@ static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex 
          * build optimises for speed, a run's first point and its end found
          * by next_point(). */
         if (SL_FOR_SPEED) {
-            from = next_point(d, p, ix, c, from, n, false);
-            i = next_point(d, p, ix, c, from, n, true);
+            from = (uint32_t)(next_point(d, p->level, ix, c + from, c + n, false) - c);
+            i = (uint32_t)(next_point(d, p->level, ix, c + from, c + n, true) - c);
         } else if (i < n && !covered(d, ix, &c[i], p->level)) {
             continue;
         }

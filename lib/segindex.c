@@ -270,8 +270,8 @@ static bool near_entry(const symline_i_segindex *ix, const symline_result *r, ui
     uint32_t a;
     if ((e & SL_PIECE) == 0u) {
         const symline_segment *s = &r->segments[e];
-        /* Where the build optimises for speed, a line's test here, inline. */
-        if (SL_FOR_SPEED && (s->kind == SYMLINE_KIND_LINE || s->count < 2u)) {
+        /* A line's test here, inline (SL_FOR_SPEED_DEEP, segments.h). */
+        if (SL_FOR_SPEED_DEEP && (s->kind == SYMLINE_KIND_LINE || s->count < 2u)) {
             return symline_i_near_chord(s->x0, s->y0, s->x1, s->y1, q);
         }
         return symline_i_near_segment(s, r->points, q);
@@ -279,12 +279,11 @@ static bool near_entry(const symline_i_segindex *ix, const symline_result *r, ui
     for (a = e - SL_PIECE; a < ix->ids[k + 1u]; a += SL_POLY_STEP) {
         const uint32_t b = a + SL_POLY_STEP < ix->ids[k + 1u] ? a + SL_POLY_STEP : ix->ids[k + 1u];
         const symline_point *pa = &r->points[a], *pb = &r->points[b];
-        /* The same test as symline_i_near_piece(), inline where the build
-         * optimises for speed. */
-        if (SL_FOR_SPEED ? symline_i_near_chord(
-                               (int32_t)pa->x << SL_Q8_SHIFT, (int32_t)pa->y << SL_Q8_SHIFT,
-                               (int32_t)pb->x << SL_Q8_SHIFT, (int32_t)pb->y << SL_Q8_SHIFT, q)
-                         : symline_i_near_piece(pa, pb, q)) {
+        /* The same test as symline_i_near_piece(), inline (SL_FOR_SPEED_DEEP). */
+        if (SL_FOR_SPEED_DEEP ? symline_i_near_chord(
+                                    (int32_t)pa->x << SL_Q8_SHIFT, (int32_t)pa->y << SL_Q8_SHIFT,
+                                    (int32_t)pb->x << SL_Q8_SHIFT, (int32_t)pb->y << SL_Q8_SHIFT, q)
+                              : symline_i_near_piece(pa, pb, q)) {
             return true;
         }
     }

@@ -123,14 +123,13 @@ static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
     f[2] = (int64_t)(h - g[0]) * g[3] - (int64_t)(h - g[1]) * g[2];
 }
 
-/* Where the build optimises for speed on a 64-bit core, a chord with a
- * direction is swept by window_ring(): the crosses of the last SL_RING
- * points are kept (a power of two), so that a window of up to that many
- * points drops its oldest cross without computing it again. A 32-bit core
- * would hold them on the stack, on the fit's path, the deepest of the
- * detection (the firmware's 512 B budget): it computes that cross again. */
+/* Where the build optimises for speed on a 64-bit core (SL_FOR_SPEED_DEEP),
+ * a chord with a direction is swept by window_ring(): the crosses of the
+ * last SL_RING points are kept (a power of two), so that a window of up to
+ * that many points drops its oldest cross without computing it again. A
+ * 32-bit core would hold them on the stack, on the fit's path, the deepest
+ * of the detection: it computes that cross again. */
 #define SL_RING 8u
-#define SL_RING_CROSSES (SL_FOR_SPEED && UINTPTR_MAX > 0xFFFFFFFFu)
 
 /* window_max() for a chord with a direction and 1 <= win <= SL_RING, f its
  * linear form (lin_form()): the largest and smallest cross and window sum
@@ -177,7 +176,7 @@ static void window_max(const symline_point *p, uint32_t n, uint32_t level, const
     if (SL_FOR_SPEED) {
         lin_form(level, g, f);
     }
-    if (SL_RING_CROSSES && (g[2] | g[3]) != 0 && win <= SL_RING) {
+    if (SL_FOR_SPEED_DEEP && (g[2] | g[3]) != 0 && win <= SL_RING) {
         window_ring(p, n, f, win, best);
         return;
     }
