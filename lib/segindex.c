@@ -161,7 +161,7 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
 {
     const symline_segment *s = &r->segments[id];
     const symline_point *p = r->points + s->first;
-    uint32_t i, k;
+    uint32_t i;
     v->seg = id;
     v->width = 1u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
@@ -174,13 +174,16 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
         v->seg = SL_PIECE | (s->first + i);
         v->piece_end = s->first + j;
         if (SL_FOR_SPEED) {
-            /* The box of the run's pixels (the pieces are tested in whole pixels). */
-            uint32_t x0 = p[i].x, y0 = p[i].y, x1 = x0, y1 = y0;
-            for (k = i + 1u; k <= j; k++) {
-                x0 = p[k].x < x0 ? p[k].x : x0;
-                x1 = p[k].x > x1 ? p[k].x : x1;
-                y0 = p[k].y < y0 ? p[k].y : y0;
-                y1 = p[k].y > y1 ? p[k].y : y1;
+            /* The box of the run's pixels (the pieces are tested in whole
+             * pixels), walked by pointer: no index arithmetic per point. */
+            const symline_point *q = p + i, *const e = p + j;
+            uint32_t x0 = q->x, y0 = q->y, x1 = x0, y1 = y0;
+            while (q++ != e) {
+                const uint32_t x = q->x, y = q->y;
+                x0 = x < x0 ? x : x0;
+                x1 = x > x1 ? x : x1;
+                y0 = y < y0 ? y : y0;
+                y1 = y > y1 ? y : y1;
             }
             visit_box(v, x0, y0, x1, y1);
         } else {
