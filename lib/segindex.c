@@ -309,6 +309,10 @@ bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, ui
         }
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c];
              k += (ix->ids[k] & SL_PIECE) != 0u ? 2u : 1u) {
+            /* The entry just tried first is not near: not again. */
+            if (SL_FOR_SPEED && k == ix->hit) {
+                continue;
+            }
             if (near_entry(ix, r, k, &q)) {
                 ix->hit = k;
                 return true;
