@@ -212,25 +212,30 @@ SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, u
         symline_segment *s = &r->segments[k];
         uint32_t i;
         /* w <= s->first: a forward copy. */
-        for (i = 0; SL_FOR_SPEED && i < s->count; i++) {
-            const symline_point *q = &r->points[s->first + i];
-            const uint32_t vx = ((((uint32_t)q->x << 7) + (uint32_t)(int32_t)q->fx) << level) + add;
-            const uint32_t vy = ((((uint32_t)q->y << 7) + (uint32_t)(int32_t)q->fy) << level) + add;
-            symline_point *o = &r->points[w + i];
-            o->x = (uint16_t)(vx >> 7);
-            o->y = (uint16_t)(vy >> 7);
-            o->fx = (int8_t)((int32_t)(vx & 127u) - 64);
-            o->fy = (int8_t)((int32_t)(vy & 127u) - 64);
-        }
-        for (i = 0; !SL_FOR_SPEED && i < s->count; i++) {
-            /* Converted in place (read only once), then copied field by
-             * field: a struct copy may become a libc memcpy call. */
-            symline_point *q = &r->points[s->first + i];
-            symline_i_pt_to_full(q, level);
-            r->points[w + i].x = q->x;
-            r->points[w + i].y = q->y;
-            r->points[w + i].fx = q->fx;
-            r->points[w + i].fy = q->fy;
+        if (SL_FOR_SPEED) {
+            for (i = 0; i < s->count; i++) {
+                const symline_point *q = &r->points[s->first + i];
+                const uint32_t vx =
+                    ((((uint32_t)q->x << 7) + (uint32_t)(int32_t)q->fx) << level) + add;
+                const uint32_t vy =
+                    ((((uint32_t)q->y << 7) + (uint32_t)(int32_t)q->fy) << level) + add;
+                symline_point *o = &r->points[w + i];
+                o->x = (uint16_t)(vx >> 7);
+                o->y = (uint16_t)(vy >> 7);
+                o->fx = (int8_t)((int32_t)(vx & 127u) - 64);
+                o->fy = (int8_t)((int32_t)(vy & 127u) - 64);
+            }
+        } else {
+            for (i = 0; i < s->count; i++) {
+                /* Converted in place (read only once), then copied field by
+                 * field: a struct copy may become a libc memcpy call. */
+                symline_point *q = &r->points[s->first + i];
+                symline_i_pt_to_full(q, level);
+                r->points[w + i].x = q->x;
+                r->points[w + i].y = q->y;
+                r->points[w + i].fx = q->fx;
+                r->points[w + i].fy = q->fy;
+            }
         }
         s->first = w;
         w += s->count;
