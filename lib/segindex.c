@@ -178,6 +178,15 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
              * pixels), walked by pointer: no index arithmetic per point. */
             const symline_point *q = p + i, *const e = p + j;
             uint32_t x0 = q->x, y0 = q->y, x1 = x0, y1 = y0;
+#if SL_FOR_SPEED_DEEP
+            if (v->mode == SL_WALK_FILL && v->used < v->kept) {
+                /* The count's box of this run (the fill visits the same
+                 * runs in the same order). */
+                const uint32_t *b = v->boxes - 2u * ++v->used;
+                visit_box(v, b[0] & 0xFFFFu, b[0] >> 16, b[1] & 0xFFFFu, b[1] >> 16);
+                continue;
+            }
+#endif
             while (q++ != e) {
                 const uint32_t x = q->x, y = q->y;
                 x0 = x < x0 ? x : x0;
@@ -185,6 +194,13 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
                 y0 = y < y0 ? y : y0;
                 y1 = y > y1 ? y : y1;
             }
+#if SL_FOR_SPEED_DEEP
+            if (v->mode == SL_WALK_COUNT && v->sign == 1u && v->kept < v->box_cap) {
+                uint32_t *b = v->boxes - 2u * ++v->kept;
+                b[0] = x0 | y0 << 16;
+                b[1] = x1 | y1 << 16;
+            }
+#endif
             visit_box(v, x0, y0, x1, y1);
         } else {
             symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
@@ -240,6 +256,13 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     v.margin = tol_q8;
     v.mode = SL_WALK_COUNT;
     v.sign = 1u;
+#if SL_FOR_SPEED_DEEP
+    /* The runs' boxes go to the far end of the id area while it is unused;
+     * the fill reads those the ids it writes (from the start) leave alone. */
+    v.boxes = cap != 0u ? ix->ids + cap : NULL;
+    v.box_cap = cap / 2u;
+    v.kept = v.used = 0u;
+#endif
     for (s = 0; s < nseg && s < SL_PIECE; s++) {
         v.added = 0u;
         visit_segment(&v, r, s);
@@ -259,6 +282,11 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
         sum += n;
     }
     v.mode = SL_WALK_FILL;
+#if SL_FOR_SPEED_DEEP
+    if (v.kept > (cap - sum) / 2u) {
+        v.kept = (cap - sum) / 2u; /* ids [0, sum) would overwrite the rest */
+    }
+#endif
     for (s = 0; s < ix->indexed; s++) {
         visit_segment(&v, r, s);
     }
