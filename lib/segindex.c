@@ -182,7 +182,7 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
             if (v->mode == SL_WALK_FILL && v->used < v->kept) {
                 /* The count's box of this run (the fill visits the same
                  * runs in the same order). */
-                const uint32_t *b = v->boxes - 2u * ++v->used;
+                const uint32_t *b = v->boxes - (size_t)2u * ++v->used;
                 visit_box(v, b[0] & 0xFFFFu, b[0] >> 16, b[1] & 0xFFFFu, b[1] >> 16);
                 continue;
             }
@@ -196,7 +196,7 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
             }
 #if SL_FOR_SPEED_DEEP
             if (v->mode == SL_WALK_COUNT && v->sign == 1u && v->kept < v->box_cap) {
-                uint32_t *b = v->boxes - 2u * ++v->kept;
+                uint32_t *b = v->boxes - (size_t)2u * ++v->kept;
                 b[0] = x0 | y0 << 16;
                 b[1] = x1 | y1 << 16;
             }
