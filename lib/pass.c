@@ -213,13 +213,14 @@ SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, u
         uint32_t i;
         /* w <= s->first: a forward copy. */
         if (SL_FOR_SPEED) {
-            for (i = 0; i < s->count; i++) {
-                const symline_point *q = &r->points[s->first + i];
+            /* Walked by pointer: no index arithmetic per point. */
+            const symline_point *q = r->points + s->first, *const e = q + s->count;
+            symline_point *o = r->points + w;
+            for (; q != e; q++, o++) {
                 const uint32_t vx =
                     ((((uint32_t)q->x << 7) + (uint32_t)(int32_t)q->fx) << level) + add;
                 const uint32_t vy =
                     ((((uint32_t)q->y << 7) + (uint32_t)(int32_t)q->fy) << level) + add;
-                symline_point *o = &r->points[w + i];
                 o->x = (uint16_t)(vx >> 7);
                 o->y = (uint16_t)(vy >> 7);
                 o->fx = (int8_t)((int32_t)(vx & 127u) - 64);
