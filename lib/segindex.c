@@ -307,14 +307,25 @@ static bool near_entry(const symline_i_segindex *ix, const symline_result *r, ui
         }
         return symline_i_near_segment(s, r->points, q);
     }
+    if (SL_FOR_SPEED_DEEP) {
+        /* The same pieces, walked by pointer: each ends where the next
+         * starts, the last at the run's last point. */
+        const symline_point *pa = r->points + (e - SL_PIECE), *const pl =
+                                                                  r->points + ix->ids[k + 1u];
+        while (pa < pl) {
+            const symline_point *pb = pl - pa > (ptrdiff_t)SL_POLY_STEP ? pa + SL_POLY_STEP : pl;
+            if (symline_i_near_chord((int32_t)pa->x << SL_Q8_SHIFT, (int32_t)pa->y << SL_Q8_SHIFT,
+                                     (int32_t)pb->x << SL_Q8_SHIFT, (int32_t)pb->y << SL_Q8_SHIFT,
+                                     q)) {
+                return true;
+            }
+            pa = pb;
+        }
+        return false;
+    }
     for (a = e - SL_PIECE; a < ix->ids[k + 1u]; a += SL_POLY_STEP) {
         const uint32_t b = a + SL_POLY_STEP < ix->ids[k + 1u] ? a + SL_POLY_STEP : ix->ids[k + 1u];
-        const symline_point *pa = &r->points[a], *pb = &r->points[b];
-        /* The same test as symline_i_near_piece(), inline (SL_FOR_SPEED_DEEP). */
-        if (SL_FOR_SPEED_DEEP ? symline_i_near_chord(
-                                    (int32_t)pa->x << SL_Q8_SHIFT, (int32_t)pa->y << SL_Q8_SHIFT,
-                                    (int32_t)pb->x << SL_Q8_SHIFT, (int32_t)pb->y << SL_Q8_SHIFT, q)
-                              : symline_i_near_piece(pa, pb, q)) {
+        if (symline_i_near_piece(&r->points[a], &r->points[b], q)) {
             return true;
         }
     }
