@@ -210,7 +210,6 @@ SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, u
     uint32_t k;
     for (k = first_seg; k < nseg; k++) {
         symline_segment *s = &r->segments[k];
-        uint32_t i;
         /* w <= s->first: a forward copy. */
         if (SL_FOR_SPEED) {
             /* Walked by pointer: no index arithmetic per point. */
@@ -227,6 +226,7 @@ SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, u
                 o->fy = (int8_t)((int32_t)(vy & 127u) - 64);
             }
         } else {
+            uint32_t i;
             for (i = 0; i < s->count; i++) {
                 /* Converted in place (read only once), then copied field by
                  * field: a struct copy may become a libc memcpy call. */
