@@ -24,6 +24,14 @@
  *    rests behind junctions): it starts at the first unvisited point in raster
  *    order that has an unvisited neighbour, traces forward, then backward
  *    from the start, and joins the two halves.
+ *
+ * Where speed counts, one merge of neighbouring rows first writes each
+ * point's neighbours into its sub-pixel fields, which the sub-pixel stage
+ * only fills for the chains later (in their own storage, not the list's):
+ * fx the 8-neighbour mask (bit d: a point in direction d), fy where row y+1's
+ * points from x - 1 on start, relative to the point's own place in its row.
+ * A count is then a bit test and a step an index sum, with a row search only
+ * where the list does not say (the row above, rows far from alike).
  */
 #include "tracer.h"
 
@@ -40,10 +48,6 @@ void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
     t->h = h;
     t->scan = 0u;
     t->phase = 0u;
-    t->row = t->up = t->down = 0u;
-    if (h != 0u) {
-        t->down = row_start[1];
-    }
 }
 
 /* Index of the first point of row y (< h) at x or right of it. off: the
@@ -136,54 +140,6 @@ uint32_t symline_i_neighbours(const symline_i_tracer *t, uint32_t x, uint32_t y)
     return neighbours(t, x, y, 0u);
 }
 
-/* The points of a row from *cur on at x - 1 .. x + 1 (up to end); *cur
- * moves to the first at x - 1 or right of it. */
-static uint32_t count_near(const symline_point *pts, uint32_t *cur, uint32_t end, uint32_t x,
-                           uint32_t *nb)
-{
-    uint32_t j = *cur, c = 0u;
-    while (j < end && pts[j].x + 1u < x) {
-        j++;
-    }
-    *cur = j;
-    for (; j < end && pts[j].x <= x + 1u; j++) {
-        c++;
-        *nb = j;
-    }
-    return c;
-}
-
-/* neighbours() of the scan's point i at x, for the scan in raster order:
- * cursors into the rows above and below that only move right, as the scan
- * does, so that each row is read once as the row above and once as the row
- * below, instead of three searches per point. *nb: the index of the
- * neighbour when there is one. Only saves time (SL_FOR_SPEED). */
-static uint32_t scan_neighbours(symline_i_tracer *t, uint32_t i, uint32_t x, uint32_t *nb)
-{
-    const uint32_t *rs = t->row_start;
-    uint32_t row = t->row, c;
-    while (rs[row + 1u] <= i) {
-        row++;
-    }
-    if (row != t->row) {
-        t->row = row;
-        t->up = rs[row - 1u]; /* row > 0: a row before it ended */
-        t->down = rs[row + 1u];
-    }
-    c = count_near(t->pts, &t->up, rs[row], x, nb) +
-        count_near(t->pts, &t->down, row + 1u < t->h ? rs[row + 2u] : rs[row + 1u], x, nb);
-    /* In its own row (each x once, sorted): the points right before and after it. */
-    if (i > rs[row] && t->pts[i - 1u].x + 1u == x) {
-        c++;
-        *nb = i - 1u;
-    }
-    if (i + 1u < rs[row + 1u] && t->pts[i + 1u].x == x + 1u) {
-        c++;
-        *nb = i + 1u;
-    }
-    return c;
-}
-
 static bool unvisited(const symline_i_tracer *t, int32_t idx)
 {
     return idx >= 0 && t->pts[idx].y != SL_VISITED;
@@ -197,44 +153,155 @@ static void visit(symline_i_tracer *t, int32_t idx)
 /* The direction of a start point's first step: any, in direction order 0..7. */
 #define SL_ANY_DIR 8u
 
-/* The direction of the step by (dx, dy): DIR_OF[(dy + 1) * 3 + dx + 1]. */
-static const uint8_t DIR_OF[9] = {5, 6, 7, 4, SL_ANY_DIR, 0, 3, 2, 1};
-
 /* A step's directions relative to the last one: straight, 45-degree, then
  * 90-degree turns, counter-clockwise first (0, +1, -1, +2, -2). */
 static const uint8_t TURN[5] = {0, 1, 7, 2, 6};
 
-/* Where row y's points from x - 1 on start, for point `at` at (x, y) in it:
- * the point itself, or the one before it at x - 1. */
-static uint32_t own_lb(const symline_i_tracer *t, uint32_t at, int32_t x, uint32_t y)
+/* The neighbour mask in a point's fx (a character access: all 8 bits). */
+static uint32_t mask_of(const symline_point *p)
 {
-    return at > t->row_start[y] && (int32_t)t->pts[at - 1u].x + 1 == x ? at - 1u : at;
+    return *(const uint8_t *)&p->fx;
 }
 
-/* lb (find()) for the step from (nx, ny) (index at), from the step from
- * (x, y) just taken: the rows both steps see keep what was searched there,
- * moved by at most one point (each x once per row), the point's own row is
- * known, and only a new row is searched again, when a direction needs it. */
-static void carry(const symline_i_tracer *t, uint32_t lb[3], int32_t x, int32_t y, int32_t nx,
-                  int32_t ny, uint32_t at)
+static void set_mask(symline_point *p, uint32_t m)
 {
-    uint32_t k, m[3];
-    for (k = 0; k < 3u; k++) {
-        const uint32_t from = k + (uint32_t)(ny - y); /* -1 wraps: a new row */
-        const uint32_t row = (uint32_t)(ny - 1 + (int32_t)k);
-        uint32_t v = from < 3u ? lb[from] : SL_NO_ROW;
-        if (v != SL_NO_ROW && nx > x && v < t->row_start[row + 1u] &&
-            (int32_t)t->pts[v].x == x - 1) {
-            v++; /* from x - 1 on to from x on */
-        } else if (v != SL_NO_ROW && nx < x && v > t->row_start[row] &&
-                   (int32_t)t->pts[v - 1u].x == x - 2) {
-            v--; /* from x - 1 on to from x - 2 on */
-        }
-        m[k] = v;
+    *(uint8_t *)&p->fx = (uint8_t)m;
+}
+
+/* The neighbour count of a mask as phase 0 needs it: 0, 1, or 2 for more. */
+static uint32_t mask_count(uint32_t m)
+{
+    return m == 0u ? 0u : (m & (m - 1u)) == 0u ? 1u : 2u;
+}
+
+/* fy when row y+1's start is not said (too far, or no row y+1). */
+#define SL_FAR (-128)
+
+/* x of point q of a row that ends at e, or above every x past the end. */
+static uint32_t x_or_past(const symline_point *q, const symline_point *e)
+{
+    return q < e ? q->x : 0x20000u;
+}
+
+/* Writes every point's mask and row-below start (file comment), row by row:
+ * rows y and y+1 merged once give row y its bits 1..3 and row y+1 its bits
+ * 5..7 (the last row merges with nothing). Once per pass, not inlined. The
+ * merge keeps what it read in locals: a byte store may alias anything. */
+SL_NOINLINE static void index_rows(symline_point *p, const uint32_t *rs, uint32_t h)
+{
+    symline_point *q, *const end = p + rs[h];
+    uint32_t y;
+    for (q = p + rs[0]; q < end; q++) {
+        set_mask(q, 0u);
     }
-    lb[0] = m[0];
-    lb[1] = own_lb(t, at, nx, (uint32_t)ny);
-    lb[2] = m[2];
+    for (y = 0; y < h; y++) {
+        symline_point *const qe = p + rs[y + 1u];                            /* row y: q */
+        symline_point *r = qe, *const re = y + 1u < h ? p + rs[y + 2u] : qe; /* row y+1 */
+        uint32_t xr = x_or_past(r, re), last = 0x10000u, mlast = 0u; /* q - 1's x and mask */
+        int32_t dd = 0; /* r's place in row y+1 less q's in row y */
+        for (q = p + rs[y]; q < qe; q++, dd--) {
+            const uint32_t x = q->x;
+            uint32_t m = mask_of(q);
+            if (last + 1u == x) { /* directions 4 and, from q - 1, 0 */
+                m |= 0x10u;
+                set_mask(q - 1, mlast | 0x01u);
+            }
+            while (xr + 1u < x) {
+                r++;
+                dd++;
+                xr = x_or_past(r, re);
+            }
+            q->fy = (int8_t)(dd > SL_FAR && dd < -SL_FAR ? dd : SL_FAR);
+            if (xr <= x + 1u) {
+                symline_point *s = r;
+                uint32_t xs = xr;
+                do {
+                    const uint32_t dx = xs + 1u - x;         /* 0, 1, 2: at x - 1, x, x + 1 */
+                    m |= 0x08u >> dx;                        /* directions 3, 2, 1 */
+                    set_mask(s, mask_of(s) | (0x80u >> dx)); /* seen from s: 7, 6, 5 */
+                    s++;
+                    xs = x_or_past(s, re);
+                } while (xs <= x + 1u);
+            }
+            set_mask(q, m);
+            last = x;
+            mlast = m;
+        }
+    }
+}
+
+/* The number of set bits of a 3-bit value, from a table in a constant. */
+#define SL_POP3(v) ((0xE994u >> (2u * (v))) & 3u)
+
+/* Index of the neighbour in direction d (its bit set in the mask m) of
+ * point `at` in row y. A row above, or one below that the list does not
+ * place (SL_FAR), is searched from x - 1 on (*up keeps the row above's). */
+static uint32_t neighbour_at(const symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t m,
+                             uint32_t d, uint32_t *up)
+{
+    const symline_point *const p = t->pts;
+    const uint32_t *const rs = t->row_start;
+    if ((d & 3u) == 0u) { /* 0 or 4: the next or the last point */
+        return at + 1u - (d >> 1);
+    }
+    if (d < 4u) {
+        const int32_t dd = p[at].fy;
+        const uint32_t base = dd != SL_FAR ? (uint32_t)((int32_t)(rs[y + 1u] + (at - rs[y])) + dd)
+                                           : first_at(t, (int32_t)p[at].x - 1, y + 1u, at - rs[y]);
+        return base + SL_POP3(((m >> 1) & 7u) >> d); /* those left of it */
+    }
+    if (*up == SL_NO_ROW) {
+        *up = first_at(t, (int32_t)p[at].x - 1, y - 1u, at - rs[y]);
+    }
+    return *up + SL_POP3((m >> 5) & ((1u << (d - 5u)) - 1u));
+}
+
+/* The directions a step tries, in order, 4 bits each, 8 added to the last:
+ * after a step in direction d (TURN), and for a start (SL_ANY_DIR: 0..7). */
+static const uint32_t TRIES[9] = {0xE2710u, 0xF3021u, 0x84132u, 0x95243u,   0xA6354u,
+                                  0xB7465u, 0xC0576u, 0xD1607u, 0xF6543210u};
+
+/* follow() where speed counts: the same steps, from the masks. */
+static bool follow_masks(symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t dir,
+                         symline_point *dst, uint32_t cap, uint32_t *pos, bool *cut)
+{
+    symline_point *const pts = t->pts;
+    uint32_t m = mask_of(&pts[at]), k = *pos;
+    for (;;) {
+        uint32_t seq = TRIES[dir], d, idx, up = SL_NO_ROW;
+        if (dir != SL_ANY_DIR && k >= cap) {
+            break; /* cut */
+        }
+        for (;;) {
+            d = seq & 7u;
+            if (((m >> d) & 1u) != 0u) {
+                idx = neighbour_at(t, at, y, m, d, &up);
+                if (pts[idx].y != SL_VISITED) {
+                    break;
+                }
+            }
+            if ((seq & 8u) != 0u) { /* no direction left */
+                const bool moved = k != *pos;
+                *pos = k;
+                return moved;
+            }
+            seq >>= 4;
+        }
+        if (k >= cap) {
+            break; /* cut */
+        }
+        pts[idx].y = SL_VISITED;
+        y = (uint32_t)((int32_t)y + DX[(d + 6u) & 7u]);
+        dst[k].x = pts[idx].x;
+        dst[k].y = (uint16_t)y;
+        k++;
+        at = idx;
+        m = mask_of(&pts[idx]);
+        dir = d;
+    }
+    *pos = k;
+    *cut = true;
+    return true;
 }
 
 /* Follows the line from (x, y) (index at), last step direction dir (or
@@ -245,10 +312,10 @@ static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint3
 {
     bool moved = false;
     uint32_t lb[3];
-    lb[0] = lb[1] = lb[2] = SL_NO_ROW; /* not an initialiser: no memcpy call */
     if (SL_FOR_SPEED) {
-        lb[1] = own_lb(t, at, x, (uint32_t)y);
+        return follow_masks(t, at, (uint32_t)y, dir, dst, cap, pos, cut);
     }
+    lb[0] = lb[1] = lb[2] = SL_NO_ROW; /* not an initialiser: no memcpy call */
     for (;;) {
         const uint32_t tries = dir == SL_ANY_DIR ? 8u : 5u;
         uint32_t o;
@@ -259,7 +326,7 @@ static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint3
         for (o = 0; o < tries; o++) {
             const uint32_t d = dir == SL_ANY_DIR ? o : (dir + TURN[o]) & 7u;
             const int32_t nx = x + DX[d], ny = y + DX[(d + 6u) & 7u];
-            const int32_t idx = find(t, lb, x, y, SL_FOR_SPEED ? at - t->row_start[y] : 0u, nx, ny);
+            const int32_t idx = find(t, lb, x, y, 0u, nx, ny);
             if (unvisited(t, idx)) {
                 if (*pos >= cap) {
                     *cut = true;
@@ -269,12 +336,7 @@ static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint3
                 dst[*pos].x = (uint16_t)nx;
                 dst[*pos].y = (uint16_t)ny;
                 (*pos)++;
-                if (SL_FOR_SPEED) {
-                    carry(t, lb, x, y, nx, ny, (uint32_t)idx);
-                } else {
-                    lb[0] = lb[1] = lb[2] = SL_NO_ROW;
-                }
-                at = (uint32_t)idx;
+                lb[0] = lb[1] = lb[2] = SL_NO_ROW;
                 x = nx;
                 y = ny;
                 dir = d;
@@ -310,6 +372,10 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
         *cut = true;
         return false;
     }
+    if (SL_FOR_SPEED && t->phase == 0u && t->scan == 0u && t->n != 0u) {
+        /* Nothing visited yet: the first call, or one that got no room. */
+        index_rows(t->pts, t->row_start, t->h);
+    }
     while (t->phase < 2u) {
         while (t->scan < t->n) {
             /* The scan moves past i either way (a chain from i has visited it). */
@@ -319,10 +385,9 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
             if (y == SL_VISITED) {
                 continue;
             }
-            uint32_t nb = 0u;
             if (t->phase == 0u) {
                 const uint32_t c =
-                    SL_FOR_SPEED ? scan_neighbours(t, i, x, &nb) : symline_i_neighbours(t, x, y);
+                    SL_FOR_SPEED ? mask_count(mask_of(&t->pts[i])) : symline_i_neighbours(t, x, y);
                 if (c != 1u) {
                     if (c == 0u) {
                         /* Type A: no chain ever reaches it, phase 1 need not try it. */
@@ -332,21 +397,7 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
                 }
             }
             visit(t, (int32_t)i);
-            if (SL_FOR_SPEED && t->phase == 0u && pos < cap) {
-                /* A B point's first step goes to its one neighbour nb, which
-                 * the count found: follow() from there, as its search in
-                 * every direction would have. */
-                const uint32_t nx = t->pts[nb].x, ny = t->pts[nb].y;
-                if (ny == SL_VISITED) {
-                    continue; /* nothing left to follow from here */
-                }
-                visit(t, (int32_t)nb);
-                dst[1].x = (uint16_t)nx;
-                dst[1].y = (uint16_t)ny;
-                pos = 2u;
-                (void)follow(t, nb, (int32_t)nx, (int32_t)ny,
-                             DIR_OF[(ny + 1u - y) * 3u + nx + 1u - x], dst, cap, &pos, cut);
-            } else if (!follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
+            if (!follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
                 continue; /* nothing left to follow from here: a lone rest of a traced line */
             }
             dst[0].x = (uint16_t)x;

@@ -350,8 +350,7 @@ static void random_grid(grid *g, uint32_t w, uint32_t h, uint32_t pct, uint32_t 
         uint32_t s;
         for (s = 0; s < len; s++) {
             const uint32_t d = (d0 + (rnd(4u) == 0u ? rnd(3u) + 7u : 0u)) & 7u;
-            if (!ref_on(g, px, py) && px >= 0 && py >= 0 && (uint32_t)px < w &&
-                (uint32_t)py < h) {
+            if (!ref_on(g, px, py) && px >= 0 && py >= 0 && (uint32_t)px < w && (uint32_t)py < h) {
                 g->on[py][px] = 1u;
             }
             px += DXR[d];
