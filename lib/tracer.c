@@ -48,6 +48,9 @@ void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
     t->h = h;
     t->scan = 0u;
     t->phase = 0u;
+    if (SL_FOR_SPEED) {
+        t->left = n;
+    }
 }
 
 /* Index of the first point of row y (< h) at x or right of it. off: the
@@ -211,10 +214,10 @@ SL_NOINLINE static void index_rows(symline_point *p, const uint32_t *rs, uint32_
                 dd++;
                 xr = x_or_past(r, re);
             }
-            q->fy = (int8_t)(dd > SL_FAR && dd < -SL_FAR ? dd : SL_FAR);
-            if (xr <= x + 1u) {
+            if (xr <= x + 1u) { /* (only then is fy read) */
                 symline_point *s = r;
                 uint32_t xs = xr;
+                q->fy = (int8_t)(dd > SL_FAR && dd < -SL_FAR ? dd : SL_FAR);
                 do {
                     const uint32_t dx = xs + 1u - x;         /* 0, 1, 2: at x - 1, x, x + 1 */
                     m |= 0x08u >> dx;                        /* directions 3, 2, 1 */
@@ -261,6 +264,30 @@ static uint32_t neighbour_at(const symline_i_tracer *t, uint32_t at, uint32_t y,
 static const uint32_t TRIES[9] = {0xE2710u, 0xF3021u, 0x84132u, 0x95243u,   0xA6354u,
                                   0xB7465u, 0xC0576u, 0xD1607u, 0xF6543210u};
 
+/* The first unvisited neighbour of point `at` in row y (mask m) in the
+ * directions seq tries (TRIES), from its first on: its direction, its index
+ * to *idx; SL_ANY_DIR when there is none. Apart from the step's own first
+ * try, which is almost always the one taken (not inlined: a loop round the
+ * index sums would make the step set up for them every time). */
+SL_NOINLINE static uint32_t next_dir(const symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t m,
+                                     uint32_t seq, uint32_t *idx)
+{
+    uint32_t up = SL_NO_ROW;
+    for (;;) {
+        const uint32_t d = seq & 7u;
+        if (((m >> d) & 1u) != 0u) {
+            *idx = neighbour_at(t, at, y, m, d, &up);
+            if (t->pts[*idx].y != SL_VISITED) {
+                return d;
+            }
+        }
+        if ((seq & 8u) != 0u) {
+            return SL_ANY_DIR;
+        }
+        seq >>= 4;
+    }
+}
+
 /* follow() where speed counts: the same steps, from the masks. */
 static bool follow_masks(symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t dir,
                          symline_point *dst, uint32_t cap, uint32_t *pos, bool *cut)
@@ -268,24 +295,27 @@ static bool follow_masks(symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t 
     symline_point *const pts = t->pts;
     uint32_t m = mask_of(&pts[at]), k = *pos;
     for (;;) {
-        uint32_t seq = TRIES[dir], d, idx, up = SL_NO_ROW;
+        uint32_t seq = TRIES[dir], d, idx = 0u, up = SL_NO_ROW;
         if (dir != SL_ANY_DIR && k >= cap) {
             break; /* cut */
         }
-        for (;;) {
-            d = seq & 7u;
-            if (((m >> d) & 1u) != 0u) {
-                idx = neighbour_at(t, at, y, m, d, &up);
-                if (pts[idx].y != SL_VISITED) {
-                    break;
-                }
-            }
-            if ((seq & 8u) != 0u) { /* no direction left */
-                const bool moved = k != *pos;
-                *pos = k;
-                return moved;
-            }
+        /* The first direction with a point, in the order of the tries. */
+        while (((m >> (seq & 7u)) & 1u) == 0u && (seq & 8u) == 0u) {
             seq >>= 4;
+        }
+        d = seq & 7u;
+        if (((m >> d) & 1u) == 0u) {
+            d = SL_ANY_DIR;
+        } else {
+            idx = neighbour_at(t, at, y, m, d, &up);
+            if (pts[idx].y == SL_VISITED) {
+                d = (seq & 8u) != 0u ? SL_ANY_DIR : next_dir(t, at, y, m, seq >> 4, &idx);
+            }
+        }
+        if (d == SL_ANY_DIR) { /* no direction left */
+            const bool moved = k != *pos;
+            *pos = k;
+            return moved;
         }
         if (k >= cap) {
             break; /* cut */
@@ -378,6 +408,20 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
     }
     while (t->phase < 2u) {
         while (t->scan < t->n) {
+            if (SL_FOR_SPEED) {
+                /* Most points are visited by then: skipped in a loop of their
+                 * own, and all of them once none is left (phase 1, often). */
+                const symline_point *const p = t->pts;
+                const uint32_t n = t->left != 0u ? t->n : 0u;
+                uint32_t s = t->scan;
+                while (s < n && p[s].y == SL_VISITED) {
+                    s++;
+                }
+                t->scan = s;
+                if (s >= n) {
+                    break;
+                }
+            }
             /* The scan moves past i either way (a chain from i has visited it). */
             const uint32_t i = t->scan++;
             const uint32_t x = t->pts[i].x, y = t->pts[i].y;
@@ -392,11 +436,17 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
                     if (c == 0u) {
                         /* Type A: no chain ever reaches it, phase 1 need not try it. */
                         visit(t, (int32_t)i);
+                        if (SL_FOR_SPEED) {
+                            t->left--;
+                        }
                     }
                     continue;
                 }
             }
             visit(t, (int32_t)i);
+            if (SL_FOR_SPEED) {
+                t->left--;
+            }
             if (!follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
                 continue; /* nothing left to follow from here: a lone rest of a traced line */
             }
@@ -409,6 +459,9 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
                 (void)follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut);
                 symline_i_reverse_points(dst, pos);
                 symline_i_reverse_points(dst + (pos - fwd), fwd);
+            }
+            if (SL_FOR_SPEED) {
+                t->left -= pos - 1u; /* the chain's points after its start */
             }
             *count = pos;
             return true;

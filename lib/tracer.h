@@ -20,6 +20,7 @@ typedef struct symline_i_tracer {
     uint32_t h;
     uint32_t scan;  /* next raster index to try as a start */
     uint32_t phase; /* 0: starts at B points, 1: everything left (loops) */
+    uint32_t left;  /* points not visited yet (kept where speed counts) */
 } symline_i_tracer;
 
 void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,

@@ -409,6 +409,9 @@ static void compare_with_reference(grid *g, uint32_t cap)
             assert_int_equal(r_dst[x].y, r_ref[x].y);
         }
     }
+    if (SL_FOR_SPEED) { /* the count that ends the scans early */
+        assert_int_equal(t.left, 0);
+    }
     /* Every point visited or not as the reference left it. */
     for (y = 0; y < g->h; y++) {
         for (x = r_rows[y]; x < r_rows[y + 1u]; x++) {
