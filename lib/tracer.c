@@ -188,26 +188,42 @@ static uint32_t x_or_past(const symline_point *q, const symline_point *e)
 
 /* Writes every point's mask and row-below start (file comment), row by row:
  * rows y and y+1 merged once give row y its bits 1..3 and row y+1 its bits
- * 5..7 (the last row merges with nothing). Once per pass, not inlined. The
- * merge keeps what it read in locals: a byte store may alias anything. */
-SL_NOINLINE static void index_rows(symline_point *p, const uint32_t *rs, uint32_t h)
+ * 5..7 (the last row merges with nothing). A point left without neighbours
+ * (type A) is marked visited here, as phase 0 would mark it when it came to
+ * it: no chain ever reaches it. Returns their number. Once per pass, not
+ * inlined. The merge keeps what it read in locals: a byte store may alias
+ * anything. */
+SL_NOINLINE static uint32_t index_rows(symline_point *p, const uint32_t *rs, uint32_t h)
 {
-    symline_point *q, *const end = p + rs[h];
-    uint32_t y;
-    for (q = p + rs[0]; q < end; q++) {
+    symline_point *q, *qs, *qe, *re;
+    uint32_t y, a = 0u;
+    if (h == 0u) {
+        return 0u;
+    }
+    re = p + rs[h];
+    for (q = p + rs[0]; q < re; q++) {
         set_mask(q, 0u);
     }
-    for (y = 0; y < h; y++) {
-        symline_point *const qe = p + rs[y + 1u];                            /* row y: q */
-        symline_point *r = qe, *const re = y + 1u < h ? p + rs[y + 2u] : qe; /* row y+1 */
-        uint32_t xr = x_or_past(r, re), last = 0x10000u, mlast = 0u; /* q - 1's x and mask */
+    /* Row y is [qs, qe), row y+1 [qe, re): each row's bounds read once. */
+    for (y = 0, qs = p + rs[0], qe = p + rs[1]; y < h; y++, qs = qe, qe = re) {
+        symline_point *r = qe;
+        /* q - 1's x and mask (complete but for bit 0; none: not 0) */
+        uint32_t xr, last = 0x10000u, mlast = 0x100u;
         int32_t dd = 0; /* r's place in row y+1 less q's in row y */
-        for (q = p + rs[y]; q < qe; q++, dd--) {
+        re = y + 1u < h ? p + rs[y + 2u] : qe;
+        if (qs == qe) {
+            continue;
+        }
+        xr = x_or_past(r, re);
+        for (q = qs; q < qe; q++, dd--) {
             const uint32_t x = q->x;
             uint32_t m = mask_of(q);
             if (last + 1u == x) { /* directions 4 and, from q - 1, 0 */
                 m |= 0x10u;
                 set_mask(q - 1, mlast | 0x01u);
+            } else if (mlast == 0u) {
+                q[-1].y = SL_VISITED;
+                a++;
             }
             while (xr + 1u < x) {
                 r++;
@@ -230,7 +246,12 @@ SL_NOINLINE static void index_rows(symline_point *p, const uint32_t *rs, uint32_
             last = x;
             mlast = m;
         }
+        if (mlast == 0u) {
+            qe[-1].y = SL_VISITED;
+            a++;
+        }
     }
+    return a;
 }
 
 /* The number of set bits of a 3-bit value, from a table in a constant. */
@@ -404,7 +425,7 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
     }
     if (SL_FOR_SPEED && t->phase == 0u && t->scan == 0u && t->n != 0u) {
         /* Nothing visited yet: the first call, or one that got no room. */
-        index_rows(t->pts, t->row_start, t->h);
+        t->left -= index_rows(t->pts, t->row_start, t->h);
     }
     while (t->phase < 2u) {
         while (t->scan < t->n) {
