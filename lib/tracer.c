@@ -269,7 +269,7 @@ static uint32_t neighbour_at(const symline_i_tracer *t, uint32_t at, uint32_t y,
         return at + 1u - (d >> 1);
     }
     if (d < 4u) {
-        const int32_t dd = p[at].fy;
+        const int32_t dd = (int32_t)p[at].fy;
         const uint32_t base = dd != SL_FAR ? (uint32_t)((int32_t)(rs[y + 1u] + (at - rs[y])) + dd)
                                            : first_at(t, (int32_t)p[at].x - 1, y + 1u, at - rs[y]);
         return base + SL_POP3(((m >> 1) & 7u) >> d); /* those left of it */
