@@ -286,20 +286,21 @@ static const uint32_t TRIES[9] = {0xE2710u, 0xF3021u, 0x84132u, 0x95243u,   0xA6
                                   0xB7465u, 0xC0576u, 0xD1607u, 0xF6543210u};
 
 /* The first unvisited neighbour of point `at` in row y (mask m) in the
- * directions seq tries (TRIES), from its first on: its direction, its index
- * to *idx; SL_ANY_DIR when there is none. Apart from the step's own first
- * try, which is almost always the one taken (not inlined: a loop round the
- * index sums would make the step set up for them every time). */
-SL_NOINLINE static uint32_t next_dir(const symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t m,
-                                     uint32_t seq, uint32_t *idx)
+ * directions seq tries (TRIES), from its first on: its index times 16 plus
+ * its direction (one value: no address of a local in the step); SL_ANY_DIR
+ * when there is none. Apart from the step's own first try, which is almost
+ * always the one taken (not inlined: a loop round the index sums would make
+ * the step set up for them every time). */
+SL_NOINLINE static uint64_t next_dir(const symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t m,
+                                     uint32_t seq)
 {
     uint32_t up = SL_NO_ROW;
     for (;;) {
         const uint32_t d = seq & 7u;
         if (((m >> d) & 1u) != 0u) {
-            *idx = neighbour_at(t, at, y, m, d, &up);
-            if (t->pts[*idx].y != SL_VISITED) {
-                return d;
+            const uint32_t idx = neighbour_at(t, at, y, m, d, &up);
+            if (t->pts[idx].y != SL_VISITED) {
+                return (uint64_t)idx << 4 | d;
             }
         }
         if ((seq & 8u) != 0u) {
@@ -330,7 +331,10 @@ static bool follow_masks(symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t 
         } else {
             idx = neighbour_at(t, at, y, m, d, &up);
             if (pts[idx].y == SL_VISITED) {
-                d = (seq & 8u) != 0u ? SL_ANY_DIR : next_dir(t, at, y, m, seq >> 4, &idx);
+                const uint64_t next =
+                    (seq & 8u) != 0u ? SL_ANY_DIR : next_dir(t, at, y, m, seq >> 4);
+                d = (uint32_t)next & 15u;
+                idx = (uint32_t)(next >> 4);
             }
         }
         if (d == SL_ANY_DIR) { /* no direction left */
