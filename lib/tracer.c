@@ -103,18 +103,18 @@ static SL_FIRST_AT_INLINE uint32_t first_at(const symline_i_tracer *t, int32_t x
 /* Index of point (nx, ny), a neighbour of (x, y), or -1 (also when out of
  * range: no point has an x of -1 or 65536). lb[ny - y + 1]: where row ny's
  * points from x - 1 on start, searched once per step and row (SL_NO_ROW
- * until then), not once per direction; where speed counts, carried over
- * from the last step (carry()). */
+ * until then), not once per direction. The size builds' lookup (where speed
+ * counts, follow_masks() reads the neighbour masks instead). */
 #define SL_NO_ROW 0xFFFFFFFFu
-static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t y, uint32_t off,
-                    int32_t nx, int32_t ny)
+static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t y, int32_t nx,
+                    int32_t ny)
 {
     uint32_t *k = &lb[ny - y + 1], i;
     if ((uint32_t)ny >= t->h) { /* negatives wrap: out too */
         return -1;
     }
     if (*k == SL_NO_ROW) {
-        *k = first_at(t, x - 1, (uint32_t)ny, off);
+        *k = first_at(t, x - 1, (uint32_t)ny, 0u);
     }
     for (i = *k; i < t->row_start[ny + 1] && t->pts[i].x <= nx; i++) {
         if (t->pts[i].x == nx) {
@@ -384,7 +384,7 @@ static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint3
         for (o = 0; o < tries; o++) {
             const uint32_t d = dir == SL_ANY_DIR ? o : (dir + TURN[o]) & 7u;
             const int32_t nx = x + DX[d], ny = y + DX[(d + 6u) & 7u];
-            const int32_t idx = find(t, lb, x, y, 0u, nx, ny);
+            const int32_t idx = find(t, lb, x, y, nx, ny);
             if (unvisited(t, idx)) {
                 if (*pos >= cap) {
                     *cut = true;
