@@ -229,6 +229,8 @@ static bool ref_on(const grid *g, int x, int y)
     return x >= 0 && y >= 0 && (uint32_t)x < g->w && (uint32_t)y < g->h && g->on[y][x];
 }
 
+/* follow() of tracer.c: from (x, y), last step direction dir (8: a start,
+ * directions 0..7 in order). */
 static bool ref_follow(grid *g, int x, int y, uint32_t dir, symline_point *dst, uint32_t cap,
                        uint32_t *pos, bool *cut)
 {
