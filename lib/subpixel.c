@@ -109,16 +109,17 @@ static uint32_t energy_at(const symline_i_across *a, int32_t k)
 }
 
 /* The same sweep away from the border, without the bounds checks, by
- * pointers. Inline with a constant level 0 (most points, one byte per gray
- * value) and with the pass's level. */
-static inline void sweep(const symline_i_across *a, uint32_t level, uint32_t e[3])
+ * pointers, m terms. Inline with a constant level 0 (most points, one byte
+ * per gray value) and with the pass's level; with the default radius's
+ * m = 3 as well, which unrolls the sweep. */
+static inline void sweep(const symline_i_across *a, uint32_t level, uint32_t m, uint32_t e[3])
 {
     /* Pointers walk out from i: pl to i-(j+1), pr to i+(j+1). */
     const uint8_t *pl = a->at - a->step, *pr = a->at + a->step;
     uint32_t l0 = grid_px(a->at, a->stride, level), l1 = grid_px(pl, a->stride, level);
     uint32_t r0 = l0, r1 = grid_px(pr, a->stride, level), j;
     uint32_t s0 = 0u, s1 = 0u, s2 = 0u, e0 = 0u, e1 = 0u, e2 = 0u;
-    for (j = a->m; j > 0u; j--) {
+    for (j = m; j > 0u; j--) {
         uint32_t l2, r2;
         int32_t d0, d1, d2;
         pl -= a->step;
@@ -155,10 +156,14 @@ static void energies3(const symline_i_across *a, uint32_t e[3])
         e[0] = energy_at(a, -1);
         e[1] = energy_at(a, 0);
         e[2] = energy_at(a, 1);
+    } else if (a->level == 0u && a->m == 3u) {
+        sweep(a, 0u, 3u, e);
     } else if (a->level == 0u) {
-        sweep(a, 0u, e);
+        sweep(a, 0u, a->m, e);
+    } else if (a->level == 1u && a->m == 3u) {
+        sweep(a, 1u, 3u, e);
     } else {
-        sweep(a, a->level, e);
+        sweep(a, a->level, a->m, e);
     }
 }
 
