@@ -109,17 +109,16 @@ static uint32_t energy_at(const symline_i_across *a, int32_t k)
 }
 
 /* The same sweep away from the border, without the bounds checks, by
- * pointers, m terms. Inline with a constant level 0 (most points, one byte
- * per gray value) and with the pass's level; with the default radius's
- * m = 3 as well, which unrolls the sweep. */
-static inline void sweep(const symline_i_across *a, uint32_t level, uint32_t m, uint32_t e[3])
+ * pointers. Inline with a constant level 0 (most points, one byte per gray
+ * value) and with the pass's level. */
+static inline void sweep(const symline_i_across *a, uint32_t level, uint32_t e[3])
 {
     /* Pointers walk out from i: pl to i-(j+1), pr to i+(j+1). */
     const uint8_t *pl = a->at - a->step, *pr = a->at + a->step;
     uint32_t l0 = grid_px(a->at, a->stride, level), l1 = grid_px(pl, a->stride, level);
     uint32_t r0 = l0, r1 = grid_px(pr, a->stride, level), j;
     uint32_t s0 = 0u, s1 = 0u, s2 = 0u, e0 = 0u, e1 = 0u, e2 = 0u;
-    for (j = m; j > 0u; j--) {
+    for (j = a->m; j > 0u; j--) {
         uint32_t l2, r2;
         int32_t d0, d1, d2;
         pl -= a->step;
@@ -156,38 +155,36 @@ static void energies3(const symline_i_across *a, uint32_t e[3])
         e[0] = energy_at(a, -1);
         e[1] = energy_at(a, 0);
         e[2] = energy_at(a, 1);
-    } else if (a->level == 0u && a->m == 3u) {
-        sweep(a, 0u, 3u, e);
     } else if (a->level == 0u) {
-        sweep(a, 0u, a->m, e);
-    } else if (a->level == 1u && a->m == 3u) {
-        sweep(a, 1u, 3u, e);
+        sweep(a, 0u, e);
     } else {
-        sweep(a, a->level, a->m, e);
+        sweep(a, a->level, e);
     }
 }
 
-/* Offset (1/128 grid px) of the ridge's middle from index i across the line. */
-static int32_t offset_at(const symline_i_across *a)
+/* Offset (1/128 grid px) at a run of equal E (e1) through index i: its
+ * exact middle (the S point is its lower middle). */
+SL_NOINLINE static int32_t run_middle(const symline_i_across *a, uint32_t e1)
 {
-    uint32_t e[3];
-    int32_t num, den;
-    if (a->i == 0u || a->i + 1u >= a->n) {
-        return 0;
+    const int32_t longest = 2 * (int32_t)a->lag + 1, last = (int32_t)a->n - 1 - (int32_t)a->i;
+    int32_t lo = 0, hi = 0;
+    while ((int32_t)a->i + lo > 1 && hi - lo + 1 < longest && energy_at(a, lo - 1) == e1) {
+        lo--;
     }
-    energies3(a, e);
+    while (hi + 1 < last && hi - lo + 1 < longest && energy_at(a, hi + 1) == e1) {
+        hi++;
+    }
+    /* i is the run's (a+b) div 2, so this is 0 or half a pixel. */
+    return lo + hi > 0 ? 64 : 0;
+}
+
+/* Offset (1/128 grid px) of the ridge's middle from index i across the line,
+ * from E at i-1, i and i+1 (e). */
+static inline int32_t offset_of(const symline_i_across *a, const uint32_t e[3])
+{
+    int32_t num, den;
     if (e[0] == e[1] || e[2] == e[1]) {
-        /* A run of equal E: its exact middle (the S point is its lower middle). */
-        const int32_t longest = 2 * (int32_t)a->lag + 1, last = (int32_t)a->n - 1 - (int32_t)a->i;
-        int32_t lo = 0, hi = 0;
-        while ((int32_t)a->i + lo > 1 && hi - lo + 1 < longest && energy_at(a, lo - 1) == e[1]) {
-            lo--;
-        }
-        while (hi + 1 < last && hi - lo + 1 < longest && energy_at(a, hi + 1) == e[1]) {
-            hi++;
-        }
-        /* i is the run's (a+b) div 2, so this is 0 or half a pixel. */
-        return lo + hi > 0 ? 64 : 0;
+        return run_middle(a, e[1]); /* a run of equal E */
     }
     if (e[0] < e[1] || e[2] < e[1]) {
         return 0; /* not a minimum of E (not an S point) */
@@ -207,6 +204,61 @@ static int32_t offset_at(const symline_i_across *a)
     return den > 0 ? num * 64 / den : 0;
 }
 
+/* Offset (1/128 grid px) of the ridge's middle from index i across the line. */
+static int32_t offset_at(const symline_i_across *a)
+{
+    uint32_t e[3];
+    if (a->i == 0u || a->i + 1u >= a->n) {
+        return 0;
+    }
+    energies3(a, e);
+    return offset_of(a, e);
+}
+
+/* The squared difference of two gray values. */
+static inline uint32_t sq(uint32_t l, uint32_t r)
+{
+    const int32_t d = (int32_t)l - (int32_t)r;
+    return (uint32_t)(d * d);
+}
+
+/* symline_i_subpixel() with m = 3 (the default radius) at level 0 or 1 (most
+ * points), to save time (SL_FOR_SPEED): away from the border, E at i-1, i
+ * and i+1 from the nine gray values around i in straight-line code; vert
+ * and level constants. */
+static inline void subpixel_m3(const symline_image *img, symline_i_across *a, int vert,
+                               uint32_t level, symline_point *q, uint32_t n)
+{
+    const ptrdiff_t st = vert ? (ptrdiff_t)1 << level : (ptrdiff_t)img->stride << level;
+    const size_t sd = img->stride;
+    uint32_t k;
+    for (k = 0; k < n; k++) {
+        /* g + j * st: the block of index i + j. */
+        const uint8_t *g =
+            img->data + ((size_t)q[k].y << level) * sd + ((size_t)q[k].x << level);
+        int32_t off;
+        a->i = vert ? q[k].x : q[k].y;
+        a->at = g;
+        if (a->i >= 4u && a->i + 4u < a->n) {
+            const uint32_t m4 = grid_px(g - 4 * st, sd, level), m3 = grid_px(g - 3 * st, sd, level);
+            const uint32_t m2 = grid_px(g - 2 * st, sd, level), m1 = grid_px(g - st, sd, level);
+            const uint32_t c0 = grid_px(g, sd, level), p1 = grid_px(g + st, sd, level);
+            const uint32_t p2 = grid_px(g + 2 * st, sd, level), p3 = grid_px(g + 3 * st, sd, level);
+            const uint32_t p4 = grid_px(g + 4 * st, sd, level);
+            uint32_t e[3];
+            /* E(c) = 3 d(c-1, c+1)^2 + 2 d(c-2, c+2)^2 + d(c-3, c+3)^2. */
+            e[0] = 3u * sq(m2, c0) + 2u * sq(m3, p1) + sq(m4, p2);
+            e[1] = 3u * sq(m1, p1) + 2u * sq(m2, p2) + sq(m3, p3);
+            e[2] = 3u * sq(c0, p2) + 2u * sq(m1, p3) + sq(m2, p4);
+            off = offset_of(a, e);
+        } else {
+            off = offset_at(a);
+        }
+        q[k].fx = (int8_t)(vert ? off : 0);
+        q[k].fy = (int8_t)(vert ? 0 : off);
+    }
+}
+
 void symline_i_subpixel(const symline_image *img, const symline_i_pass *p, symline_point *q,
                         uint32_t n)
 {
@@ -219,6 +271,20 @@ void symline_i_subpixel(const symline_image *img, const symline_i_pass *p, symli
     a.n = vert ? p->w : p->h;
     a.m = p->m;
     a.lag = p->lag;
+    if (SL_FOR_SPEED && p->level <= 1u && p->m == 3u) {
+        if (p->level == 0u) {
+            if (vert) {
+                subpixel_m3(img, &a, 1, 0u, q, n);
+            } else {
+                subpixel_m3(img, &a, 0, 0u, q, n);
+            }
+        } else if (vert) {
+            subpixel_m3(img, &a, 1, 1u, q, n);
+        } else {
+            subpixel_m3(img, &a, 0, 1u, q, n);
+        }
+        return;
+    }
     for (k = 0; k < n; k++) {
         int32_t off;
         a.i = vert ? q[k].x : q[k].y;
