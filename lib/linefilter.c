@@ -94,10 +94,10 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
             top == NULL ? 0u : ((uint32_t)top[x] + SL_STATS_STEP - 1u) & ~(SL_STATS_STEP - 1u);
         uint32_t cnt;
         size_t at;
-        if (y0 >= cut) {
+        if (y0 >= (SL_FOR_SPEED ? cut : img->height)) {
             continue;
         }
-        cnt = (cut - y0 + SL_STATS_STEP - 1u) / SL_STATS_STEP;
+        cnt = ((SL_FOR_SPEED ? cut : img->height) - y0 + SL_STATS_STEP - 1u) / SL_STATS_STEP;
         n += cnt;
         for (at = (size_t)y0 * img->stride + x; cnt > 0u; cnt--, at += step) {
             hist[img->data[at]]++;

@@ -197,9 +197,9 @@ typedef struct merger {
     symline_point *out; /* NULL: rotations */
     uint32_t pos;       /* where the piece in hand starts in out */
     symline_point *ap;  /* the piece in hand's points (in out, or in place) */
-    /* Where the round's layout in out begins: the pieces before it stay in
-     * place, their layout unchanged until a first join (SL_FOR_SPEED; else,
-     * and SL_NO_NODE while none, from 0). */
+    /* Where the round's layout in out begins, to save time (SL_FOR_SPEED;
+     * else at 0): the pieces before it stay in place, their layout unchanged
+     * until a first join (SL_NO_NODE while none). */
     uint32_t from;
 } merger;
 
@@ -213,7 +213,7 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const symline_segment *e)
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
     const uint8_t lb = r->segments[j].level;
-    if (m->out != NULL && m->from == SL_NO_NODE) {
+    if (SL_FOR_SPEED && m->out != NULL && m->from == SL_NO_NODE) {
         /* The round's first join: the layout in out begins with the piece
          * in hand (the pieces before it keep their places). */
         m->from = m->pos;
@@ -422,7 +422,9 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
     while (changed) {
         changed = false;
         m.pos = 0u;
-        m.from = SL_FOR_SPEED ? SL_NO_NODE : 0u;
+        if (SL_FOR_SPEED) {
+            m.from = SL_NO_NODE;
+        }
         if (m.cols != 0u) {
             grid_build(&m);
         }
@@ -432,10 +434,10 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
                 continue;
             }
             m.ap = r->points + a->first;
-            if (m.from == SL_NO_NODE && a->first != m.pos) {
+            if (SL_FOR_SPEED && m.from == SL_NO_NODE && a->first != m.pos) {
                 m.from = m.pos; /* not in place: the layout in out begins */
             }
-            if (m.out != NULL && m.from != SL_NO_NODE) {
+            if (m.out != NULL && (!SL_FOR_SPEED || m.from != SL_NO_NODE)) {
                 m.ap = m.out + m.pos;
                 copy_points(m.ap, r->points + a->first, a->count);
                 a->first = m.pos;
@@ -449,8 +451,10 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
             }
             m.pos += a->count;
         }
-        if (m.out != NULL && m.from != SL_NO_NODE) { /* SL_NO_NODE: all in place */
-            copy_points(r->points + m.from, m.out + m.from, m.pos - m.from);
+        if (m.out != NULL && (!SL_FOR_SPEED || m.from != SL_NO_NODE)) {
+            /* From the round's first join on (SL_NO_NODE: all in place). */
+            const uint32_t from = SL_FOR_SPEED ? m.from : 0u;
+            copy_points(r->points + from, m.out + from, m.pos - from);
         }
     }
     for (i = 0, w = 0; i < m.n; i++) {
