@@ -232,8 +232,7 @@ static inline uint32_t offsets_m3(const symline_image *img, uint32_t n_across, i
     uint32_t k, later = 0u;
     for (k = 0; k < n; k++) {
         /* g + j * st: the block of index i + j. */
-        const uint8_t *g =
-            img->data + ((size_t)q[k].y << level) * sd + ((size_t)q[k].x << level);
+        const uint8_t *g = img->data + ((size_t)q[k].y << level) * sd + ((size_t)q[k].x << level);
         const uint32_t i = vert ? q[k].x : q[k].y;
         int32_t off = SL_SUB_LATER;
         if (i >= 4u && i + 4u < n_across) {
