@@ -61,7 +61,8 @@ static void stats_rows(const symline_image *img, uint32_t y0, uint32_t *hist)
     }
 }
 
-/* The lowest first sampled row of all sampled columns (0: top NULL). */
+/* The lowest first sampled row of all sampled columns (0: top NULL), at
+ * most the frame's height. */
 static uint32_t stats_cut(const symline_image *img, const uint16_t *top)
 {
     uint32_t x, cut = 0u;
@@ -69,7 +70,7 @@ static uint32_t stats_cut(const symline_image *img, const uint16_t *top)
         const uint32_t y0 = ((uint32_t)top[x] + SL_STATS_STEP - 1u) & ~(SL_STATS_STEP - 1u);
         cut = y0 > cut ? y0 : cut;
     }
-    return cut;
+    return cut < img->height ? cut : img->height;
 }
 
 /* Column by column: the column's first field row is looked up once, not
