@@ -234,7 +234,6 @@ static inline uint32_t offsets_m3(const symline_image *img, uint32_t n_across, i
         /* g + j * st: the block of index i + j. */
         const uint8_t *g = img->data + ((size_t)q[k].y << level) * sd + ((size_t)q[k].x << level);
         const uint32_t i = vert ? q[k].x : q[k].y;
-        int32_t off = SL_SUB_LATER;
         if (i >= 4u && i + 4u < n_across) {
             const uint32_t m4 = grid_px(g - 4 * st, sd, level), m3 = grid_px(g - 3 * st, sd, level);
             const uint32_t m2 = grid_px(g - 2 * st, sd, level), m1 = grid_px(g - st, sd, level);
@@ -247,12 +246,15 @@ static inline uint32_t offsets_m3(const symline_image *img, uint32_t n_across, i
             e[1] = 3u * sq(m1, p1) + 2u * sq(m2, p2) + sq(m3, p3);
             e[2] = 3u * sq(c0, p2) + 2u * sq(m1, p3) + sq(m2, p4);
             if (e[0] != e[1] && e[2] != e[1]) {
-                off = vertex(e);
+                const int32_t off = vertex(e);
+                q[k].fx = (int8_t)(vert ? off : 0);
+                q[k].fy = (int8_t)(vert ? 0 : off);
+                continue;
             }
         }
-        later += off == SL_SUB_LATER ? 1u : 0u;
-        q[k].fx = (int8_t)(vert || off == SL_SUB_LATER ? off : 0);
-        q[k].fy = (int8_t)(vert || off == SL_SUB_LATER ? 0 : off);
+        q[k].fx = SL_SUB_LATER;
+        q[k].fy = 0;
+        later++;
     }
     return later;
 }
