@@ -192,6 +192,48 @@ static bool a_near(const line_view *l, uint32_t i, uint32_t d)
     return false;
 }
 
+/*
+ * The decision in vector lanes, where the compiler has them (SSE2, NEON)
+ * and the build optimises for speed, at the default radius m = 3: the
+ * candidates of a row come in runs of neighbours (down the columns a line
+ * across them gives long runs of consecutive x; along the rows its width),
+ * so for SL_LP_LANES consecutive entries at once the exact gray test,
+ * E(i-1), E(i), E(i+1) and the S decision are computed in a loop over the
+ * entries the compiler vectorises, instead of one candidate at a time with
+ * strided loads. Scalar cores (Cortex-M) keep the candidate-wise decision:
+ * there the lanes would be work on entries that are no candidates.
+ */
+#if SL_FOR_SPEED && (defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__))
+#define SL_LP_LANES 16u
+#else
+#define SL_LP_LANES 0u
+#endif
+
+#if SL_LP_LANES
+/* What symline_i_linefilter_gray() asks beyond the byte test, for 16-bit
+ * lanes. The byte test is exact on min_gray <= 255 and side_max; of the
+ * contrast it keeps c >= side + max(ridge_min, 1) only up to 255; the
+ * percent tests c - side >= ceil(v * pct / 100) are, for integers,
+ * 100 (c - side) >= v * pct: no division. */
+typedef struct lane_gray {
+    int16_t ridge_min; /* c - side >= this, >= 1 (256: never) */
+    uint16_t ridge_pct, asym_pct;
+    uint16_t paper; /* 1: the byte test is all */
+} lane_gray;
+
+/* Whether the lanes can take the filter: the byte test exact on min_gray,
+ * and 100 (c - side), c * ridge_pct and |lo - hi| * asym_pct within 16 bits
+ * (ridge_pct <= 100, the checked range; asym_pct <= 257, the default 150). */
+static bool lane_gray_setup(const symline_i_linefilter *f, lane_gray *g)
+{
+    g->ridge_min = (int16_t)(f->ridge_min < 1u ? 1u : (f->ridge_min < 256u ? f->ridge_min : 256u));
+    g->ridge_pct = (uint16_t)f->ridge_pct;
+    g->asym_pct = (uint16_t)f->asym_pct;
+    g->paper = (uint16_t)(f->kind == SYMLINE_FILTER_PAPER);
+    return f->min_gray <= 255u && f->ridge_pct <= 100u && f->asym_pct <= 257u;
+}
+#endif
+
 /* The state of one pass's collection, in the workspace (not on the stack:
  * the deepest call chain of the detector runs through here). */
 typedef struct lp_ctx {
@@ -207,6 +249,11 @@ typedef struct lp_ctx {
     uint8_t *gray;     /* the coarse grid's row, or ring of rows */
     uint32_t produced; /* grid rows in the ring so far */
     uint16_t cand[SL_LINE_CAND_MAX];
+#if SL_LP_LANES
+    lane_gray lg;   /* the exact gray test in 16-bit lanes */
+    bool lanes;     /* the lanes decide this pass's interior candidates (m = 3) */
+    bool lanes_row; /* ... and those of the row at hand */
+#endif
 } lp_ctx;
 
 /* In the speed builds each decision is copied into its callers (one copy per
@@ -278,6 +325,123 @@ static SL_ALWAYS_INLINE uint32_t gray_ok(const symline_i_linefilter *f, uint32_t
            (uint32_t)(c - side >= need);
 }
 
+/* Whether candidate x of row y, which passed the exact gray test, is an S
+ * point along the line through it (a plateau on extremum_at()'s slow
+ * path): 1 or 0. */
+static SL_ALWAYS_INLINE uint32_t s_point(lp_ctx *c, uint32_t x, bool along)
+{
+    const uint32_t at = along ? x : c->y;
+    uint32_t up = 0u, e = 0u, dn = 0u, s;
+    if (!along) {
+        c->l.c0 = c->c + x; /* down column x from row y */
+    }
+    if (at != 0u && at + 1u < c->l.n) {
+        energies3(&c->l, at, &up, &e, &dn, true);
+    }
+    s = (uint32_t)(up > e) & (uint32_t)(dn > e);
+    if (up == e || dn == e) {
+        s = (uint32_t)extremum_at(&c->l, at, true);
+    }
+    return s;
+}
+
+#if SL_LP_LANES
+/* |a - b| in byte lanes (max - min), widened. */
+static SL_ALWAYS_INLINE uint16_t absdiff(uint8_t a, uint8_t b)
+{
+    const uint8_t hi = a > b ? a : b, lo = a > b ? b : a;
+    return (uint8_t)(hi - lo);
+}
+
+/* The energy at m = 3 from the pairs' differences: 3 d1^2 + 2 d2^2 + d3^2
+ * (energy_at()'s sum of partial sums), in 16 x 16 -> 32-bit products, which
+ * SSE2 and NEON have (a 32-bit lane multiply SSE2 has not). */
+static SL_ALWAYS_INLINE uint32_t energy_m3(uint16_t d1, uint16_t d2, uint16_t d3)
+{
+    return (uint32_t)d1 * (uint16_t)(3u * d1) + (uint32_t)d2 * (uint16_t)(d2 + d2) +
+           (uint32_t)d3 * d3;
+}
+
+/* The code of a lane that passed the byte test, from its energies E(i-1),
+ * E(i), E(i+1) (< 2^31: differences in signed 32 bits) and gray values c,
+ * lo, hi: 0 when it fails the exact gray test or is no S point, 1 for an
+ * S point, 2 for a plateau beside it that may still make one
+ * (extremum_at() decides). Lanes that failed the byte test are not read. */
+static SL_ALWAYS_INLINE uint8_t lane_code(int32_t up, int32_t e, int32_t dn, uint8_t c, uint8_t lo,
+                                          uint8_t hi, const lane_gray *g)
+{
+    const int32_t du = up - e, dd = dn - e;
+    const uint16_t side = lo > hi ? lo : hi;
+    const int16_t t = (int16_t)(c - side); /* the ridge */
+    const uint16_t t100 = (uint16_t)(100u * (uint16_t)t);
+    const uint16_t gray =
+        (uint16_t)(g->paper | ((uint16_t)(t >= g->ridge_min) &
+                               (uint16_t)(t100 >= (uint16_t)(c * g->ridge_pct)) &
+                               (uint16_t)(t100 >= (uint16_t)(absdiff(lo, hi) * g->asym_pct))));
+    /* both neighbours at least E(i): maybe S; both above: S */
+    const uint32_t maybe = (uint32_t)((du | dd) >= 0), s = (uint32_t)(((du - 1) | (dd - 1)) >= 0);
+    return (uint8_t)((gray & maybe) * (2u - s));
+}
+
+/* The codes of the SL_LP_LANES entries r[0 ..] of a row whose columns run
+ * down r[i + j st], j = -4 .. 4 (m = 3, k = 4): three energies per entry. */
+static SL_ALWAYS_INLINE void decide_lanes_down(const uint8_t *r, ptrdiff_t st, const lane_gray *g,
+                                               uint8_t *restrict code)
+{
+    const uint8_t *restrict m4 = r - 4 * st, *restrict m3 = r - 3 * st, *restrict m2 = r - 2 * st;
+    const uint8_t *restrict m1 = r - st, *restrict p0 = r, *restrict p1 = r + st;
+    const uint8_t *restrict p2 = r + 2 * st, *restrict p3 = r + 3 * st, *restrict p4 = r + 4 * st;
+    const lane_gray gl = *g;
+    uint32_t i;
+    for (i = 0; i < SL_LP_LANES; i++) {
+        const int32_t up =
+            (int32_t)energy_m3(absdiff(m2[i], p0[i]), absdiff(m3[i], p1[i]), absdiff(m4[i], p2[i]));
+        const int32_t e =
+            (int32_t)energy_m3(absdiff(m1[i], p1[i]), absdiff(m2[i], p2[i]), absdiff(m3[i], p3[i]));
+        const int32_t dn =
+            (int32_t)energy_m3(absdiff(p0[i], p2[i]), absdiff(m1[i], p3[i]), absdiff(m2[i], p4[i]));
+        code[i] = lane_code(up, e, dn, p0[i], m4[i], p4[i], &gl);
+    }
+}
+
+/* Candidates within one block of lanes that make it worth its cost, about
+ * that of this many candidates decided one at a time. */
+#define SL_LP_BLOCK_MIN 4u
+
+/* The exact gray test and the S decision of candidates cand[0..k-1] of a
+ * row down the columns (x = cand[i]): the S points' x to cand[0 ..],
+ * returns how many. A candidate with SL_LP_BLOCK_MIN - 1 more within
+ * SL_LP_LANES entries starts a block of lanes, which they share; the others
+ * are decided one at a time. */
+static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
+{
+    const uint32_t lanes = SL_LP_LANES, last = c->w - lanes; /* the last block start */
+    uint16_t *cand = c->cand;
+    uint8_t code[SL_LP_LANES];
+    uint32_t i, ks = 0u, x0 = 0u, end = 0u;
+    for (i = 0; i < k; i++) {
+        const uint32_t x = cand[i];
+        uint32_t s;
+        if (x < end) {
+            s = code[x - x0];
+        } else if (i + SL_LP_BLOCK_MIN - 1u < k && cand[i + SL_LP_BLOCK_MIN - 1u] < x + lanes) {
+            x0 = x < last ? x : last;
+            end = x0 + lanes;
+            decide_lanes_down(c->c + x0, c->l.step, &c->lg, code);
+            s = code[x - x0];
+        } else {
+            s = gray_ok(c->f, c->c[x], c->lo[x], c->hi[x]) != 0u ? 2u : 0u; /* alone */
+        }
+        if (s > 1u) {
+            s = s_point(c, x, false);
+        }
+        cand[ks] = (uint16_t)x;
+        ks += s;
+    }
+    return ks;
+}
+#endif
+
 /* The candidates cand[0..k-1] of row y (interior entries: x = dk + cand[i])
  * in three steps over the batch: the exact gray test, then the energies and
  * the S decision (a plateau on extremum_at()'s slow path), then the points.
@@ -289,27 +453,24 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
     const uint32_t dk = c->dk;
     uint16_t *cand = c->cand;
     uint32_t i, kg = 0u, ks = 0u;
-    for (i = 0; i < k; i++) {
-        const uint32_t j = cand[i];
-        cand[kg] = (uint16_t)(dk + j);
-        kg += gray_ok(c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
-    }
-    SL_STAGE(OPERATOR);
-    for (i = 0; i < kg; i++) {
-        const uint32_t x = cand[i], at = along ? x : c->y;
-        uint32_t up = 0u, e = 0u, dn = 0u, s;
-        if (!along) {
-            c->l.c0 = c->c + x; /* down column x from row y */
+#if SL_LP_LANES
+    if (c->lanes_row) {
+        SL_STAGE(OPERATOR);
+        ks = decide_batch_lanes(c, k);
+    } else
+#endif
+    {
+        for (i = 0; i < k; i++) {
+            const uint32_t j = cand[i];
+            cand[kg] = (uint16_t)(dk + j);
+            kg += gray_ok(c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
         }
-        if (at != 0u && at + 1u < c->l.n) {
-            energies3(&c->l, at, &up, &e, &dn, true);
+        SL_STAGE(OPERATOR);
+        for (i = 0; i < kg; i++) {
+            const uint32_t x = cand[i];
+            cand[ks] = (uint16_t)x;
+            ks += s_point(c, x, along);
         }
-        s = (uint32_t)(up > e) & (uint32_t)(dn > e);
-        if (up == e || dn == e) {
-            s = (uint32_t)extremum_at(&c->l, at, true);
-        }
-        cand[ks] = (uint16_t)x;
-        ks += s;
     }
     SL_STAGE(FILTER);
     for (i = 0; i < ks; i++) {
@@ -348,6 +509,10 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         symline_i_prefilter pf;
         uint32_t at = 0u;
         symline_i_prefilter_setup(c->f, &pf);
+#if SL_LP_LANES
+        /* down the columns: rows y - 4 .. y + 4 held */
+        c->lanes_row = c->lanes && !along && c->y >= 4u && c->y + 4u < c->l.n;
+#endif
         while (at < len) {
             decide_batch(c, symline_i_line_cand(&pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
@@ -460,6 +625,12 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->l.lag = p->lag;
     c->l.i0 = 0u;
     c->l.step = along ? 1 : (ptrdiff_t)(p->level == 0u ? img->stride : p->w);
+#if SL_LP_LANES
+    /* m = 3 (k = 4), and a row that holds a block of lanes within its
+     * interior */
+    c->lanes = lane_gray_setup(c->f, &c->lg) && p->m == 3u && p->k == 4u &&
+               c->w >= 2u * c->dk + SL_LP_LANES;
+#endif
     for (y = 0; y < h; y++) {
         const uint8_t *row = grid_row_at(c, y);
         c->c = row;
