@@ -204,27 +204,16 @@ static bool a_near(const line_view *l, uint32_t i, uint32_t d)
  * there the lanes would be work on entries that are no candidates.
  */
 #if SL_FOR_SPEED && (defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__))
-#define SL_LP_LANES 16u
+#define SL_LP_LANES SYMLINE_LANES_DOWN
 #else
 #define SL_LP_LANES 0u
 #endif
 
 #if SL_LP_LANES
-/* What symline_i_linefilter_gray() asks beyond the byte test, for 16-bit
- * lanes. The byte test is exact on min_gray <= 255 and side_max; of the
- * contrast it keeps c >= side + max(ridge_min, 1) only up to 255; the
- * percent tests c - side >= ceil(v * pct / 100) are, for integers,
- * 100 (c - side) >= v * pct: no division. */
-typedef struct lane_gray {
-    int16_t ridge_min; /* c - side >= this, >= 1 (256: never) */
-    uint16_t ridge_pct, asym_pct;
-    uint16_t paper; /* 1: the byte test is all */
-} lane_gray;
-
 /* Whether the lanes can take the filter: the byte test exact on min_gray,
  * and 100 (c - side), c * ridge_pct and |lo - hi| * asym_pct within 16 bits
  * (ridge_pct <= 100, the checked range; asym_pct <= 257, the default 150). */
-static bool lane_gray_setup(const symline_i_linefilter *f, lane_gray *g)
+static bool lane_gray_setup(const symline_i_linefilter *f, symline_i_lane_gray *g)
 {
     g->ridge_min = (int16_t)(f->ridge_min < 1u ? 1u : (f->ridge_min < 256u ? f->ridge_min : 256u));
     g->ridge_pct = (uint16_t)f->ridge_pct;
@@ -250,9 +239,9 @@ typedef struct lp_ctx {
     uint32_t produced; /* grid rows in the ring so far */
     uint16_t cand[SL_LINE_CAND_MAX];
 #if SL_LP_LANES
-    lane_gray lg;   /* the exact gray test in 16-bit lanes */
-    bool lanes;     /* the lanes decide this pass's interior candidates (m = 3) */
-    bool lanes_row; /* ... and those of the row at hand */
+    symline_i_lane_gray lg; /* the exact gray test in 16-bit lanes */
+    bool lanes;             /* the lanes decide this pass's interior candidates (m = 3) */
+    bool lanes_row;         /* ... and those of the row at hand */
 #endif
 } lp_ctx;
 
@@ -346,64 +335,6 @@ static SL_ALWAYS_INLINE uint32_t s_point(lp_ctx *c, uint32_t x, bool along)
 }
 
 #if SL_LP_LANES
-/* |a - b| in byte lanes (max - min), widened. */
-static SL_ALWAYS_INLINE uint16_t absdiff(uint8_t a, uint8_t b)
-{
-    const uint8_t hi = a > b ? a : b, lo = a > b ? b : a;
-    return (uint8_t)(hi - lo);
-}
-
-/* The energy at m = 3 from the pairs' differences: 3 d1^2 + 2 d2^2 + d3^2
- * (energy_at()'s sum of partial sums), in 16 x 16 -> 32-bit products, which
- * SSE2 and NEON have (a 32-bit lane multiply SSE2 has not). */
-static SL_ALWAYS_INLINE uint32_t energy_m3(uint16_t d1, uint16_t d2, uint16_t d3)
-{
-    return (uint32_t)d1 * (uint16_t)(3u * d1) + (uint32_t)d2 * (uint16_t)(d2 + d2) +
-           (uint32_t)d3 * d3;
-}
-
-/* The code of a lane that passed the byte test, from its energies E(i-1),
- * E(i), E(i+1) (< 2^31: differences in signed 32 bits) and gray values c,
- * lo, hi: 0 when it fails the exact gray test or is no S point, 1 for an
- * S point, 2 for a plateau beside it that may still make one
- * (extremum_at() decides). Lanes that failed the byte test are not read. */
-static SL_ALWAYS_INLINE uint8_t lane_code(int32_t up, int32_t e, int32_t dn, uint8_t c, uint8_t lo,
-                                          uint8_t hi, const lane_gray *g)
-{
-    const int32_t du = up - e, dd = dn - e;
-    const uint16_t side = lo > hi ? lo : hi;
-    const int16_t t = (int16_t)(c - side); /* the ridge */
-    const uint16_t t100 = (uint16_t)(100u * (uint16_t)t);
-    const uint16_t gray =
-        (uint16_t)(g->paper | ((uint16_t)(t >= g->ridge_min) &
-                               (uint16_t)(t100 >= (uint16_t)(c * g->ridge_pct)) &
-                               (uint16_t)(t100 >= (uint16_t)(absdiff(lo, hi) * g->asym_pct))));
-    /* both neighbours at least E(i): maybe S; both above: S */
-    const uint32_t maybe = (uint32_t)((du | dd) >= 0), s = (uint32_t)(((du - 1) | (dd - 1)) >= 0);
-    return (uint8_t)((gray & maybe) * (2u - s));
-}
-
-/* The codes of the SL_LP_LANES entries r[0 ..] of a row whose columns run
- * down r[i + j st], j = -4 .. 4 (m = 3, k = 4): three energies per entry. */
-static SL_ALWAYS_INLINE void decide_lanes_down(const uint8_t *r, ptrdiff_t st, const lane_gray *g,
-                                               uint8_t *restrict code)
-{
-    const uint8_t *restrict m4 = r - 4 * st, *restrict m3 = r - 3 * st, *restrict m2 = r - 2 * st;
-    const uint8_t *restrict m1 = r - st, *restrict p0 = r, *restrict p1 = r + st;
-    const uint8_t *restrict p2 = r + 2 * st, *restrict p3 = r + 3 * st, *restrict p4 = r + 4 * st;
-    const lane_gray gl = *g;
-    uint32_t i;
-    for (i = 0; i < SL_LP_LANES; i++) {
-        const int32_t up =
-            (int32_t)energy_m3(absdiff(m2[i], p0[i]), absdiff(m3[i], p1[i]), absdiff(m4[i], p2[i]));
-        const int32_t e =
-            (int32_t)energy_m3(absdiff(m1[i], p1[i]), absdiff(m2[i], p2[i]), absdiff(m3[i], p3[i]));
-        const int32_t dn =
-            (int32_t)energy_m3(absdiff(p0[i], p2[i]), absdiff(m1[i], p3[i]), absdiff(m2[i], p4[i]));
-        code[i] = lane_code(up, e, dn, p0[i], m4[i], p4[i], &gl);
-    }
-}
-
 /* Candidates within one block of lanes that make it worth its cost, about
  * that of this many candidates decided one at a time. */
 #define SL_LP_BLOCK_MIN 4u
@@ -427,7 +358,7 @@ static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
         } else if (i + SL_LP_BLOCK_MIN - 1u < k && cand[i + SL_LP_BLOCK_MIN - 1u] < x + lanes) {
             x0 = x < last ? x : last;
             end = x0 + lanes;
-            decide_lanes_down(c->c + x0, c->l.step, &c->lg, code);
+            symline_i_lanes_down(c->c + x0, c->l.step, &c->lg, code);
             s = code[x - x0];
         } else {
             s = gray_ok(c->f, c->c[x], c->lo[x], c->hi[x]) != 0u ? 2u : 0u; /* alone */
