@@ -239,7 +239,8 @@ typedef struct lp_ctx {
     uint32_t produced; /* grid rows in the ring so far */
     uint16_t cand[SL_LINE_CAND_MAX];
 #if SL_LP_LANES
-    symline_i_lane_gray lg; /* the exact gray test in 16-bit lanes */
+    symline_i_lane_gray lg; /* the exact gray test after the byte test */
+    bool gray_rest;         /* lg holds this pass's filter */
     bool lanes;             /* the lanes decide this pass's interior candidates (m = 3) */
     bool lanes_row;         /* ... and those of the row at hand */
 #endif
@@ -361,7 +362,8 @@ static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
             symline_i_lanes_down(c->c + x0, c->l.step, &c->lg, code);
             s = code[x - x0];
         } else {
-            s = gray_ok(c->f, c->c[x], c->lo[x], c->hi[x]) != 0u ? 2u : 0u; /* alone */
+            /* alone */
+            s = symline_i_lane_gray_ok(&c->lg, c->c[x], c->lo[x], c->hi[x]) != 0u ? 2u : 0u;
         }
         if (s > 1u) {
             s = s_point(c, x, false);
@@ -391,10 +393,21 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
     } else
 #endif
     {
-        for (i = 0; i < k; i++) {
-            const uint32_t j = cand[i];
-            cand[kg] = (uint16_t)(dk + j);
-            kg += gray_ok(c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
+#if SL_LP_LANES
+        if (c->gray_rest) { /* what the byte test left open */
+            for (i = 0; i < k; i++) {
+                const uint32_t j = cand[i];
+                cand[kg] = (uint16_t)(dk + j);
+                kg += symline_i_lane_gray_ok(&c->lg, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
+            }
+        } else
+#endif
+        {
+            for (i = 0; i < k; i++) {
+                const uint32_t j = cand[i];
+                cand[kg] = (uint16_t)(dk + j);
+                kg += gray_ok(c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
+            }
         }
         SL_STAGE(OPERATOR);
         for (i = 0; i < kg; i++) {
@@ -557,10 +570,10 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->l.i0 = 0u;
     c->l.step = along ? 1 : (ptrdiff_t)(p->level == 0u ? img->stride : p->w);
 #if SL_LP_LANES
-    /* m = 3 (k = 4), and a row that holds a block of lanes within its
-     * interior */
-    c->lanes = lane_gray_setup(c->f, &c->lg) && p->m == 3u && p->k == 4u &&
-               c->w >= 2u * c->dk + SL_LP_LANES;
+    /* the byte test and the rest of the gray test; the blocks of lanes at
+     * m = 3 (k = 4), in a row that holds one */
+    c->gray_rest = lane_gray_setup(c->f, &c->lg);
+    c->lanes = c->gray_rest && p->m == 3u && p->k == 4u && c->w >= 2u * c->dk + SL_LP_LANES;
 #endif
     for (y = 0; y < h; y++) {
         const uint8_t *row = grid_row_at(c, y);

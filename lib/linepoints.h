@@ -77,6 +77,20 @@ static inline uint32_t symline_i_lane_energy(uint16_t d1, uint16_t d2, uint16_t 
            (uint32_t)d3 * d3;
 }
 
+/* 1 when an entry with gray values c, lo, hi that passed the byte test
+ * passes the exact gray test, else 0. */
+static inline uint16_t symline_i_lane_gray_ok(const symline_i_lane_gray *g, uint8_t c, uint8_t lo,
+                                              uint8_t hi)
+{
+    const uint16_t side = lo > hi ? lo : hi;
+    const int16_t t = (int16_t)(c - side); /* the ridge */
+    const uint16_t t100 = (uint16_t)(100u * (uint16_t)t);
+    return (uint16_t)(g->paper | ((uint16_t)(t >= g->ridge_min) &
+                                  (uint16_t)(t100 >= (uint16_t)(c * g->ridge_pct)) &
+                                  (uint16_t)(t100 >= (uint16_t)(symline_i_lane_absdiff(lo, hi) *
+                                                                g->asym_pct))));
+}
+
 /* The code of an entry from its energies E(i-1), E(i), E(i+1) (< 2^31:
  * differences in signed 32 bits) and gray values c, lo, hi: 0 when it fails
  * the rest of the gray test or is no S point, 1 for an S point, 2 for a
@@ -86,14 +100,7 @@ static inline uint8_t symline_i_lane_code(int32_t up, int32_t e, int32_t dn, uin
                                           uint8_t hi, const symline_i_lane_gray *g)
 {
     const int32_t du = up - e, dd = dn - e;
-    const uint16_t side = lo > hi ? lo : hi;
-    const int16_t t = (int16_t)(c - side); /* the ridge */
-    const uint16_t t100 = (uint16_t)(100u * (uint16_t)t);
-    const uint16_t gray =
-        (uint16_t)(g->paper |
-                   ((uint16_t)(t >= g->ridge_min) &
-                    (uint16_t)(t100 >= (uint16_t)(c * g->ridge_pct)) &
-                    (uint16_t)(t100 >= (uint16_t)(symline_i_lane_absdiff(lo, hi) * g->asym_pct))));
+    const uint16_t gray = symline_i_lane_gray_ok(g, c, lo, hi);
     /* both neighbours at least E(i): maybe S (g); both above: S; 2 g - (g & S)
      * without a 32-bit lane multiply */
     const uint8_t g8 = (uint8_t)(gray & (uint16_t)((du | dd) >= 0));
