@@ -337,8 +337,14 @@ static SL_ALWAYS_INLINE uint32_t s_point(lp_ctx *c, uint32_t x, bool along)
 
 #if SL_LP_LANES
 /* Candidates within one block of lanes that make it worth its cost, about
- * that of this many candidates decided one at a time. */
+ * that of this many candidates decided one at a time (callgrind, ex01 and
+ * field frames down the columns): 2 for a port's block of 8, 4 for the
+ * portable block of 16. */
+#ifdef SYMLINE_PORT_LANES_DOWN
+#define SL_LP_BLOCK_MIN 2u
+#else
 #define SL_LP_BLOCK_MIN 4u
+#endif
 
 /* The exact gray test and the S decision of candidates cand[0..k-1] of a
  * row down the columns (x = cand[i]): the S points' x to cand[0 ..],

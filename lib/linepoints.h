@@ -46,9 +46,15 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
  * row down the columns at radius m = 3 (k = 4), for the candidates of the
  * byte test (linefilter.h) among them: the rest of the exact gray test, the
  * energies E(y-1), E(y), E(y+1) and the S decision (linepoints.c, speed
- * builds with vector lanes).
+ * builds with vector lanes). Eight with a port's version (one step of
+ * x86/linepoints_sse2.c; the candidates of a block are few), else sixteen:
+ * the compiler vectorises the byte lanes of the portable loop at 16.
  */
+#ifdef SYMLINE_PORT_LANES_DOWN
+#define SYMLINE_LANES_DOWN 8u
+#else
 #define SYMLINE_LANES_DOWN 16u
+#endif
 
 /* What symline_i_linefilter_gray() asks beyond the byte test, for 16-bit
  * lanes. The byte test is exact on min_gray <= 255 and side_max; of the

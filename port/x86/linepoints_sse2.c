@@ -6,12 +6,14 @@
  * the portable lane loop, with the same codes
  * (tests/core/test_linepoints_simd.c compares them):
  *
- * symline_i_lanes_down() for symline_i_lanes_down_c(): eight entries a
- * step in 16-bit lanes. The energy's weighted squares 3 d1^2 + 2 d2^2 are
- * one pmaddwd of (d1, d2) by (3 d1, 2 d2) per pair of entries, d3^2 another:
- * the compiler's version of the lane loop widens every product to 32 bits
- * on its own (pmullw, pmulhuw, two unpacks) and, with sixteen entries in
- * 32-bit lanes, spills registers.
+ * symline_i_lanes_down() for symline_i_lanes_down_c(): the block's eight
+ * entries (SYMLINE_LANES_DOWN with this port) in 16-bit lanes. The
+ * energy's weighted squares 3 d1^2 + 2 d2^2 are one pmaddwd of (d1, d2) by
+ * (3 d1, 2 d2) per pair of entries, d3^2 another: the compiler's version of
+ * the lane loop widens every product to 32 bits on its own (pmullw,
+ * pmulhuw, two unpacks) and, with sixteen entries in 32-bit lanes, spills
+ * registers; with eight it does not vectorise the byte loads. Blocks of
+ * eight waste fewer lanes on entries that are no candidates.
  */
 #include <emmintrin.h>
 
@@ -90,7 +92,6 @@ void symline_i_lanes_down(const uint8_t *r, ptrdiff_t st, const symline_i_lane_g
     const __m128i rmin1 = _mm_set1_epi16((short)(g->ridge_min - 1));
     const __m128i rp = _mm_set1_epi16((short)g->ridge_pct), ap = _mm_set1_epi16((short)g->asym_pct);
     const __m128i paper = _mm_set1_epi16((short)(g->paper != 0u ? -1 : 0));
-    _mm_storeu_si128((__m128i *)(void *)code,
-                     _mm_packus_epi16(codes8(r, st, rmin1, rp, ap, paper),
-                                      codes8(r + 8, st, rmin1, rp, ap, paper)));
+    _mm_storel_epi64((__m128i *)(void *)code,
+                     _mm_packus_epi16(codes8(r, st, rmin1, rp, ap, paper), _mm_setzero_si128()));
 }
