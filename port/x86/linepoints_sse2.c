@@ -7,9 +7,9 @@
  * (tests/core/test_linepoints_simd.c compares them):
  *
  * symline_i_lanes_down() for symline_i_lanes_down_c(): the block's eight
- * entries (SYMLINE_LANES_DOWN with this port) in 16-bit lanes. The
- * energy's weighted squares 3 d1^2 + 2 d2^2 are one pmaddwd of (d1, d2) by
- * (3 d1, 2 d2) per pair of entries, d3^2 another: the compiler's version of
+ * entries (SYMLINE_LANES_DOWN with this port) in 16-bit lanes. The energy
+ * 3 d1^2 + 2 d2^2 + d3^2 is two pmaddwd per four entries, squares of
+ * (d1, d2) and (d1, d3) summed in pairs: the compiler's version of
  * the lane loop widens every product to 32 bits on its own (pmullw,
  * pmulhuw, two unpacks) and, with sixteen entries in 32-bit lanes, spills
  * registers; with eight it does not vectorise the byte loads. Blocks of
@@ -26,18 +26,15 @@ static inline __m128i load8(const uint8_t *p)
                              _mm_setzero_si128());
 }
 
-/* 3 d1^2 + 2 d2^2 + d3^2 of eight entries (|d| <= 255 in 16-bit lanes):
+/* 3 d1^2 + 2 d2^2 + d3^2 of eight entries (|d| <= 255 in 16-bit lanes) as
+ * 2 (d1^2 + d2^2) + (d1^2 + d3^2), each sum one pmaddwd per four entries:
  * entries 0-3 to *lo, 4-7 to *hi. */
 static inline void energy8(__m128i d1, __m128i d2, __m128i d3, __m128i *lo, __m128i *hi)
 {
-    const __m128i w1 = _mm_add_epi16(_mm_add_epi16(d1, d1), d1);
-    const __m128i w2 = _mm_add_epi16(d2, d2);
-    const __m128i z = _mm_setzero_si128();
-    const __m128i c0 = _mm_unpacklo_epi16(d3, z), c1 = _mm_unpackhi_epi16(d3, z);
-    *lo = _mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi16(d1, d2), _mm_unpacklo_epi16(w1, w2)),
-                        _mm_madd_epi16(c0, c0));
-    *hi = _mm_add_epi32(_mm_madd_epi16(_mm_unpackhi_epi16(d1, d2), _mm_unpackhi_epi16(w1, w2)),
-                        _mm_madd_epi16(c1, c1));
+    const __m128i a0 = _mm_unpacklo_epi16(d1, d2), a1 = _mm_unpackhi_epi16(d1, d2);
+    const __m128i b0 = _mm_unpacklo_epi16(d1, d3), b1 = _mm_unpackhi_epi16(d1, d3);
+    *lo = _mm_add_epi32(_mm_slli_epi32(_mm_madd_epi16(a0, a0), 1), _mm_madd_epi16(b0, b0));
+    *hi = _mm_add_epi32(_mm_slli_epi32(_mm_madd_epi16(a1, a1), 1), _mm_madd_epi16(b1, b1));
 }
 
 /* All ones in the 16-bit lanes where the sign of v | w is set (as 32-bit
