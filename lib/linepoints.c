@@ -6,10 +6,11 @@
  * that passes the line filter. The filter's gray-value tests need no
  * energies, and on field frames only 1 to 5 grid pixels in 100 pass them,
  * so each grid row is first searched with the byte test (whole rows, byte
- * lanes) and energies are computed at those candidates alone, where the
- * extremum is decided exactly by the run rule of docs/algorithm.md: the
- * points are those the whole energy and extrema images would give
- * (tests/detect/test_linepoints.c compares them).
+ * lanes) and energies are computed at those candidates alone (down the
+ * columns, in the speed builds, for blocks of neighbouring candidates at
+ * once), where the extremum is decided exactly by the run rule of
+ * docs/algorithm.md: the points are those the whole energy and extrema
+ * images would give (tests/detect/test_linepoints.c compares them).
  *
  * Vertical axis (symmetry along rows): every grid row is complete on its own.
  * Horizontal axis (symmetry down the columns): a candidate of row y reads
@@ -194,17 +195,19 @@ static bool a_near(const line_view *l, uint32_t i, uint32_t d)
 
 /*
  * The decision in vector lanes, where the compiler has them (SSE2, NEON)
- * and the build optimises for speed, at the default radius m = 3: the
- * candidates of a row come in runs of neighbours (down the columns a line
- * across them gives long runs of consecutive x; along the rows its width),
- * so for SL_LP_LANES consecutive entries at once the exact gray test,
- * E(i-1), E(i), E(i+1) and the S decision are computed in a loop over the
- * entries the compiler vectorises, instead of one candidate at a time with
- * strided loads. Scalar cores (Cortex-M) keep the candidate-wise decision:
- * there the lanes would be work on entries that are no candidates.
+ * and the build optimises for speed, at the default radius m = 3: down the
+ * columns a line across them gives runs of consecutive candidates in a
+ * row, so a block of SL_LP_LANES neighbouring entries gets the rest of the
+ * exact gray test, E(y-1), E(y), E(y+1) and the S decision at once
+ * (symline_i_lanes_down(), linepoints.h: a loop over the entries the
+ * compiler vectorises, or a port's version), instead of one candidate at a
+ * time with strided loads. Along the rows the runs are a line's width, a
+ * few entries: blocks there saved nothing (callgrind), the candidate-wise
+ * batch stays. Scalar cores (Cortex-M) keep it too: there the lanes would
+ * be work on entries that are no candidates.
  */
 #if SL_FOR_SPEED && (defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__))
-#define SL_LP_LANES SYMLINE_LANES_DOWN
+#define SL_LP_LANES SL_LANES_DOWN
 #else
 #define SL_LP_LANES 0u
 #endif

@@ -42,7 +42,7 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
                                  uint32_t *row_start, uint32_t *dropped);
 
 /*
- * The decision of a block of SYMLINE_LANES_DOWN neighbouring entries of a
+ * The decision of a block of SL_LANES_DOWN neighbouring entries of a
  * row down the columns at radius m = 3 (k = 4), for the candidates of the
  * byte test (linefilter.h) among them: the rest of the exact gray test, the
  * energies E(y-1), E(y), E(y+1) and the S decision (linepoints.c, speed
@@ -51,9 +51,9 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
  * the compiler vectorises the byte lanes of the portable loop at 16.
  */
 #ifdef SYMLINE_PORT_LANES_DOWN
-#define SYMLINE_LANES_DOWN 8u
+#define SL_LANES_DOWN 8u
 #else
-#define SYMLINE_LANES_DOWN 16u
+#define SL_LANES_DOWN 16u
 #endif
 
 /* What symline_i_linefilter_gray() asks beyond the byte test, for 16-bit
@@ -115,7 +115,7 @@ static inline uint8_t symline_i_lane_code(int32_t up, int32_t e, int32_t dn, uin
 }
 
 /*
- * The codes (symline_i_lane_code()) of the SYMLINE_LANES_DOWN entries r[0 ..]
+ * The codes (symline_i_lane_code()) of the SL_LANES_DOWN entries r[0 ..]
  * of a row whose columns run down r[i + j st], j = -4 .. 4, to code[0 ..]:
  * three energies per entry in a loop over the entries that the compiler
  * vectorises. symline_i_lanes_down_c() is the portable reference;
@@ -131,7 +131,7 @@ static inline void symline_i_lanes_down_c(const uint8_t *r, ptrdiff_t st,
     const uint8_t *restrict p2 = r + 2 * st, *restrict p3 = r + 3 * st, *restrict p4 = r + 4 * st;
     const symline_i_lane_gray gl = *g;
     uint32_t i;
-    for (i = 0; i < SYMLINE_LANES_DOWN; i++) {
+    for (i = 0; i < SL_LANES_DOWN; i++) {
         const int32_t up = (int32_t)symline_i_lane_energy(symline_i_lane_absdiff(m2[i], p0[i]),
                                                           symline_i_lane_absdiff(m3[i], p1[i]),
                                                           symline_i_lane_absdiff(m4[i], p2[i]));

@@ -7,7 +7,7 @@
  * (tests/core/test_linepoints_simd.c compares them):
  *
  * symline_i_lanes_down() for symline_i_lanes_down_c(): the block's eight
- * entries (SYMLINE_LANES_DOWN with this port) in 16-bit lanes. The energy
+ * entries (SL_LANES_DOWN with this port) in 16-bit lanes. The energy
  * 3 d1^2 + 2 d2^2 + d3^2 is two pmaddwd per four entries, squares of
  * (d1, d2) and (d1, d3) summed in pairs: the compiler's version of
  * the lane loop widens every product to 32 bits on its own (pmullw,

@@ -22,7 +22,7 @@
 #include "linepoints.h"
 #include "testutil.h"
 
-#define LANES SYMLINE_LANES_DOWN
+#define LANES SL_LANES_DOWN
 #define ROWS 9u /* rows y - 4 .. y + 4 */
 #define STRIDE_MAX (LANES + 24u)
 
