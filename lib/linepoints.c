@@ -6,10 +6,11 @@
  * that passes the line filter. The filter's gray-value tests need no
  * energies, and on field frames only 1 to 5 grid pixels in 100 pass them,
  * so each grid row is first searched with the byte test (whole rows, byte
- * lanes) and energies are computed at those candidates alone, where the
- * extremum is decided exactly by the run rule of docs/algorithm.md: the
- * points are those the whole energy and extrema images would give
- * (tests/detect/test_linepoints.c compares them).
+ * lanes) and energies are computed at those candidates alone (down the
+ * columns, in the speed builds, for blocks of neighbouring candidates at
+ * once), where the extremum is decided exactly by the run rule of
+ * docs/algorithm.md: the points are those the whole energy and extrema
+ * images would give (tests/detect/test_linepoints.c compares them).
  *
  * Vertical axis (symmetry along rows): every grid row is complete on its own.
  * Horizontal axis (symmetry down the columns): a candidate of row y reads
@@ -192,6 +193,39 @@ static bool a_near(const line_view *l, uint32_t i, uint32_t d)
     return false;
 }
 
+/*
+ * The decision in vector lanes, where the compiler has them (SSE2, NEON)
+ * and the build optimises for speed, at the default radius m = 3: down the
+ * columns a line across them gives runs of consecutive candidates in a
+ * row, so a block of SL_LP_LANES neighbouring entries gets the rest of the
+ * exact gray test, E(y-1), E(y), E(y+1) and the S decision at once
+ * (symline_i_lanes_down(), linepoints.h: a loop over the entries the
+ * compiler vectorises, or a port's version), instead of one candidate at a
+ * time with strided loads. Along the rows the runs are a line's width, a
+ * few entries: blocks there saved nothing (callgrind), the candidate-wise
+ * batch stays. Scalar cores (Cortex-M) keep it too: there the lanes would
+ * be work on entries that are no candidates.
+ */
+#if SL_FOR_SPEED && (defined(__SSE2__) || defined(__ARM_NEON) || defined(__ARM_NEON__))
+#define SL_LP_LANES SL_LANES_DOWN
+#else
+#define SL_LP_LANES 0u
+#endif
+
+#if SL_LP_LANES
+/* Whether the lanes can take the filter: the byte test exact on min_gray,
+ * and 100 (c - side), c * ridge_pct and |lo - hi| * asym_pct within 16 bits
+ * (ridge_pct <= 100, the checked range; asym_pct <= 257, the default 150). */
+static bool lane_gray_setup(const symline_i_linefilter *f, symline_i_lane_gray *g)
+{
+    g->ridge_min = (int16_t)(f->ridge_min < 1u ? 1u : (f->ridge_min < 256u ? f->ridge_min : 256u));
+    g->ridge_pct = (uint16_t)f->ridge_pct;
+    g->asym_pct = (uint16_t)f->asym_pct;
+    g->paper = (uint16_t)(f->kind == SYMLINE_FILTER_PAPER);
+    return f->min_gray <= 255u && f->ridge_pct <= 100u && f->asym_pct <= 257u;
+}
+#endif
+
 /* The state of one pass's collection, in the workspace (not on the stack:
  * the deepest call chain of the detector runs through here). */
 typedef struct lp_ctx {
@@ -207,6 +241,12 @@ typedef struct lp_ctx {
     uint8_t *gray;     /* the coarse grid's row, or ring of rows */
     uint32_t produced; /* grid rows in the ring so far */
     uint16_t cand[SL_LINE_CAND_MAX];
+#if SL_LP_LANES
+    symline_i_lane_gray lg; /* the exact gray test after the byte test */
+    bool gray_rest;         /* lg holds this pass's filter */
+    bool lanes;             /* the lanes decide this pass's interior candidates (m = 3) */
+    bool lanes_row;         /* ... and those of the row at hand */
+#endif
 } lp_ctx;
 
 /* In the speed builds each decision is copied into its callers (one copy per
@@ -278,6 +318,72 @@ static SL_ALWAYS_INLINE uint32_t gray_ok(const symline_i_linefilter *f, uint32_t
            (uint32_t)(c - side >= need);
 }
 
+/* Whether candidate x of row y, which passed the exact gray test, is an S
+ * point along the line through it (a plateau on extremum_at()'s slow
+ * path): 1 or 0. */
+static SL_ALWAYS_INLINE uint32_t s_point(lp_ctx *c, uint32_t x, bool along)
+{
+    const uint32_t at = along ? x : c->y;
+    uint32_t up = 0u, e = 0u, dn = 0u, s;
+    if (!along) {
+        c->l.c0 = c->c + x; /* down column x from row y */
+    }
+    if (at != 0u && at + 1u < c->l.n) {
+        energies3(&c->l, at, &up, &e, &dn, true);
+    }
+    s = (uint32_t)(up > e) & (uint32_t)(dn > e);
+    if (up == e || dn == e) {
+        s = (uint32_t)extremum_at(&c->l, at, true);
+    }
+    return s;
+}
+
+#if SL_LP_LANES
+/* Candidates within one block of lanes that make it worth its cost, about
+ * that of this many candidates decided one at a time (callgrind, ex01 and
+ * field frames down the columns): 2 for a port's block of 8, 4 for the
+ * portable block of 16. */
+#ifdef SYMLINE_PORT_LANES_DOWN
+#define SL_LP_BLOCK_MIN 2u
+#else
+#define SL_LP_BLOCK_MIN 4u
+#endif
+
+/* The exact gray test and the S decision of candidates cand[0..k-1] of a
+ * row down the columns (x = cand[i]): the S points' x to cand[0 ..],
+ * returns how many. A candidate with SL_LP_BLOCK_MIN - 1 more within
+ * SL_LP_LANES entries starts a block of lanes, which they share; the others
+ * are decided one at a time. */
+static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
+{
+    const uint32_t lanes = SL_LP_LANES, last = c->w - lanes; /* the last block start */
+    uint16_t *cand = c->cand;
+    uint8_t code[SL_LP_LANES];
+    uint32_t i, ks = 0u, x0 = 0u, end = 0u;
+    for (i = 0; i < k; i++) {
+        const uint32_t x = cand[i];
+        uint32_t s;
+        if (x < end) {
+            s = code[x - x0];
+        } else if (i + SL_LP_BLOCK_MIN - 1u < k && cand[i + SL_LP_BLOCK_MIN - 1u] < x + lanes) {
+            x0 = x < last ? x : last;
+            end = x0 + lanes;
+            symline_i_lanes_down(c->c + x0, c->l.step, &c->lg, code);
+            s = code[x - x0];
+        } else {
+            /* alone */
+            s = symline_i_lane_gray_ok(&c->lg, c->c[x], c->lo[x], c->hi[x]) != 0u ? 2u : 0u;
+        }
+        if (s > 1u) {
+            s = s_point(c, x, false);
+        }
+        cand[ks] = (uint16_t)x;
+        ks += s;
+    }
+    return ks;
+}
+#endif
+
 /* The candidates cand[0..k-1] of row y (interior entries: x = dk + cand[i])
  * in three steps over the batch: the exact gray test, then the energies and
  * the S decision (a plateau on extremum_at()'s slow path), then the points.
@@ -289,27 +395,35 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
     const uint32_t dk = c->dk;
     uint16_t *cand = c->cand;
     uint32_t i, kg = 0u, ks = 0u;
-    for (i = 0; i < k; i++) {
-        const uint32_t j = cand[i];
-        cand[kg] = (uint16_t)(dk + j);
-        kg += gray_ok(c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
-    }
-    SL_STAGE(OPERATOR);
-    for (i = 0; i < kg; i++) {
-        const uint32_t x = cand[i], at = along ? x : c->y;
-        uint32_t up = 0u, e = 0u, dn = 0u, s;
-        if (!along) {
-            c->l.c0 = c->c + x; /* down column x from row y */
+#if SL_LP_LANES
+    if (c->lanes_row) {
+        SL_STAGE(OPERATOR);
+        ks = decide_batch_lanes(c, k);
+    } else
+#endif
+    {
+#if SL_LP_LANES
+        if (c->gray_rest) { /* what the byte test left open */
+            for (i = 0; i < k; i++) {
+                const uint32_t j = cand[i];
+                cand[kg] = (uint16_t)(dk + j);
+                kg += symline_i_lane_gray_ok(&c->lg, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
+            }
+        } else
+#endif
+        {
+            for (i = 0; i < k; i++) {
+                const uint32_t j = cand[i];
+                cand[kg] = (uint16_t)(dk + j);
+                kg += gray_ok(c->f, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
+            }
         }
-        if (at != 0u && at + 1u < c->l.n) {
-            energies3(&c->l, at, &up, &e, &dn, true);
+        SL_STAGE(OPERATOR);
+        for (i = 0; i < kg; i++) {
+            const uint32_t x = cand[i];
+            cand[ks] = (uint16_t)x;
+            ks += s_point(c, x, along);
         }
-        s = (uint32_t)(up > e) & (uint32_t)(dn > e);
-        if (up == e || dn == e) {
-            s = (uint32_t)extremum_at(&c->l, at, true);
-        }
-        cand[ks] = (uint16_t)x;
-        ks += s;
     }
     SL_STAGE(FILTER);
     for (i = 0; i < ks; i++) {
@@ -348,6 +462,10 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         symline_i_prefilter pf;
         uint32_t at = 0u;
         symline_i_prefilter_setup(c->f, &pf);
+#if SL_LP_LANES
+        /* down the columns: rows y - 4 .. y + 4 held */
+        c->lanes_row = c->lanes && !along && c->y >= 4u && c->y + 4u < c->l.n;
+#endif
         while (at < len) {
             decide_batch(c, symline_i_line_cand(&pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
@@ -460,6 +578,12 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->l.lag = p->lag;
     c->l.i0 = 0u;
     c->l.step = along ? 1 : (ptrdiff_t)(p->level == 0u ? img->stride : p->w);
+#if SL_LP_LANES
+    /* the byte test and the rest of the gray test; the blocks of lanes at
+     * m = 3 (k = 4), in a row that holds one */
+    c->gray_rest = lane_gray_setup(c->f, &c->lg);
+    c->lanes = c->gray_rest && p->m == 3u && p->k == 4u && c->w >= 2u * c->dk + SL_LP_LANES;
+#endif
     for (y = 0; y < h; y++) {
         const uint8_t *row = grid_row_at(c, y);
         c->c = row;

@@ -41,4 +41,114 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
                                  size_t ws_size, symline_point *pts, uint32_t cap, uint32_t *n,
                                  uint32_t *row_start, uint32_t *dropped);
 
+/*
+ * The decision of a block of SL_LANES_DOWN neighbouring entries of a
+ * row down the columns at radius m = 3 (k = 4), for the candidates of the
+ * byte test (linefilter.h) among them: the rest of the exact gray test, the
+ * energies E(y-1), E(y), E(y+1) and the S decision (linepoints.c, speed
+ * builds with vector lanes). Eight with a port's version (one step of
+ * x86/linepoints_sse2.c; the candidates of a block are few), else sixteen:
+ * the compiler vectorises the byte lanes of the portable loop at 16.
+ */
+#ifdef SYMLINE_PORT_LANES_DOWN
+#define SL_LANES_DOWN 8u
+#else
+#define SL_LANES_DOWN 16u
+#endif
+
+/* What symline_i_linefilter_gray() asks beyond the byte test, for 16-bit
+ * lanes. The byte test is exact on min_gray <= 255 and side_max; of the
+ * contrast it keeps c >= side + max(ridge_min, 1) only up to 255; the
+ * percent tests c - side >= ceil(v * pct / 100) are, for integers,
+ * 100 (c - side) >= v * pct: no division. */
+typedef struct symline_i_lane_gray {
+    int16_t ridge_min;  /* c - side >= this, 1 .. 256 (256: never) */
+    uint16_t ridge_pct; /* <= 100 */
+    uint16_t asym_pct;  /* <= 257: |lo - hi| * asym_pct fits 16 bits */
+    uint16_t paper;     /* 1: the byte test is all */
+} symline_i_lane_gray;
+
+static inline uint16_t symline_i_lane_absdiff(uint8_t a, uint8_t b)
+{
+    const uint8_t hi = a > b ? a : b, lo = a > b ? b : a;
+    return (uint8_t)(hi - lo);
+}
+
+/* The energy at m = 3 from the pairs' differences: 3 d1^2 + 2 d2^2 + d3^2
+ * (the sum of partial sums of docs/algorithm.md), in 16 x 16 -> 32-bit
+ * products, which SSE2 and NEON have (a 32-bit lane multiply SSE2 has not). */
+static inline uint32_t symline_i_lane_energy(uint16_t d1, uint16_t d2, uint16_t d3)
+{
+    return (uint32_t)d1 * (uint16_t)(3u * d1) + (uint32_t)d2 * (uint16_t)(d2 + d2) +
+           (uint32_t)d3 * d3;
+}
+
+/* 1 when an entry with gray values c, lo, hi that passed the byte test
+ * passes the exact gray test, else 0. */
+static inline uint16_t symline_i_lane_gray_ok(const symline_i_lane_gray *g, uint8_t c, uint8_t lo,
+                                              uint8_t hi)
+{
+    const uint16_t side = lo > hi ? lo : hi;
+    const int16_t t = (int16_t)(c - side); /* the ridge */
+    const uint16_t t100 = (uint16_t)(100u * (uint16_t)t);
+    return (uint16_t)(g->paper | ((uint16_t)(t >= g->ridge_min) &
+                                  (uint16_t)(t100 >= (uint16_t)(c * g->ridge_pct)) &
+                                  (uint16_t)(t100 >= (uint16_t)(symline_i_lane_absdiff(lo, hi) *
+                                                                g->asym_pct))));
+}
+
+/* The code of an entry from its energies E(i-1), E(i), E(i+1) (< 2^31:
+ * differences in signed 32 bits) and gray values c, lo, hi: 0 when it fails
+ * the rest of the gray test or is no S point, 1 for an S point, 2 for a
+ * plateau beside it that may still make one (the caller decides). Exact for
+ * entries that passed the byte test; for the others only defined. */
+static inline uint8_t symline_i_lane_code(int32_t up, int32_t e, int32_t dn, uint8_t c, uint8_t lo,
+                                          uint8_t hi, const symline_i_lane_gray *g)
+{
+    const int32_t du = up - e, dd = dn - e;
+    const uint16_t gray = symline_i_lane_gray_ok(g, c, lo, hi);
+    /* both neighbours at least E(i): maybe S (g); both above: S; 2 g - (g & S)
+     * without a 32-bit lane multiply */
+    const uint8_t g8 = (uint8_t)(gray & (uint16_t)((du | dd) >= 0));
+    const uint8_t s8 = (uint8_t)(((du - 1) | (dd - 1)) >= 0);
+    return (uint8_t)(g8 + g8 - (g8 & s8));
+}
+
+/*
+ * The codes (symline_i_lane_code()) of the SL_LANES_DOWN entries r[0 ..]
+ * of a row whose columns run down r[i + j st], j = -4 .. 4, to code[0 ..]:
+ * three energies per entry in a loop over the entries that the compiler
+ * vectorises. symline_i_lanes_down_c() is the portable reference;
+ * symline_i_lanes_down() the build's choice: a version from port/
+ * (SYMLINE_PORT_LANES_DOWN, CMake option SYMLINE_SIMD) with the same
+ * codes, or the reference.
+ */
+static inline void symline_i_lanes_down_c(const uint8_t *r, ptrdiff_t st,
+                                          const symline_i_lane_gray *g, uint8_t *restrict code)
+{
+    const uint8_t *restrict m4 = r - 4 * st, *restrict m3 = r - 3 * st, *restrict m2 = r - 2 * st;
+    const uint8_t *restrict m1 = r - st, *restrict p0 = r, *restrict p1 = r + st;
+    const uint8_t *restrict p2 = r + 2 * st, *restrict p3 = r + 3 * st, *restrict p4 = r + 4 * st;
+    const symline_i_lane_gray gl = *g;
+    uint32_t i;
+    for (i = 0; i < SL_LANES_DOWN; i++) {
+        const int32_t up = (int32_t)symline_i_lane_energy(symline_i_lane_absdiff(m2[i], p0[i]),
+                                                          symline_i_lane_absdiff(m3[i], p1[i]),
+                                                          symline_i_lane_absdiff(m4[i], p2[i]));
+        const int32_t e = (int32_t)symline_i_lane_energy(symline_i_lane_absdiff(m1[i], p1[i]),
+                                                         symline_i_lane_absdiff(m2[i], p2[i]),
+                                                         symline_i_lane_absdiff(m3[i], p3[i]));
+        const int32_t dn = (int32_t)symline_i_lane_energy(symline_i_lane_absdiff(p0[i], p2[i]),
+                                                          symline_i_lane_absdiff(m1[i], p3[i]),
+                                                          symline_i_lane_absdiff(m2[i], p4[i]));
+        code[i] = symline_i_lane_code(up, e, dn, p0[i], m4[i], p4[i], &gl);
+    }
+}
+#ifdef SYMLINE_PORT_LANES_DOWN
+void symline_i_lanes_down(const uint8_t *r, ptrdiff_t st, const symline_i_lane_gray *g,
+                          uint8_t *code);
+#else
+#define symline_i_lanes_down symline_i_lanes_down_c
+#endif
+
 #endif /* SYMLINE_LIB_LINEPOINTS_H */

@@ -3,9 +3,9 @@
  * Line points of one pass (lib/linepoints.c): the strip processing over a
  * ring of rows gives exactly the points of a plain full-frame path (whole
  * grid image, whole energy and extrema maps, the same filter rule), for both
- * axes, three scales, both filters and two radii, on a synthetic and a real
- * frame and on one of flat bands (plateaus); nothing is written outside the
- * workspace.
+ * axes, three scales, both filters, several contrast limits and two radii,
+ * on a synthetic and a real frame and on one of flat bands (plateaus);
+ * nothing is written outside the workspace.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -172,6 +172,19 @@ static void strip_identity_on(const symline_image *img)
                              level);
             }
         }
+    }
+    /* the contrast filter's percent tests and limits, down the columns
+     * (where the speed builds decide blocks of candidates in lanes) and
+     * along the rows */
+    for (f = 0; f < 3u; f++) {
+        static const uint32_t pct[3] = {30u, 0u, 5u}, asym[3] = {40u, 257u, 0u},
+                              min[3] = {0u, 9u, 1u};
+        symline_config_default(&cfg);
+        cfg.contrast_pct = pct[f];
+        cfg.contrast_asym_pct = asym[f];
+        cfg.contrast_min = min[f];
+        compare_pass(img, &cfg, SYMLINE_AXIS_HORIZONTAL, f);
+        compare_pass(img, &cfg, SYMLINE_AXIS_VERTICAL, 0);
     }
     /* another radius */
     symline_config_default(&cfg);

@@ -1,0 +1,94 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * The line points' decision of a block of entries down the columns
+ * (lib/linepoints.h) with SSE2 intrinsics (x86-64 baseline), selected at
+ * build time (CMake option SYMLINE_SIMD, port/CMakeLists.txt) in place of
+ * the portable lane loop, with the same codes
+ * (tests/core/test_linepoints_simd.c compares them):
+ *
+ * symline_i_lanes_down() for symline_i_lanes_down_c(): the block's eight
+ * entries (SL_LANES_DOWN with this port) in 16-bit lanes. The energy
+ * 3 d1^2 + 2 d2^2 + d3^2 is two pmaddwd per four entries, squares of
+ * (d1, d2) and (d1, d3) summed in pairs: the compiler's version of
+ * the lane loop widens every product to 32 bits on its own (pmullw,
+ * pmulhuw, two unpacks) and, with sixteen entries in 32-bit lanes, spills
+ * registers; with eight it does not vectorise the byte loads. Blocks of
+ * eight waste fewer lanes on entries that are no candidates.
+ */
+#include <emmintrin.h>
+
+#include "linepoints.h"
+
+/* Eight gray values from p, in 16-bit lanes. */
+static inline __m128i load8(const uint8_t *p)
+{
+    return _mm_unpacklo_epi8(_mm_loadl_epi64((const __m128i *)(const void *)p),
+                             _mm_setzero_si128());
+}
+
+/* 3 d1^2 + 2 d2^2 + d3^2 of eight entries (|d| <= 255 in 16-bit lanes) as
+ * 2 (d1^2 + d2^2) + (d1^2 + d3^2), each sum one pmaddwd per four entries:
+ * entries 0-3 to *lo, 4-7 to *hi. */
+static inline void energy8(__m128i d1, __m128i d2, __m128i d3, __m128i *lo, __m128i *hi)
+{
+    const __m128i a0 = _mm_unpacklo_epi16(d1, d2), a1 = _mm_unpackhi_epi16(d1, d2);
+    const __m128i b0 = _mm_unpacklo_epi16(d1, d3), b1 = _mm_unpackhi_epi16(d1, d3);
+    *lo = _mm_add_epi32(_mm_slli_epi32(_mm_madd_epi16(a0, a0), 1), _mm_madd_epi16(b0, b0));
+    *hi = _mm_add_epi32(_mm_slli_epi32(_mm_madd_epi16(a1, a1), 1), _mm_madd_epi16(b1, b1));
+}
+
+/* All ones in the 16-bit lanes where the sign of v | w is set (as 32-bit
+ * lanes lo, hi). */
+static inline __m128i negative(__m128i v_lo, __m128i w_lo, __m128i v_hi, __m128i w_hi)
+{
+    return _mm_packs_epi32(_mm_srai_epi32(_mm_or_si128(v_lo, w_lo), 31),
+                           _mm_srai_epi32(_mm_or_si128(v_hi, w_hi), 31));
+}
+
+/* The codes of eight entries r[0 .. 7], in 16-bit lanes. */
+static inline __m128i codes8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m128i rp, __m128i ap,
+                             __m128i paper)
+{
+    const __m128i m4 = load8(r - 4 * st), m3 = load8(r - 3 * st), m2 = load8(r - 2 * st);
+    const __m128i m1 = load8(r - st), p0 = load8(r), p1 = load8(r + st);
+    const __m128i p2 = load8(r + 2 * st), p3 = load8(r + 3 * st), p4 = load8(r + 4 * st);
+    const __m128i one = _mm_set1_epi32(1), z = _mm_setzero_si128();
+    __m128i up0, up1, e0, e1, dn0, dn1, du0, du1, dd0, dd1, not_maybe, not_s, side, t, t100, ok, g;
+    energy8(_mm_sub_epi16(m2, p0), _mm_sub_epi16(m3, p1), _mm_sub_epi16(m4, p2), &up0, &up1);
+    energy8(_mm_sub_epi16(m1, p1), _mm_sub_epi16(m2, p2), _mm_sub_epi16(m3, p3), &e0, &e1);
+    energy8(_mm_sub_epi16(p0, p2), _mm_sub_epi16(m1, p3), _mm_sub_epi16(m2, p4), &dn0, &dn1);
+    du0 = _mm_sub_epi32(up0, e0);
+    du1 = _mm_sub_epi32(up1, e1);
+    dd0 = _mm_sub_epi32(dn0, e0);
+    dd1 = _mm_sub_epi32(dn1, e1);
+    /* maybe S: both differences >= 0; S: both > 0 */
+    not_maybe = negative(du0, dd0, du1, dd1);
+    not_s = negative(_mm_sub_epi32(du0, one), _mm_sub_epi32(dd0, one), _mm_sub_epi32(du1, one),
+                     _mm_sub_epi32(dd1, one));
+    /* the rest of the gray test; t100 >= x (unsigned) as x -sat t100 == 0 */
+    side = _mm_max_epi16(m4, p4);
+    t = _mm_sub_epi16(p0, side);
+    t100 = _mm_mullo_epi16(t, _mm_set1_epi16(100));
+    ok = _mm_and_si128(
+        _mm_cmpgt_epi16(t, rmin1),
+        _mm_and_si128(
+            _mm_cmpeq_epi16(_mm_subs_epu16(_mm_mullo_epi16(p0, rp), t100), z),
+            _mm_cmpeq_epi16(
+                _mm_subs_epu16(_mm_mullo_epi16(_mm_sub_epi16(side, _mm_min_epi16(m4, p4)), ap),
+                               t100),
+                z)));
+    g = _mm_andnot_si128(not_maybe, _mm_or_si128(paper, ok));
+    /* 2 where g, less 1 where also S */
+    return _mm_sub_epi16(_mm_and_si128(g, _mm_set1_epi16(2)),
+                         _mm_and_si128(_mm_andnot_si128(not_s, g), _mm_set1_epi16(1)));
+}
+
+void symline_i_lanes_down(const uint8_t *r, ptrdiff_t st, const symline_i_lane_gray *g,
+                          uint8_t *code)
+{
+    const __m128i rmin1 = _mm_set1_epi16((short)(g->ridge_min - 1));
+    const __m128i rp = _mm_set1_epi16((short)g->ridge_pct), ap = _mm_set1_epi16((short)g->asym_pct);
+    const __m128i paper = _mm_set1_epi16((short)(g->paper != 0u ? -1 : 0));
+    _mm_storel_epi64((__m128i *)(void *)code,
+                     _mm_packus_epi16(codes8(r, st, rmin1, rp, ap, paper), _mm_setzero_si128()));
+}
