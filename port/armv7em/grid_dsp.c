@@ -28,8 +28,8 @@ static inline uint32_t load4(const uint8_t *p)
     return v;
 }
 
-void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
-                        uint16_t *acc, uint8_t *out)
+/* The row into out (as symline_i_grid_row() below without its twin). */
+static void row(const symline_image *img, const symline_i_pass *p, uint32_t y, uint8_t *out)
 {
     const uint32_t level = p->level, w = p->w, s = 1u << level, shift = 2u * level;
     const size_t stride = img->stride;
@@ -116,6 +116,18 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     }
     /* The rest of the row (the last 1..3 blocks at level 1): one block at a
      * time as the portable code would. */
-    symline_i_grid_blocks(src, stride, level, x, w, out);
+    symline_i_grid_blocks(src, stride, level, x, w, out, NULL);
+}
+
+void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
+                        uint16_t *acc, uint8_t *out, uint8_t *twin)
+{
+    uint32_t x;
+    row(img, p, y, out);
+    if (twin != NULL) {
+        for (x = 0; x < p->w; x++) {
+            twin[x] = out[x];
+        }
+    }
     (void)acc;
 }

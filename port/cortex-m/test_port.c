@@ -123,8 +123,8 @@ static void grid_checks(void)
                 p.h = PT_H >> level;
                 fill_gray(pt_img, sizeof pt_img, round);
                 for (y = 0; y < p.h; y++) {
-                    symline_i_grid_row(&img, &p, y, pt_acc, pt_g1);
-                    symline_i_grid_row_c(&img, &p, y, pt_acc, pt_g2);
+                    symline_i_grid_row(&img, &p, y, pt_acc, pt_g1, NULL);
+                    symline_i_grid_row_c(&img, &p, y, pt_acc, pt_g2, NULL);
                     FW_CHECK(memcmp(pt_g1, pt_g2, p.w) == 0, "grid row %lu level %u width %lu",
                              (unsigned long)y, level, (unsigned long)width);
                 }
