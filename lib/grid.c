@@ -21,11 +21,10 @@ static void pairs(const uint16_t *restrict a, size_t n, uint16_t *restrict b)
     }
 }
 
-/* The portable lane loops: all w pixels (levels 1..4), to out and twin
- * (unless NULL). acc (w 2^level entries) holds the row's pair sums, then
- * each halving after the last. */
+/* The portable lane loops: all w pixels (levels 1..4). acc (w 2^level
+ * entries) holds the row's pair sums, then each halving after the last. */
 static void lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w, uint16_t *acc,
-                  uint8_t *out, uint8_t *twin)
+                  uint8_t *out)
 {
     const uint32_t shift = 2u * level;
     uint32_t d;
@@ -47,23 +46,18 @@ static void lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
     for (x = 0; x < w; x++) {
         out[x] = (uint8_t)(((uint32_t)a[x] + ((1u << shift) >> 1)) >> shift);
     }
-    if (twin != NULL) {
-        for (x = 0; x < w; x++) {
-            twin[x] = out[x];
-        }
-    }
 }
 
 void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t y, uint16_t *acc,
-                              uint8_t *out, uint8_t *twin)
+                              uint8_t *out)
 {
     /* The width in a local: out (bytes) might alias the image's fields. */
     const uint32_t w = img->width >> level;
     const size_t stride = img->stride;
     const uint8_t *src = img->data + ((size_t)y << level) * stride;
     if (SL_FOR_SPEED && level - 1u < 4u) { /* levels 1..4 */
-        lanes(src, stride, level, w, acc, out, twin);
+        lanes(src, stride, level, w, acc, out);
         return;
     }
-    symline_i_grid_blocks(src, stride, level, 0u, w, out, twin);
+    symline_i_grid_blocks(src, stride, level, 0u, w, out);
 }

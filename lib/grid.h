@@ -12,19 +12,18 @@
 
 /* Row y of the level-`level` grid (0..SYMLINE_DETECT_MAX_LEVELS; the
  * detector reads the frame's rows themselves at level 0) into
- * out[0 .. (img->width >> level) - 1], and into twin as well unless it is
- * NULL; the frame holds rows y 2^level .. (y + 1) 2^level - 1. acc: scratch
- * of img->width uint16_t (the portable lane loops; size builds leave it
- * alone). The portable C. */
+ * out[0 .. (img->width >> level) - 1]; the frame holds rows
+ * y 2^level .. (y + 1) 2^level - 1. acc: scratch of img->width uint16_t
+ * (the portable lane loops; size builds leave it alone). The portable C. */
 void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t y, uint16_t *acc,
-                              uint8_t *out, uint8_t *twin);
+                              uint8_t *out);
 
 /* Grid pixels x0 .. w-1 of the row whose blocks start at src (frame rows
- * `stride` bytes apart), one block at a time, into out and twin (unless
- * NULL): the size builds' form, and where a port's lanes leave the last few
- * blocks of a row. Inline, so that the size builds keep the code they had. */
+ * `stride` bytes apart), one block at a time: the size builds' form, and
+ * where a port's lanes leave the last few blocks of a row. Inline, so that
+ * the size builds keep the code they had. */
 static inline void symline_i_grid_blocks(const uint8_t *src, size_t stride, uint32_t level,
-                                         uint32_t x0, uint32_t w, uint8_t *out, uint8_t *twin)
+                                         uint32_t x0, uint32_t w, uint8_t *out)
 {
     const uint32_t s = 1u << level, shift = 2u * level;
     uint32_t x, d, i;
@@ -37,7 +36,16 @@ static inline void symline_i_grid_blocks(const uint8_t *src, size_t stride, uint
             }
         }
         out[x] = (uint8_t)(sum >> shift);
-        if (twin != NULL) {
+    }
+}
+
+/* out[x0 .. w-1] to twin[x0 .. w-1] where twin is not NULL: the row's
+ * second copy where it was not stored twice. */
+static inline void symline_i_grid_twin(const uint8_t *out, uint32_t x0, uint32_t w, uint8_t *twin)
+{
+    uint32_t x;
+    if (twin != NULL) {
+        for (x = x0; x < w; x++) {
             twin[x] = out[x];
         }
     }

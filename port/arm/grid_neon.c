@@ -118,7 +118,7 @@ static uint32_t wide(const uint8_t *src, size_t stride, uint32_t level, uint32_t
 }
 
 /* The row into out and, where twin is not NULL, into twin too: the lanes
- * and the last blocks store both. */
+ * store both, the last blocks (all of them at level 5) are copied. */
 void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
                         uint16_t *acc, uint8_t *out, uint8_t *twin)
 {
@@ -131,13 +131,11 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     case 2u: x = lanes(src, stride, 2u, w, out, twin); break;
     case 3u: x = lanes(src, stride, 3u, w, out, twin); break;
     case 4u: x = lanes(src, stride, 4u, w, out, twin); break;
-    case 5u:
-        (void)wide(src, stride, 5u, w, out);
-        if (twin != NULL) {
-            memcpy(twin, out, w);
-        }
-        return;
+    case 5u: x = 0u, (void)wide(src, stride, 5u, w, out); break;
     default: symline_i_grid_row_c(img, p, y, acc, out, twin); return;
     }
-    symline_i_grid_blocks(src, stride, level, x, w, out, twin); /* at most three blocks */
+    if (level < 5u) {
+        symline_i_grid_blocks(src, stride, level, x, w, out); /* at most three blocks */
+    }
+    symline_i_grid_twin(out, x, w, twin);
 }

@@ -274,11 +274,7 @@ static SL_ALWAYS_INLINE void row(const uint8_t *src, size_t stride, uint32_t lev
                           : 0u;
         (void)singles(src, stride, level, x, w, out);
     }
-    if (twin != NULL) {
-        for (i = x; i < w; i++) {
-            twin[i] = out[i];
-        }
-    }
+    symline_i_grid_twin(out, x, w, twin);
 }
 
 void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
