@@ -37,8 +37,7 @@
 void SL_GRID_ROW(const symline_image *img, const symline_i_pass *p, uint32_t y, uint16_t *acc,
                  uint8_t *out, uint8_t *twin)
 {
-    symline_i_grid_level_row(img, p->level, y, acc, out);
-    symline_i_grid_twin(out, 0u, p->w, twin);
+    symline_i_grid_level_row(img, p->level, y, acc, out, twin);
 }
 
 /* How far from a decided row a candidate's work reaches down the columns
