@@ -16,7 +16,9 @@
  * rows' 4-byte groups interleaved, psadbw sums a block's two rows at once.
  * Blocks of 8 columns and more: psadbw against zero sums 8 bytes at once.
  * (Fewer instructions than 16-bit lanes at level 2; the grid stage of
- * tools/bench/stages.sh counts them.)
+ * tools/bench/stages.sh counts them.) The column indices are size_t (no
+ * zero extension per step) and the steps of levels 1 and 2 are 16 pixels
+ * wide (one pack and store for two halves).
  */
 #include <emmintrin.h>
 #include <string.h>
@@ -40,10 +42,19 @@ static inline __m128i ff01(void)
     return v;
 }
 
+/* *v done before the loads after this: GCC would load all of a step's
+ * rows first and spill them (SSE2 has 16 registers). */
+static inline void settle(__m128i *v)
+{
+#if defined(__GNUC__)
+    __asm__ volatile("" : "+x"(*v) : : "memory");
+#endif
+}
+
 /* The row's bytes x .. x+15, x+7 or x+3 (the low ones of v) to out, and to
  * twin where the caller wants the row twice (twin NULL: not; a constant
  * where these are inlined). */
-static SL_ALWAYS_INLINE void put16(uint8_t *out, uint8_t *twin, uint32_t x, __m128i v)
+static SL_ALWAYS_INLINE void put16(uint8_t *out, uint8_t *twin, size_t x, __m128i v)
 {
     _mm_storeu_si128((__m128i *)(void *)(out + x), v);
     if (twin != NULL) {
@@ -51,7 +62,7 @@ static SL_ALWAYS_INLINE void put16(uint8_t *out, uint8_t *twin, uint32_t x, __m1
     }
 }
 
-static SL_ALWAYS_INLINE void put8(uint8_t *out, uint8_t *twin, uint32_t x, __m128i v)
+static SL_ALWAYS_INLINE void put8(uint8_t *out, uint8_t *twin, size_t x, __m128i v)
 {
     _mm_storel_epi64((__m128i *)(void *)(out + x), v);
     if (twin != NULL) {
@@ -59,7 +70,7 @@ static SL_ALWAYS_INLINE void put8(uint8_t *out, uint8_t *twin, uint32_t x, __m12
     }
 }
 
-static SL_ALWAYS_INLINE void put4(uint8_t *out, uint8_t *twin, uint32_t x, __m128i v)
+static SL_ALWAYS_INLINE void put4(uint8_t *out, uint8_t *twin, size_t x, __m128i v)
 {
     const uint32_t t = (uint32_t)_mm_cvtsi128_si32(v);
     memcpy(out + x, &t, 4u);
@@ -90,9 +101,10 @@ static SL_ALWAYS_INLINE uint32_t level1(const uint8_t *src, size_t stride, uint3
 {
     const __m128i k = ff01();
     const uint8_t *b = src;
-    uint32_t x = 0u;
+    const size_t w16 = w & ~15u;
+    size_t x = 0u; /* size_t: no zero extension per step */
     __m128i a;
-    for (; x + 16u <= w; x += 16u, b += 32) {
+    for (; x < w16; x += 16u, b += 32) {
         a = level1_sums(b, stride, k);
         put16(out, twin, x, _mm_packus_epi16(a, level1_sums(b + 16, stride, k)));
     }
@@ -108,7 +120,7 @@ static SL_ALWAYS_INLINE uint32_t level1(const uint8_t *src, size_t stride, uint3
         put4(out, twin, x, _mm_packus_epi16(a, a));
         x += 4u;
     }
-    return x;
+    return (uint32_t)x;
 }
 
 /* Level 2: two rows' 4-column groups side by side (unpacklo/hi_epi32), so
@@ -125,20 +137,35 @@ static SL_ALWAYS_INLINE void level2_sums(const uint8_t *b, size_t stride, __m128
                          _mm_sad_epu8(_mm_unpackhi_epi32(r2, r3), z));
 }
 
+/* Level 2: the rounded means of 8 blocks from 32 columns (16-bit lanes). */
+static SL_ALWAYS_INLINE __m128i level2_means(const uint8_t *b, size_t stride)
+{
+    const __m128i half = _mm_set1_epi16(8);
+    __m128i P[4], S;
+    level2_sums(b, stride, P);
+    level2_sums(b + 16, stride, P + 2);
+    /* Block sums <= 16 * 255 in the even 32-bit lanes: packed twice. */
+    S = _mm_packs_epi32(_mm_packs_epi32(P[0], P[1]), _mm_packs_epi32(P[2], P[3]));
+    return _mm_srli_epi16(_mm_add_epi16(S, half), 4);
+}
+
 static SL_ALWAYS_INLINE uint32_t level2(const uint8_t *src, size_t stride, uint32_t w,
                                         uint8_t *out, uint8_t *twin)
 {
     const __m128i half = _mm_set1_epi16(8);
     const uint8_t *b = src;
-    __m128i P[4], S;
-    uint32_t x = 0u;
-    for (; x + 8u <= w; x += 8u, b += 32) {
-        level2_sums(b, stride, P);
-        level2_sums(b + 16, stride, P + 2);
-        /* Block sums <= 16 * 255 in the even 32-bit lanes: packed twice. */
-        S = _mm_packs_epi32(_mm_packs_epi32(P[0], P[1]), _mm_packs_epi32(P[2], P[3]));
-        S = _mm_srli_epi16(_mm_add_epi16(S, half), 4);
+    const size_t w16 = w & ~15u;
+    __m128i P[2], S;
+    size_t x = 0u;
+    for (; x < w16; x += 16u, b += 64) {
+        S = level2_means(b, stride);
+        put16(out, twin, x, _mm_packus_epi16(S, level2_means(b + 32, stride)));
+    }
+    if (x + 8u <= w) {
+        S = level2_means(b, stride);
         put8(out, twin, x, _mm_packus_epi16(S, S));
+        x += 8u;
+        b += 32;
     }
     if (x + 4u <= w) { /* one vector */
         level2_sums(b, stride, P);
@@ -147,7 +174,7 @@ static SL_ALWAYS_INLINE uint32_t level2(const uint8_t *src, size_t stride, uint3
         put4(out, twin, x, _mm_packus_epi16(S, S));
         x += 4u;
     }
-    return x;
+    return (uint32_t)x;
 }
 
 /* Sums of 8 rows of nv <= 4 vectors (16 nv columns from b), two blocks of
@@ -177,12 +204,16 @@ static SL_ALWAYS_INLINE uint32_t level3(const uint8_t *src, size_t stride, uint3
 {
     const __m128i half = _mm_set1_epi16(32);
     const uint8_t *b = src;
+    const size_t w8 = w & ~7u;
     __m128i P[4], S;
-    uint32_t x = 0u;
-    for (; x + 8u <= w; x += 8u, b += 64) {
-        sums8(b, stride, 4u, P);
+    size_t x = 0u;
+    for (; x < w8; x += 8u, b += 64) {
+        sums8(b, stride, 2u, P);
+        S = _mm_packs_epi32(P[0], P[1]);
+        settle(&S);
+        sums8(b + 32, stride, 2u, P + 2);
         /* Block sums <= 64 * 255 in the even 32-bit lanes: packed twice. */
-        S = _mm_packs_epi32(_mm_packs_epi32(P[0], P[1]), _mm_packs_epi32(P[2], P[3]));
+        S = _mm_packs_epi32(S, _mm_packs_epi32(P[2], P[3]));
         S = _mm_srli_epi16(_mm_add_epi16(S, half), 6);
         put8(out, twin, x, _mm_packus_epi16(S, S));
     }
@@ -193,7 +224,7 @@ static SL_ALWAYS_INLINE uint32_t level3(const uint8_t *src, size_t stride, uint3
         put4(out, twin, x, _mm_packus_epi16(S, S));
         x += 4u;
     }
-    return x;
+    return (uint32_t)x;
 }
 
 /* Level 4: blocks of one vector, four at a time: psadbw's two half-block
