@@ -46,8 +46,8 @@ static inline void symline_i_grid_blocks(const uint8_t *src, size_t stride, uint
  * second copy where it was not stored twice. */
 static inline void symline_i_grid_twin(const uint8_t *out, uint32_t x0, uint32_t w, uint8_t *twin)
 {
-    uint32_t x;
     if (twin != NULL) {
+        uint32_t x;
         for (x = x0; x < w; x++) {
             twin[x] = out[x];
         }
