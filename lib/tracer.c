@@ -24,6 +24,14 @@
  *    rests behind junctions): it starts at the first unvisited point in raster
  *    order that has an unvisited neighbour, traces forward, then backward
  *    from the start, and joins the two halves.
+ *
+ * Where speed counts, one merge of neighbouring rows first writes each
+ * point's neighbours into its sub-pixel fields, which the sub-pixel stage
+ * only fills for the chains later (in their own storage, not the list's):
+ * fx the 8-neighbour mask (bit d: a point in direction d), fy where row y+1's
+ * points from x - 1 on start, relative to the point's own place in its row.
+ * A count is then a bit test and a step an index sum, with a row search only
+ * where the list does not say (the row above, rows far from alike).
  */
 #include "tracer.h"
 
@@ -40,9 +48,8 @@ void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
     t->h = h;
     t->scan = 0u;
     t->phase = 0u;
-    t->row = t->up = t->down = 0u;
-    if (h != 0u) {
-        t->down = row_start[1];
+    if (SL_FOR_SPEED) {
+        t->left = n;
     }
 }
 
@@ -96,18 +103,18 @@ static SL_FIRST_AT_INLINE uint32_t first_at(const symline_i_tracer *t, int32_t x
 /* Index of point (nx, ny), a neighbour of (x, y), or -1 (also when out of
  * range: no point has an x of -1 or 65536). lb[ny - y + 1]: where row ny's
  * points from x - 1 on start, searched once per step and row (SL_NO_ROW
- * until then), not once per direction; where speed counts, carried over
- * from the last step (carry()). */
+ * until then), not once per direction. The size builds' lookup (where speed
+ * counts, follow_masks() reads the neighbour masks instead). */
 #define SL_NO_ROW 0xFFFFFFFFu
-static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t y, uint32_t off,
-                    int32_t nx, int32_t ny)
+static int32_t find(const symline_i_tracer *t, uint32_t *lb, int32_t x, int32_t y, int32_t nx,
+                    int32_t ny)
 {
     uint32_t *k = &lb[ny - y + 1], i;
     if ((uint32_t)ny >= t->h) { /* negatives wrap: out too */
         return -1;
     }
     if (*k == SL_NO_ROW) {
-        *k = first_at(t, x - 1, (uint32_t)ny, off);
+        *k = first_at(t, x - 1, (uint32_t)ny, 0u);
     }
     for (i = *k; i < t->row_start[ny + 1] && t->pts[i].x <= nx; i++) {
         if (t->pts[i].x == nx) {
@@ -136,54 +143,6 @@ uint32_t symline_i_neighbours(const symline_i_tracer *t, uint32_t x, uint32_t y)
     return neighbours(t, x, y, 0u);
 }
 
-/* The points of a row from *cur on at x - 1 .. x + 1 (up to end); *cur
- * moves to the first at x - 1 or right of it. */
-static uint32_t count_near(const symline_point *pts, uint32_t *cur, uint32_t end, uint32_t x,
-                           uint32_t *nb)
-{
-    uint32_t j = *cur, c = 0u;
-    while (j < end && pts[j].x + 1u < x) {
-        j++;
-    }
-    *cur = j;
-    for (; j < end && pts[j].x <= x + 1u; j++) {
-        c++;
-        *nb = j;
-    }
-    return c;
-}
-
-/* neighbours() of the scan's point i at x, for the scan in raster order:
- * cursors into the rows above and below that only move right, as the scan
- * does, so that each row is read once as the row above and once as the row
- * below, instead of three searches per point. *nb: the index of the
- * neighbour when there is one. Only saves time (SL_FOR_SPEED). */
-static uint32_t scan_neighbours(symline_i_tracer *t, uint32_t i, uint32_t x, uint32_t *nb)
-{
-    const uint32_t *rs = t->row_start;
-    uint32_t row = t->row, c;
-    while (rs[row + 1u] <= i) {
-        row++;
-    }
-    if (row != t->row) {
-        t->row = row;
-        t->up = rs[row - 1u]; /* row > 0: a row before it ended */
-        t->down = rs[row + 1u];
-    }
-    c = count_near(t->pts, &t->up, rs[row], x, nb) +
-        count_near(t->pts, &t->down, row + 1u < t->h ? rs[row + 2u] : rs[row + 1u], x, nb);
-    /* In its own row (each x once, sorted): the points right before and after it. */
-    if (i > rs[row] && t->pts[i - 1u].x + 1u == x) {
-        c++;
-        *nb = i - 1u;
-    }
-    if (i + 1u < rs[row + 1u] && t->pts[i + 1u].x == x + 1u) {
-        c++;
-        *nb = i + 1u;
-    }
-    return c;
-}
-
 static bool unvisited(const symline_i_tracer *t, int32_t idx)
 {
     return idx >= 0 && t->pts[idx].y != SL_VISITED;
@@ -197,44 +156,210 @@ static void visit(symline_i_tracer *t, int32_t idx)
 /* The direction of a start point's first step: any, in direction order 0..7. */
 #define SL_ANY_DIR 8u
 
-/* The direction of the step by (dx, dy): DIR_OF[(dy + 1) * 3 + dx + 1]. */
-static const uint8_t DIR_OF[9] = {5, 6, 7, 4, SL_ANY_DIR, 0, 3, 2, 1};
-
 /* A step's directions relative to the last one: straight, 45-degree, then
  * 90-degree turns, counter-clockwise first (0, +1, -1, +2, -2). */
 static const uint8_t TURN[5] = {0, 1, 7, 2, 6};
 
-/* Where row y's points from x - 1 on start, for point `at` at (x, y) in it:
- * the point itself, or the one before it at x - 1. */
-static uint32_t own_lb(const symline_i_tracer *t, uint32_t at, int32_t x, uint32_t y)
+/* The neighbour mask in a point's fx (a character access: all 8 bits). */
+static uint32_t mask_of(const symline_point *p)
 {
-    return at > t->row_start[y] && (int32_t)t->pts[at - 1u].x + 1 == x ? at - 1u : at;
+    return *(const uint8_t *)&p->fx;
 }
 
-/* lb (find()) for the step from (nx, ny) (index at), from the step from
- * (x, y) just taken: the rows both steps see keep what was searched there,
- * moved by at most one point (each x once per row), the point's own row is
- * known, and only a new row is searched again, when a direction needs it. */
-static void carry(const symline_i_tracer *t, uint32_t lb[3], int32_t x, int32_t y, int32_t nx,
-                  int32_t ny, uint32_t at)
+static void set_mask(symline_point *p, uint32_t m)
 {
-    uint32_t k, m[3];
-    for (k = 0; k < 3u; k++) {
-        const uint32_t from = k + (uint32_t)(ny - y); /* -1 wraps: a new row */
-        const uint32_t row = (uint32_t)(ny - 1 + (int32_t)k);
-        uint32_t v = from < 3u ? lb[from] : SL_NO_ROW;
-        if (v != SL_NO_ROW && nx > x && v < t->row_start[row + 1u] &&
-            (int32_t)t->pts[v].x == x - 1) {
-            v++; /* from x - 1 on to from x on */
-        } else if (v != SL_NO_ROW && nx < x && v > t->row_start[row] &&
-                   (int32_t)t->pts[v - 1u].x == x - 2) {
-            v--; /* from x - 1 on to from x - 2 on */
-        }
-        m[k] = v;
+    *(uint8_t *)&p->fx = (uint8_t)m;
+}
+
+/* The neighbour count of a mask as phase 0 needs it: 0, 1, or 2 for more. */
+static uint32_t mask_count(uint32_t m)
+{
+    return m == 0u ? 0u : (m & (m - 1u)) == 0u ? 1u : 2u;
+}
+
+/* fy when row y+1's start is not said (too far, or no row y+1). */
+#define SL_FAR (-128)
+
+/* x of point q of a row that ends at e, or above every x past the end. */
+static uint32_t x_or_past(const symline_point *q, const symline_point *e)
+{
+    return q < e ? q->x : 0x20000u;
+}
+
+/* Writes every point's mask and row-below start (file comment), row by row:
+ * rows y and y+1 merged once give row y its bits 1..3 and row y+1 its bits
+ * 5..7 (the last row merges with nothing). A point left without neighbours
+ * (type A) is marked visited here, as phase 0 would mark it when it came to
+ * it: no chain ever reaches it. Returns their number. Once per pass, not
+ * inlined. The merge keeps what it read in locals: a byte store may alias
+ * anything. */
+SL_NOINLINE static uint32_t index_rows(symline_point *p, const uint32_t *rs, uint32_t h)
+{
+    symline_point *q, *qs, *qe, *re;
+    uint32_t y, a = 0u;
+    if (h == 0u) {
+        return 0u;
     }
-    lb[0] = m[0];
-    lb[1] = own_lb(t, at, nx, (uint32_t)ny);
-    lb[2] = m[2];
+    re = p + rs[h];
+    for (q = p + rs[0]; q < re; q++) {
+        set_mask(q, 0u);
+    }
+    /* Row y is [qs, qe), row y+1 [qe, re): each row's bounds read once. */
+    for (y = 0, qs = p + rs[0], qe = p + rs[1]; y < h; y++, qs = qe, qe = re) {
+        symline_point *r = qe;
+        /* q - 1's x and mask (complete but for bit 0; none: not 0) */
+        uint32_t xr, last = 0x10000u, mlast = 0x100u;
+        int32_t dd = 0; /* r's place in row y+1 less q's in row y */
+        re = y + 1u < h ? p + rs[y + 2u] : qe;
+        if (qs == qe) {
+            continue;
+        }
+        xr = x_or_past(r, re);
+        for (q = qs; q < qe; q++, dd--) {
+            const uint32_t x = q->x;
+            uint32_t m = mask_of(q);
+            if (last + 1u == x) { /* directions 4 and, from q - 1, 0 */
+                m |= 0x10u;
+                set_mask(q - 1, mlast | 0x01u);
+            } else if (mlast == 0u) {
+                q[-1].y = SL_VISITED;
+                a++;
+            }
+            while (xr + 1u < x) {
+                r++;
+                dd++;
+                xr = x_or_past(r, re);
+            }
+            if (xr <= x + 1u) { /* (only then is fy read) */
+                symline_point *s = r;
+                uint32_t xs = xr;
+                q->fy = (int8_t)(dd > SL_FAR && dd < -SL_FAR ? dd : SL_FAR);
+                do {
+                    const uint32_t dx = xs + 1u - x;         /* 0, 1, 2: at x - 1, x, x + 1 */
+                    m |= 0x08u >> dx;                        /* directions 3, 2, 1 */
+                    set_mask(s, mask_of(s) | (0x80u >> dx)); /* seen from s: 7, 6, 5 */
+                    s++;
+                    xs = x_or_past(s, re);
+                } while (xs <= x + 1u);
+            }
+            set_mask(q, m);
+            last = x;
+            mlast = m;
+        }
+        if (mlast == 0u) {
+            qe[-1].y = SL_VISITED;
+            a++;
+        }
+    }
+    return a;
+}
+
+/* The number of set bits of a 3-bit value, from a table in a constant. */
+#define SL_POP3(v) ((0xE994u >> (2u * (v))) & 3u)
+
+/* Index of the neighbour in direction d (its bit set in the mask m) of
+ * point `at` in row y. A row above, or one below that the list does not
+ * place (SL_FAR), is searched from x - 1 on (*up keeps the row above's). */
+static uint32_t neighbour_at(const symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t m,
+                             uint32_t d, uint32_t *up)
+{
+    const symline_point *const p = t->pts;
+    const uint32_t *const rs = t->row_start;
+    if ((d & 3u) == 0u) { /* 0 or 4: the next or the last point */
+        return at + 1u - (d >> 1);
+    }
+    if (d < 4u) {
+        const int32_t dd = (int32_t)p[at].fy;
+        const uint32_t base = dd != SL_FAR ? (uint32_t)((int32_t)(rs[y + 1u] + (at - rs[y])) + dd)
+                                           : first_at(t, (int32_t)p[at].x - 1, y + 1u, at - rs[y]);
+        return base + SL_POP3(((m >> 1) & 7u) >> d); /* those left of it */
+    }
+    if (*up == SL_NO_ROW) {
+        *up = first_at(t, (int32_t)p[at].x - 1, y - 1u, at - rs[y]);
+    }
+    return *up + SL_POP3((m >> 5) & ((1u << (d - 5u)) - 1u));
+}
+
+/* The directions a step tries, in order, 4 bits each, 8 added to the last:
+ * after a step in direction d (TURN), and for a start (SL_ANY_DIR: 0..7). */
+static const uint32_t TRIES[9] = {0xE2710u, 0xF3021u, 0x84132u, 0x95243u,   0xA6354u,
+                                  0xB7465u, 0xC0576u, 0xD1607u, 0xF6543210u};
+
+/* The first unvisited neighbour of point `at` in row y (mask m) in the
+ * directions seq tries (TRIES), from its first on: its index times 16 plus
+ * its direction (one value: no address of a local in the step); SL_ANY_DIR
+ * when there is none. Apart from the step's own first try, which is almost
+ * always the one taken (not inlined: a loop round the index sums would make
+ * the step set up for them every time). */
+SL_NOINLINE static uint64_t next_dir(const symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t m,
+                                     uint32_t seq)
+{
+    uint32_t up = SL_NO_ROW;
+    for (;;) {
+        const uint32_t d = seq & 7u;
+        if (((m >> d) & 1u) != 0u) {
+            const uint32_t idx = neighbour_at(t, at, y, m, d, &up);
+            if (t->pts[idx].y != SL_VISITED) {
+                return (uint64_t)idx << 4 | d;
+            }
+        }
+        if ((seq & 8u) != 0u) {
+            return SL_ANY_DIR;
+        }
+        seq >>= 4;
+    }
+}
+
+/* The directions of TRIES[d] as a mask. */
+static const uint8_t TRIED[9] = {0xC7u, 0x8Fu, 0x1Fu, 0x3Eu, 0x7Cu, 0xF8u, 0xF1u, 0xE3u, 0xFFu};
+
+/* follow() where speed counts: the same steps, from the masks. */
+static bool follow_masks(symline_i_tracer *t, uint32_t at, uint32_t y, uint32_t dir,
+                         symline_point *dst, uint32_t cap, uint32_t *pos, bool *cut)
+{
+    symline_point *const pts = t->pts;
+    uint32_t m = mask_of(&pts[at]), k = *pos;
+    for (;;) {
+        uint32_t seq = TRIES[dir], d, idx = 0u, up = SL_NO_ROW;
+        if (dir != SL_ANY_DIR && k >= cap) {
+            break; /* cut */
+        }
+        /* The first direction with a point, in the order of the tries. */
+        if ((m & TRIED[dir]) == 0u) {
+            d = SL_ANY_DIR; /* none: the chain's usual end */
+        } else {
+            while (((m >> (seq & 7u)) & 1u) == 0u) {
+                seq >>= 4;
+            }
+            d = seq & 7u;
+            idx = neighbour_at(t, at, y, m, d, &up);
+            if (pts[idx].y == SL_VISITED) {
+                const uint64_t next =
+                    (seq & 8u) != 0u ? SL_ANY_DIR : next_dir(t, at, y, m, seq >> 4);
+                d = (uint32_t)next & 15u;
+                idx = (uint32_t)(next >> 4);
+            }
+        }
+        if (d == SL_ANY_DIR) { /* no direction left */
+            const bool moved = k != *pos;
+            *pos = k;
+            return moved;
+        }
+        if (k >= cap) {
+            break; /* cut */
+        }
+        pts[idx].y = SL_VISITED;
+        y = (uint32_t)((int32_t)y + DX[(d + 6u) & 7u]);
+        dst[k].x = pts[idx].x;
+        dst[k].y = (uint16_t)y;
+        k++;
+        at = idx;
+        m = mask_of(&pts[idx]);
+        dir = d;
+    }
+    *pos = k;
+    *cut = true;
+    return true;
 }
 
 /* Follows the line from (x, y) (index at), last step direction dir (or
@@ -245,10 +370,10 @@ static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint3
 {
     bool moved = false;
     uint32_t lb[3];
-    lb[0] = lb[1] = lb[2] = SL_NO_ROW; /* not an initialiser: no memcpy call */
     if (SL_FOR_SPEED) {
-        lb[1] = own_lb(t, at, x, (uint32_t)y);
+        return follow_masks(t, at, (uint32_t)y, dir, dst, cap, pos, cut);
     }
+    lb[0] = lb[1] = lb[2] = SL_NO_ROW; /* not an initialiser: no memcpy call */
     for (;;) {
         const uint32_t tries = dir == SL_ANY_DIR ? 8u : 5u;
         uint32_t o;
@@ -259,7 +384,7 @@ static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint3
         for (o = 0; o < tries; o++) {
             const uint32_t d = dir == SL_ANY_DIR ? o : (dir + TURN[o]) & 7u;
             const int32_t nx = x + DX[d], ny = y + DX[(d + 6u) & 7u];
-            const int32_t idx = find(t, lb, x, y, SL_FOR_SPEED ? at - t->row_start[y] : 0u, nx, ny);
+            const int32_t idx = find(t, lb, x, y, nx, ny);
             if (unvisited(t, idx)) {
                 if (*pos >= cap) {
                     *cut = true;
@@ -269,12 +394,7 @@ static bool follow(symline_i_tracer *t, uint32_t at, int32_t x, int32_t y, uint3
                 dst[*pos].x = (uint16_t)nx;
                 dst[*pos].y = (uint16_t)ny;
                 (*pos)++;
-                if (SL_FOR_SPEED) {
-                    carry(t, lb, x, y, nx, ny, (uint32_t)idx);
-                } else {
-                    lb[0] = lb[1] = lb[2] = SL_NO_ROW;
-                }
-                at = (uint32_t)idx;
+                lb[0] = lb[1] = lb[2] = SL_NO_ROW;
                 x = nx;
                 y = ny;
                 dir = d;
@@ -310,8 +430,26 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
         *cut = true;
         return false;
     }
+    if (SL_FOR_SPEED && t->phase == 0u && t->scan == 0u && t->n != 0u) {
+        /* Nothing visited yet: the first call, or one that got no room. */
+        t->left -= index_rows(t->pts, t->row_start, t->h);
+    }
     while (t->phase < 2u) {
         while (t->scan < t->n) {
+            if (SL_FOR_SPEED) {
+                /* Most points are visited by then: skipped in a loop of their
+                 * own, and all of them once none is left (phase 1, often). */
+                const symline_point *const p = t->pts;
+                const uint32_t n = t->left != 0u ? t->n : 0u;
+                uint32_t s = t->scan;
+                while (s < n && p[s].y == SL_VISITED) {
+                    s++;
+                }
+                t->scan = s;
+                if (s >= n) {
+                    break;
+                }
+            }
             /* The scan moves past i either way (a chain from i has visited it). */
             const uint32_t i = t->scan++;
             const uint32_t x = t->pts[i].x, y = t->pts[i].y;
@@ -319,34 +457,25 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
             if (y == SL_VISITED) {
                 continue;
             }
-            uint32_t nb = 0u;
             if (t->phase == 0u) {
                 const uint32_t c =
-                    SL_FOR_SPEED ? scan_neighbours(t, i, x, &nb) : symline_i_neighbours(t, x, y);
+                    SL_FOR_SPEED ? mask_count(mask_of(&t->pts[i])) : symline_i_neighbours(t, x, y);
                 if (c != 1u) {
                     if (c == 0u) {
                         /* Type A: no chain ever reaches it, phase 1 need not try it. */
                         visit(t, (int32_t)i);
+                        if (SL_FOR_SPEED) {
+                            t->left--;
+                        }
                     }
                     continue;
                 }
             }
             visit(t, (int32_t)i);
-            if (SL_FOR_SPEED && t->phase == 0u && pos < cap) {
-                /* A B point's first step goes to its one neighbour nb, which
-                 * the count found: follow() from there, as its search in
-                 * every direction would have. */
-                const uint32_t nx = t->pts[nb].x, ny = t->pts[nb].y;
-                if (ny == SL_VISITED) {
-                    continue; /* nothing left to follow from here */
-                }
-                visit(t, (int32_t)nb);
-                dst[1].x = (uint16_t)nx;
-                dst[1].y = (uint16_t)ny;
-                pos = 2u;
-                (void)follow(t, nb, (int32_t)nx, (int32_t)ny,
-                             DIR_OF[(ny + 1u - y) * 3u + nx + 1u - x], dst, cap, &pos, cut);
-            } else if (!follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
+            if (SL_FOR_SPEED) {
+                t->left--;
+            }
+            if (!follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut)) {
                 continue; /* nothing left to follow from here: a lone rest of a traced line */
             }
             dst[0].x = (uint16_t)x;
@@ -358,6 +487,9 @@ bool symline_i_tracer_next(symline_i_tracer *t, symline_point *dst, uint32_t cap
                 (void)follow(t, i, (int32_t)x, (int32_t)y, SL_ANY_DIR, dst, cap, &pos, cut);
                 symline_i_reverse_points(dst, pos);
                 symline_i_reverse_points(dst + (pos - fwd), fwd);
+            }
+            if (SL_FOR_SPEED) {
+                t->left -= pos - 1u; /* the chain's points after its start */
             }
             *count = pos;
             return true;

@@ -14,14 +14,13 @@
 
 /* Iterator over the chains of a raster list. */
 typedef struct symline_i_tracer {
-    symline_point *pts; /* raster list; visited entries get y = SL_VISITED */
-    uint32_t n;
+    symline_point *pts; /* raster list; visited entries get y = SL_VISITED, and */
+    uint32_t n;         /* where speed counts, fx and fy the tracer's own use */
     const uint32_t *row_start;
     uint32_t h;
-    uint32_t scan;     /* next raster index to try as a start */
-    uint32_t phase;    /* 0: starts at B points, 1: everything left (loops) */
-    uint32_t row;      /* phase 0: the scan's row, and its cursors into the */
-    uint32_t up, down; /* rows above and below (only where speed counts) */
+    uint32_t scan;  /* next raster index to try as a start */
+    uint32_t phase; /* 0: starts at B points, 1: everything left (loops) */
+    uint32_t left;  /* points not visited yet (kept where speed counts) */
 } symline_i_tracer;
 
 void symline_i_tracer_init(symline_i_tracer *t, symline_point *pts, uint32_t n,
