@@ -227,22 +227,26 @@ static SL_ALWAYS_INLINE uint32_t level3(const uint8_t *src, size_t stride, uint3
     return (uint32_t)x;
 }
 
-/* Level 4: blocks of one vector, four at a time: psadbw's two half-block
- * sums added, the block sums (<= 256 * 255) rounded in 32-bit lanes. */
+/* Level 4: blocks of one vector, four at a time, each summed as two blocks
+ * of 8 rows (sums8()) one after the other: psadbw's two half-block sums
+ * added, the block sums (<= 256 * 255) rounded in 32-bit lanes. */
 static SL_ALWAYS_INLINE uint32_t level4(const uint8_t *src, size_t stride, uint32_t w,
                                         uint8_t *out, uint8_t *twin)
 {
-    const __m128i z = _mm_setzero_si128(), half = _mm_set1_epi32(128);
-    uint32_t x, d;
-    for (x = 0; x + 4u <= w; x += 4u) {
-        const uint8_t *b = src + (size_t)x * 16u;
-        __m128i P0 = z, P1 = z, P2 = z, P3 = z, S;
-        for (d = 0; d < 16u; d++, b += stride) {
-            P0 = _mm_add_epi32(P0, _mm_sad_epu8(load16(b), z));
-            P1 = _mm_add_epi32(P1, _mm_sad_epu8(load16(b + 16), z));
-            P2 = _mm_add_epi32(P2, _mm_sad_epu8(load16(b + 32), z));
-            P3 = _mm_add_epi32(P3, _mm_sad_epu8(load16(b + 48), z));
+    const __m128i half = _mm_set1_epi32(128);
+    const uint8_t *b = src;
+    const size_t w4 = w & ~3u;
+    size_t x = 0u;
+    for (; x < w4; x += 4u, b += 64) {
+        __m128i P[8], P0, P1, P2, P3, S;
+        uint32_t i;
+        for (i = 0; i < 4u; i++) { /* each block's rows 0..7 and 8..15 */
+            sums8(b + 16u * i, stride, 1u, &P[2u * i]);
+            sums8(b + 16u * i + 8u * stride, stride, 1u, &P[2u * i + 1u]);
+            P[2u * i] = _mm_add_epi32(P[2u * i], P[2u * i + 1u]);
+            settle(&P[2u * i]);
         }
+        P0 = P[0], P1 = P[2], P2 = P[4], P3 = P[6];
         /* Blocks 0, 1 and 2, 3 in the low 32 bits of the 64-bit lanes. */
         P0 = _mm_add_epi32(_mm_unpacklo_epi64(P0, P1), _mm_unpackhi_epi64(P0, P1));
         P2 = _mm_add_epi32(_mm_unpacklo_epi64(P2, P3), _mm_unpackhi_epi64(P2, P3));
@@ -251,7 +255,7 @@ static SL_ALWAYS_INLINE uint32_t level4(const uint8_t *src, size_t stride, uint3
         S = _mm_packs_epi32(S, S);
         put4(out, twin, x, _mm_packus_epi16(S, S));
     }
-    return x;
+    return (uint32_t)x;
 }
 
 /* Pixels x0 .. w-1 one at a time (levels 2..5; the tails of the steps
