@@ -67,9 +67,10 @@ lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w, uint8_t *ou
     uint16x8_t P[8], Q;
     uint32_t x;
     for (x = 0; x + 8u <= w; x += 8u) {
+        uint8x8_t v;
         pair_sums(src + (size_t)x * s, stride, s, nv, P);
         reduce(P, nv);
-        const uint8x8_t v = narrow(P[0], level);
+        v = narrow(P[0], level);
         vst1_u8(out + x, v);
         if (twin != NULL) {
             vst1_u8(twin + x, v);
@@ -131,7 +132,7 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     case 2u: x = lanes(src, stride, 2u, w, out, twin); break;
     case 3u: x = lanes(src, stride, 3u, w, out, twin); break;
     case 4u: x = lanes(src, stride, 4u, w, out, twin); break;
-    case 5u: x = 0u, (void)wide(src, stride, 5u, w, out); break;
+    case 5u: (void)wide(src, stride, 5u, w, out); x = 0u; break; /* none in twin yet */
     default: symline_i_grid_row_c(img, p, y, acc, out, twin); return;
     }
     if (level < 5u) {
