@@ -546,35 +546,74 @@ int symline_field_above(const symline_field_boundary *b, int32_t x, int32_t y)
     return (b != NULL && b->count != 0u && y < symline_field_y(b, x)) ? 1 : 0;
 }
 
+/* a / d rounded toward minus infinity (d > 0), as chord_y() rounds. */
+static int64_t floor_div(int64_t a, int64_t d)
+{
+    const int64_t q = a / d;
+    return (a % d != 0 && a < 0) ? q - 1 : q;
+}
+
+/* The first kept grid row (level, s = 2^level) under boundary row y, margin
+ * plus half a block (lift) above it. */
+static uint16_t kept_row(int32_t y, int32_t lift, uint32_t s, uint32_t level)
+{
+    y -= lift;
+    /* The boundary lies at most at the frame's height: y <= 65535. */
+    return (uint16_t)(y <= 0 ? 0 : (y + (int32_t)s - 1) >> level);
+}
+
 void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
                           uint32_t width, uint32_t margin, uint16_t *rows)
 {
-    /* symline_field_y() at every grid column's centre; to save time
-     * (SL_FOR_SPEED), the chord is found by stepping on from the last one:
-     * the centres only move right. */
+    /* symline_field_y() at every grid column's centre (keep grid row y when
+     * its centre y*s + s/2 >= boundary - margin); to save time
+     * (SL_FOR_SPEED), along each chord by a running quotient and remainder:
+     * the centres only move right, by s. */
     const uint32_t s = 1u << level, last = b->count - 1u;
-    uint32_t x, i = 0u;
-    for (x = 0; x < w; x++) {
-        /* Keep grid row y when its centre y*s + s/2 >= boundary - margin. */
+    const int32_t lift = (int32_t)(margin + s / 2u);
+    uint32_t x = 0u, i = 0u;
+    while (x < w) {
         const int32_t xc = (int32_t)(x * s + s / 2u < width ? x * s + s / 2u : width - 1u);
-        int32_t y;
+        const symline_field_vertex *va, *vb;
+        int32_t end, den, dy, q, r, dq, dr;
+        int64_t n;
+        uint32_t xe;
         if (!SL_FOR_SPEED) {
-            y = symline_field_y(b, xc);
-        } else {
-            while (i < last && xc > b->v[i + 1u].x) {
-                i++;
-            }
-            if (xc <= b->v[0].x) {
-                y = b->v[0].y;
-            } else if (i >= last) {
-                y = b->v[last].y;
-            } else {
-                y = chord_y(&b->v[i], &b->v[i + 1u], xc);
+            rows[x++] = kept_row(symline_field_y(b, xc), lift, s, level);
+            continue;
+        }
+        while (i < last && xc > b->v[i + 1u].x) {
+            i++;
+        }
+        if (xc <= b->v[0].x || i >= last) {
+            rows[x++] = kept_row(xc <= b->v[0].x ? b->v[0].y : b->v[last].y, lift, s, level);
+            continue;
+        }
+        /* va.x < xc <= vb.x: the columns from x whose centres (x*s + s/2,
+         * not clamped) stay within the chord, up to xe. */
+        va = &b->v[i];
+        vb = &b->v[i + 1u];
+        end = vb->x < (int32_t)width - 1 ? vb->x : (int32_t)width - 1;
+        xe = end >= xc ? (uint32_t)(end - (int32_t)(s / 2u)) / s + 1u : x + 1u;
+        xe = xe < w ? xe : w;
+        xe = xe > x ? xe : x + 1u;
+        den = vb->x - va->x;
+        dy = vb->y - va->y;
+        n = (int64_t)dy * (xc - va->x);
+        q = (int32_t)floor_div(n, den);
+        r = (int32_t)(n - (int64_t)q * den);
+        n = (int64_t)dy * (int32_t)s;
+        dq = (int32_t)floor_div(n, den);
+        dr = (int32_t)(n - (int64_t)dq * den);
+        for (; x < xe; x++) {
+            rows[x] = kept_row(va->y + q, lift, s, level);
+            q += dq;
+            r += dr;
+            if (r >= den) {
+                r -= den;
+                q++;
             }
         }
-        y -= (int32_t)(margin + s / 2u);
-        /* The boundary lies at most at the frame's height: y <= 65535. */
-        rows[x] = (uint16_t)(y <= 0 ? 0 : (y + (int32_t)s - 1) >> level);
     }
 }
 

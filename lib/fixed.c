@@ -7,6 +7,13 @@
 uint64_t symline_i_isqrt64(uint64_t v)
 {
     uint64_t r = 0u, bit = (uint64_t)1u << 62;
+#if SL_FOR_SPEED && defined(__GNUC__)
+    /* The loop below starts at the largest power of 4 not above v: found
+     * at once from v's highest bit where the build optimises for speed. */
+    if (v != 0u) {
+        bit = (uint64_t)1u << ((63u - (uint32_t)__builtin_clzll(v)) & ~1u);
+    }
+#endif
     while (bit > v) {
         bit >>= 2;
     }

@@ -42,6 +42,28 @@ static bool apart(int32_t a0, int32_t a1, int32_t b0, int32_t b1, int32_t gap)
     return blo - ahi > gap || alo - bhi > gap;
 }
 
+/* symline_i_line_dist_q8(ax, ay, dx, dy, px, py) > dev. Where the build
+ * optimises for speed, mostly without its square root: for a chord of
+ * length len = isqrt(l2) >= 1 and a cross product that fits 32 bits the
+ * distance is cross / len rounded down, above dev exactly when
+ * len <= t = cross / (dev + 1), that is when l2 < (t + 1)^2 (ends within
+ * 2^25 Q8 of the frame: l2 < 2^56, so any t >= 2^28 passes). */
+static bool off_line(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px, int32_t py,
+                     uint32_t dev)
+{
+    if (SL_FOR_SPEED && dev < UINT32_MAX) {
+        const int32_t wx = px - ax, wy = py - ay;
+        const uint64_t l2 = (uint64_t)((int64_t)dx * dx + (int64_t)dy * dy);
+        const int64_t c = (int64_t)wx * dy - (int64_t)wy * dx;
+        const uint64_t cross = (uint64_t)(c < 0 ? -c : c);
+        if (l2 != 0u && cross <= UINT32_MAX) {
+            const uint64_t t = (uint32_t)cross / (dev + 1u);
+            return t >= ((uint64_t)1u << 28) || l2 < (t + 1u) * (t + 1u);
+        }
+    }
+    return symline_i_line_dist_q8(ax, ay, dx, dy, px, py) > dev;
+}
+
 /* Whether line b may join line a: close ends, each piece on the other's line.
  * Sets the joined ends (the extreme ends along the longer piece) as j's. */
 SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b,
@@ -77,7 +99,7 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
         const symline_segment *o = i < 2u ? b : a;
         int32_t x, y;
         end_of(a, b, i, &x, &y);
-        if (symline_i_line_dist_q8(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y) > dev_q8) {
+        if (off_line(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y, dev_q8)) {
             return false;
         }
     }
@@ -175,6 +197,10 @@ typedef struct merger {
     symline_point *out; /* NULL: rotations */
     uint32_t pos;       /* where the piece in hand starts in out */
     symline_point *ap;  /* the piece in hand's points (in out, or in place) */
+    /* Where the round's layout in out begins, to save time (SL_FOR_SPEED;
+     * else at 0): the pieces before it stay in place, their layout unchanged
+     * until a first join (SL_NO_NODE while none). */
+    uint32_t from;
 } merger;
 
 /* Piece j joins piece i (i < j): the joined ends and max_dev (e's), j's points
@@ -187,6 +213,13 @@ static void absorb(merger *m, uint32_t i, uint32_t j, const symline_segment *e)
     const uint32_t mid0 = a->first + a->count;
     const uint32_t midn = b_first - mid0;
     const uint8_t lb = r->segments[j].level;
+    if (SL_FOR_SPEED && m->out != NULL && m->from == SL_NO_NODE) {
+        /* The round's first join: the layout in out begins with the piece
+         * in hand (the pieces before it keep their places). */
+        m->from = m->pos;
+        m->ap = m->out + m->pos;
+        copy_points(m->ap, r->points + a->first, a->count);
+    }
     copy_bytes(a, e, offsetof(symline_segment, first)); /* the ends and max_dev */
     a->kind = SYMLINE_KIND_LINE;
     a->level = a->level > lb ? a->level : lb;
@@ -389,6 +422,9 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
     while (changed) {
         changed = false;
         m.pos = 0u;
+        if (SL_FOR_SPEED) {
+            m.from = SL_NO_NODE;
+        }
         if (m.cols != 0u) {
             grid_build(&m);
         }
@@ -398,7 +434,10 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
                 continue;
             }
             m.ap = r->points + a->first;
-            if (m.out != NULL) {
+            if (SL_FOR_SPEED && m.from == SL_NO_NODE && a->first != m.pos) {
+                m.from = m.pos; /* not in place: the layout in out begins */
+            }
+            if (m.out != NULL && (!SL_FOR_SPEED || m.from != SL_NO_NODE)) {
                 m.ap = m.out + m.pos;
                 copy_points(m.ap, r->points + a->first, a->count);
                 a->first = m.pos;
@@ -412,8 +451,10 @@ void symline_i_merge(const symline_i_run *d, void *ws, size_t ws_size)
             }
             m.pos += a->count;
         }
-        if (m.out != NULL) { /* unchanged: the same points */
-            copy_points(r->points, m.out, m.pos);
+        if (m.out != NULL && (!SL_FOR_SPEED || m.from != SL_NO_NODE)) {
+            /* From the round's first join on (SL_NO_NODE: all in place). */
+            const uint32_t from = SL_FOR_SPEED ? m.from : 0u;
+            copy_points(r->points + from, m.out + from, m.pos - from);
         }
     }
     for (i = 0, w = 0; i < m.n; i++) {

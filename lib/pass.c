@@ -103,6 +103,43 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
     s->count = n;
 }
 
+/* The first of the chain's points q[0..e-q-1] that an earlier segment
+ * covers (cov true) or does not (false); e if none. A point in a cell the
+ * grid lists nothing in is not covered, without asking: a cell's points have
+ * grid coordinates (x >> sh, y >> sh) (inside the frame, at levels up to
+ * SL_CELL_SHIFT: a block never straddles a cell), and the last such cell is
+ * remembered, as a chain steps a grid pixel at a time. The first pass has no
+ * earlier segment at all. Only where the build optimises for speed
+ * (chain()); apart from it so that its frame is not under the fit's. */
+SL_NOINLINE static const symline_point *next_point(const symline_i_run *d, uint32_t level,
+                                                   symline_i_segindex *ix, const symline_point *q,
+                                                   const symline_point *e, bool cov)
+{
+    uint32_t cell = UINT32_MAX;
+    if (ix == NULL || ix->cols == 0u || ix->indexed != d->prev_seg || level > SL_CELL_SHIFT) {
+        while (q < e && covered(d, ix, q, level) != cov) {
+            q++;
+        }
+        return q;
+    }
+    if (d->prev_seg == 0u) {
+        return cov ? e : q;
+    }
+    for (; q < e; q++) {
+        const uint32_t sh = SL_CELL_SHIFT - level;
+        const uint32_t at = ((uint32_t)q->y >> sh) * ix->cols + ((uint32_t)q->x >> sh);
+        if (at == cell || symline_i_segindex_cell_empty(ix, at)) {
+            cell = at;
+            if (!cov) {
+                break;
+            }
+        } else if (covered(d, ix, q, level) == cov) {
+            break;
+        }
+    }
+    return q;
+}
+
 /* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
 static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex *ix, uint32_t at,
                   uint32_t n)
@@ -118,8 +155,13 @@ static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex 
         ix->hit = SL_NO_HIT; /* another chain: the last one's entry is not a better guess */
     }
     for (i = 0; i <= n; i++) {
-        /* The uncovered runs [from, i), each cut at its corners. */
-        if (i < n && !covered(d, ix, &c[i], p->level)) {
+        /* The uncovered runs [from, i), each cut at its corners. Where the
+         * build optimises for speed, a run's first point and its end found
+         * by next_point(). */
+        if (SL_FOR_SPEED) {
+            from = (uint32_t)(next_point(d, p->level, ix, c + from, c + n, false) - c);
+            i = (uint32_t)(next_point(d, p->level, ix, c + from, c + n, true) - c);
+        } else if (i < n && !covered(d, ix, &c[i], p->level)) {
             continue;
         }
         for (s = from; s < i;) {
@@ -158,20 +200,43 @@ SL_NOINLINE static void note_listed(symline_i_run *d, uint32_t n, uint32_t dropp
 SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, uint32_t nseg,
                                         uint32_t w, uint32_t level)
 {
+    /* Where the build optimises for speed, each point is converted as it is
+     * copied: its Q7 full-resolution coordinate u 2^level + (2^level - 1) 64
+     * (u = 128 x + fx, fixed.h) plus 64 is never negative (fx >= -64) and
+     * below 2^32, so 32-bit unsigned arithmetic gives it exactly; its pixel
+     * is that over 128, its remainder the low 7 bits less 64 (as
+     * symline_i_pt_to_full() rounds). */
+    const uint32_t add = (((1u << level) - 1u) << 6) + 64u;
     uint32_t k;
     for (k = first_seg; k < nseg; k++) {
         symline_segment *s = &r->segments[k];
-        uint32_t i;
         /* w <= s->first: a forward copy. */
-        for (i = 0; i < s->count; i++) {
-            /* Converted in place (read only once), then copied field by
-             * field: a struct copy may become a libc memcpy call. */
-            symline_point *q = &r->points[s->first + i];
-            symline_i_pt_to_full(q, level);
-            r->points[w + i].x = q->x;
-            r->points[w + i].y = q->y;
-            r->points[w + i].fx = q->fx;
-            r->points[w + i].fy = q->fy;
+        if (SL_FOR_SPEED) {
+            /* Walked by pointer: no index arithmetic per point. */
+            const symline_point *q = r->points + s->first, *const e = q + s->count;
+            symline_point *o = r->points + w;
+            for (; q != e; q++, o++) {
+                const uint32_t vx =
+                    ((((uint32_t)q->x << 7) + (uint32_t)(int32_t)q->fx) << level) + add;
+                const uint32_t vy =
+                    ((((uint32_t)q->y << 7) + (uint32_t)(int32_t)q->fy) << level) + add;
+                o->x = (uint16_t)(vx >> 7);
+                o->y = (uint16_t)(vy >> 7);
+                o->fx = (int8_t)((int32_t)(vx & 127u) - 64);
+                o->fy = (int8_t)((int32_t)(vy & 127u) - 64);
+            }
+        } else {
+            uint32_t i;
+            for (i = 0; i < s->count; i++) {
+                /* Converted in place (read only once), then copied field by
+                 * field: a struct copy may become a libc memcpy call. */
+                symline_point *q = &r->points[s->first + i];
+                symline_i_pt_to_full(q, level);
+                r->points[w + i].x = q->x;
+                r->points[w + i].y = q->y;
+                r->points[w + i].fx = q->fx;
+                r->points[w + i].fy = q->fy;
+            }
         }
         s->first = w;
         w += s->count;

@@ -161,7 +161,7 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
 {
     const symline_segment *s = &r->segments[id];
     const symline_point *p = r->points + s->first;
-    uint32_t i, k;
+    uint32_t i;
     v->seg = id;
     v->width = 1u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
@@ -174,14 +174,33 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
         v->seg = SL_PIECE | (s->first + i);
         v->piece_end = s->first + j;
         if (SL_FOR_SPEED) {
-            /* The box of the run's pixels (the pieces are tested in whole pixels). */
-            uint32_t x0 = p[i].x, y0 = p[i].y, x1 = x0, y1 = y0;
-            for (k = i + 1u; k <= j; k++) {
-                x0 = p[k].x < x0 ? p[k].x : x0;
-                x1 = p[k].x > x1 ? p[k].x : x1;
-                y0 = p[k].y < y0 ? p[k].y : y0;
-                y1 = p[k].y > y1 ? p[k].y : y1;
+            /* The box of the run's pixels (the pieces are tested in whole
+             * pixels), walked by pointer: no index arithmetic per point. */
+            const symline_point *q = p + i, *const e = p + j;
+            uint32_t x0 = q->x, y0 = q->y, x1 = x0, y1 = y0;
+#if SL_FOR_SPEED_DEEP
+            if (v->mode == SL_WALK_FILL && v->used < v->kept) {
+                /* The count's box of this run (the fill visits the same
+                 * runs in the same order). */
+                const uint32_t *b = v->boxes - (size_t)2u * ++v->used;
+                visit_box(v, b[0] & 0xFFFFu, b[0] >> 16, b[1] & 0xFFFFu, b[1] >> 16);
+                continue;
             }
+#endif
+            while (q++ != e) {
+                const uint32_t x = q->x, y = q->y;
+                x0 = x < x0 ? x : x0;
+                x1 = x > x1 ? x : x1;
+                y0 = y < y0 ? y : y0;
+                y1 = y > y1 ? y : y1;
+            }
+#if SL_FOR_SPEED_DEEP
+            if (v->mode == SL_WALK_COUNT && v->sign == 1u && v->kept < v->box_cap) {
+                uint32_t *b = v->boxes - (size_t)2u * ++v->kept;
+                b[0] = x0 | y0 << 16;
+                b[1] = x1 | y1 << 16;
+            }
+#endif
             visit_box(v, x0, y0, x1, y1);
         } else {
             symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
@@ -237,6 +256,13 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     v.margin = tol_q8;
     v.mode = SL_WALK_COUNT;
     v.sign = 1u;
+#if SL_FOR_SPEED_DEEP
+    /* The runs' boxes go to the far end of the id area while it is unused;
+     * the fill reads those the ids it writes (from the start) leave alone. */
+    v.boxes = cap != 0u ? ix->ids + cap : NULL;
+    v.box_cap = cap / 2u;
+    v.kept = v.used = 0u;
+#endif
     for (s = 0; s < nseg && s < SL_PIECE; s++) {
         v.added = 0u;
         visit_segment(&v, r, s);
@@ -256,6 +282,11 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
         sum += n;
     }
     v.mode = SL_WALK_FILL;
+#if SL_FOR_SPEED_DEEP
+    if (v.kept > (cap - sum) / 2u) {
+        v.kept = (cap - sum) / 2u; /* ids [0, sum) would overwrite the rest */
+    }
+#endif
     for (s = 0; s < ix->indexed; s++) {
         visit_segment(&v, r, s);
     }
@@ -269,7 +300,28 @@ static bool near_entry(const symline_i_segindex *ix, const symline_result *r, ui
     const uint32_t e = ix->ids[k];
     uint32_t a;
     if ((e & SL_PIECE) == 0u) {
-        return symline_i_near_segment(&r->segments[e], r->points, q);
+        const symline_segment *s = &r->segments[e];
+        /* A line's test here, inline (SL_FOR_SPEED_DEEP, segments.h). */
+        if (SL_FOR_SPEED_DEEP && (s->kind == SYMLINE_KIND_LINE || s->count < 2u)) {
+            return symline_i_near_chord(s->x0, s->y0, s->x1, s->y1, q);
+        }
+        return symline_i_near_segment(s, r->points, q);
+    }
+    if (SL_FOR_SPEED_DEEP) {
+        /* The same pieces, walked by pointer: each ends where the next
+         * starts, the last at the run's last point. */
+        const symline_point *pa = r->points + (e - SL_PIECE), *const pl =
+                                                                  r->points + ix->ids[k + 1u];
+        while (pa < pl) {
+            const symline_point *pb = pl - pa > (ptrdiff_t)SL_POLY_STEP ? pa + SL_POLY_STEP : pl;
+            if (symline_i_near_chord((int32_t)pa->x << SL_Q8_SHIFT, (int32_t)pa->y << SL_Q8_SHIFT,
+                                     (int32_t)pb->x << SL_Q8_SHIFT, (int32_t)pb->y << SL_Q8_SHIFT,
+                                     q)) {
+                return true;
+            }
+            pa = pb;
+        }
+        return false;
     }
     for (a = e - SL_PIECE; a < ix->ids[k + 1u]; a += SL_POLY_STEP) {
         const uint32_t b = a + SL_POLY_STEP < ix->ids[k + 1u] ? a + SL_POLY_STEP : ix->ids[k + 1u];
@@ -296,6 +348,10 @@ bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, ui
         }
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c];
              k += (ix->ids[k] & SL_PIECE) != 0u ? 2u : 1u) {
+            /* The entry just tried first is not near: not again. */
+            if (SL_FOR_SPEED && k == ix->hit) {
+                continue;
+            }
             if (near_entry(ix, r, k, &q)) {
                 ix->hit = k;
                 return true;

@@ -9,6 +9,7 @@
 #define SYMLINE_LIB_SEGINDEX_H
 
 #include "common.h"
+#include "segments.h"
 #include "symline/detect.h"
 
 /* Cells of 1 << SL_CELL_SHIFT full-resolution pixels square. */
@@ -55,6 +56,12 @@ typedef struct symline_i_cellwalk {
     uint32_t piece_end, width;       /* FILL: a curve piece's second entry; 2 then, else 1 */
     const uint32_t *head, *next;     /* GATHER */
     uint32_t *cand, cand_cap, n;     /* GATHER: n found; cap + 1 when full */
+#if SL_FOR_SPEED_DEEP
+    /* COUNT, FILL of symline_i_segindex_build(): the curve runs' boxes the
+     * count keeps for the fill, box k at boxes[-2 - 2k] and [-1 - 2k]: the
+     * first `kept` runs (at most box_cap), `used` of them read so far. */
+    uint32_t *boxes, box_cap, kept, used;
+#endif
 } symline_i_cellwalk;
 
 void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int32_t bx, int32_t by,
@@ -88,5 +95,14 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
  * many points. */
 bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
                              int32_t x, int32_t y, int32_t tol_q8);
+
+/* True when the grid lists nothing in cell c: symline_i_segindex_near() of
+ * any point in it is then false once every segment is in the grid
+ * (ix->indexed = nseg), whatever entry it would try first (a point near an
+ * entry lies in a cell that lists it). */
+static inline bool symline_i_segindex_cell_empty(const symline_i_segindex *ix, uint32_t c)
+{
+    return ix->end[c] == (c == 0u ? 0u : ix->end[c - 1u]);
+}
 
 #endif /* SYMLINE_LIB_SEGINDEX_H */

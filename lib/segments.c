@@ -123,6 +123,46 @@ static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
     f[2] = (int64_t)(h - g[0]) * g[3] - (int64_t)(h - g[1]) * g[2];
 }
 
+/* Where the build optimises for speed on a 64-bit core (SL_FOR_SPEED_DEEP),
+ * a chord with a direction is swept by window_ring(): the crosses of the
+ * last SL_RING points are kept (a power of two), so that a window of up to
+ * that many points drops its oldest cross without computing it again. A
+ * 32-bit core would hold them on the stack, on the fit's path, the deepest
+ * of the detection: it computes that cross again. */
+#define SL_RING 8u
+
+/* window_max() for a chord with a direction and 1 <= win <= SL_RING, f its
+ * linear form (lin_form()): the largest and smallest cross and window sum
+ * (from 0), whose larger magnitude is the largest |.|. The ring starts at
+ * zero, so a window's first points drop nothing; an entry is read before it
+ * is written (win = SL_RING drops the one it replaces). */
+static void window_ring(const symline_point *p, uint32_t n, const int64_t f[3], uint32_t win,
+                        uint64_t best[2])
+{
+    int64_t hi = 0, lo = 0, shi = 0, slo = 0, sum = 0, ring[SL_RING];
+    uint32_t i;
+    for (i = 0; i < SL_RING; i++) {
+        ring[i] = 0;
+    }
+    for (i = 0; i < n; i++) {
+        const int64_t c = (int64_t)(((int32_t)p[i].x << 7) + p[i].fx) * f[0] +
+                          (int64_t)(((int32_t)p[i].y << 7) + p[i].fy) * f[1] + f[2];
+        hi = c > hi ? c : hi;
+        lo = c < lo ? c : lo;
+        if (win == 1u) {
+            continue;
+        }
+        sum += c - ring[(i - win) & (SL_RING - 1u)];
+        ring[i & (SL_RING - 1u)] = c;
+        if (i + 1u >= win) {
+            shi = sum > shi ? sum : shi;
+            slo = sum < slo ? sum : slo;
+        }
+    }
+    best[0] = (uint64_t)(hi > -lo ? hi : -lo);
+    best[1] = win == 1u ? best[0] : (uint64_t)(shi > -slo ? shi : -slo);
+}
+
 /* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]
  * (best[1]) and, where the build optimises for speed, in the same sweep the
  * largest |cross| of a point (best[0]). */
@@ -135,6 +175,10 @@ static void window_max(const symline_point *p, uint32_t n, uint32_t level, const
     f[0] = f[1] = f[2] = 0; /* not an initialiser: no memset call */
     if (SL_FOR_SPEED) {
         lin_form(level, g, f);
+    }
+    if (SL_FOR_SPEED_DEEP && (g[2] | g[3]) != 0 && win <= SL_RING) {
+        window_ring(p, n, f, win, best);
+        return;
     }
     for (i = 0; i < n; i++) {
         const int64_t c = chord_cross(&p[i], level, g, f);
@@ -267,7 +311,31 @@ SL_NOINLINE static bool ls_ends(const symline_point *p, uint32_t n, uint32_t lev
     symline_i_pt_off(&p[0], level, NULL, &f.o[0], &f.o[1]);
     /* Two sweeps: the mean (mx, my still 0), then the scatter about it. */
     f.mx = f.my = 0;
-    for (k = 0; k < 2u; k++) {
+    if (SL_FOR_SPEED) {
+        /* The same in one sweep: the sums of the offsets d, their squares and
+         * products, then sum (d - m)^2 = sum d^2 - 2 m sum d + cnt m^2 (and
+         * alike for the product), exact in 64 bits: |d| < 2^21 (a Q8
+         * difference of 25 bits over 16), at most 2^11 samples, so every sum
+         * and term stays below 2^55. The mean divides the 32-bit sums, as
+         * the first sweep does. */
+        int64_t tx = 0, ty = 0;
+        for (i = 0; i < n; i += step) {
+            int32_t dx, dy;
+            rel_q4(&p[i], &f, &dx, &dy);
+            tx += dx;
+            ty += dy;
+            cnt++;
+            a += (int64_t)dx * dx;
+            b += (int64_t)dx * dy;
+            c += (int64_t)dy * dy;
+        }
+        f.mx = (int32_t)(uint32_t)tx / (int32_t)cnt;
+        f.my = (int32_t)(uint32_t)ty / (int32_t)cnt;
+        a += f.mx * ((int64_t)f.mx * cnt - 2 * tx);
+        b += (int64_t)f.mx * f.my * cnt - (int64_t)f.mx * ty - (int64_t)f.my * tx;
+        c += f.my * ((int64_t)f.my * cnt - 2 * ty);
+    }
+    for (k = SL_FOR_SPEED ? 2u : 0u; k < 2u; k++) {
         for (i = 0; i < n; i += step) {
             int32_t dx, dy;
             rel_q4(&p[i], &f, &dx, &dy);
@@ -406,52 +474,11 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     s->merged = false;
 }
 
-/* True when (px, py) lies within tol of the segment a-b (all Q8). */
-static inline bool near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by,
-                              const symline_i_near *q)
-{
-    const int32_t px = q->x, py = q->y, tol = q->tol;
-    /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
-    int32_t dx, dy, wx, wy, t2, c;
-    int64_t t, dd;
-    if ((px < ax - tol && px < bx - tol) || (px > ax + tol && px > bx + tol) ||
-        (py < ay - tol && py < by - tol) || (py > ay + tol && py > by + tol)) {
-        return false;
-    }
-    dx = bx - ax;
-    dy = by - ay;
-    wx = px - ax;
-    wy = py - ay;
-    t = (int64_t)wx * dx + (int64_t)wy * dy;
-    dd = (int64_t)dx * dx + (int64_t)dy * dy;
-    if (t <= 0 || t >= dd) {
-        /* Beyond an end (or no chord, t = 0): the distance to that end. */
-        const int32_t ex = t <= 0 ? wx : px - bx, ey = t <= 0 ? wy : py - by;
-        return (int64_t)ex * ex + (int64_t)ey * ey <= (int64_t)tol * tol;
-    }
-    /* Inside the chord: |w x d| <= tol |d|, squared. Coarsen all lengths alike
-     * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
-     * no square root and no division, so this stays cheap and shallow. */
-    t2 = tol;
-    while (SL_OUTSIDE(dx, 32767) || SL_OUTSIDE(dy, 32767) || SL_OUTSIDE(wx, 32767) ||
-           SL_OUTSIDE(wy, 32767) || t2 > 32767) {
-        dx /= 2;
-        dy /= 2;
-        wx /= 2;
-        wy /= 2;
-        t2 /= 2;
-    }
-    /* All within +-32767 now: the cross and the squares fit 32 bits. */
-    c = wx * dy - wy * dx;
-    return (int64_t)c * c <=
-           (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
-}
-
 bool symline_i_near_piece(const symline_point *a, const symline_point *b, const symline_i_near *q)
 {
     /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
-    return near_chord((int32_t)a->x << SL_Q8_SHIFT, (int32_t)a->y << SL_Q8_SHIFT,
-                      (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, q);
+    return symline_i_near_chord((int32_t)a->x << SL_Q8_SHIFT, (int32_t)a->y << SL_Q8_SHIFT,
+                                (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, q);
 }
 
 bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
@@ -460,7 +487,7 @@ bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
     uint32_t i;
     const symline_point *p = pts + s->first;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
-        return near_chord(s->x0, s->y0, s->x1, s->y1, q);
+        return symline_i_near_chord(s->x0, s->y0, s->x1, s->y1, q);
     }
     for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
         const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;

@@ -77,6 +77,12 @@ static inline uint32_t symline_i_smooth_dev(const symline_point *p, uint32_t n, 
 /* Curve test: max_dev above thr and above 1/32 of c's chord (its ends). */
 bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr);
 
+/* Speed-only code that makes a frame on the detection's deepest paths
+ * larger (a ring of crosses, a test inline): where the build optimises for
+ * speed on a 64-bit core only. The 32-bit targets are the firmware's, whose
+ * detection must stay within 512 B of stack (tools/firmware/check.sh). */
+#define SL_FOR_SPEED_DEEP (SL_FOR_SPEED && UINTPTR_MAX > 0xFFFFFFFFu)
+
 /* Curves are followed through every SL_POLY_STEP-th point (symline_i_near_segment(),
  * and the grid of earlier segments, segindex.c). */
 #define SL_POLY_STEP 4u
@@ -86,6 +92,49 @@ bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr
 typedef struct symline_i_near {
     int32_t x, y, tol;
 } symline_i_near;
+
+/* True when q's point lies within q's tolerance of the segment a-b (all Q8):
+ * the test of symline_i_near_piece() and symline_i_near_segment(), inline
+ * here for the grid of earlier segments (segindex.c, SL_FOR_SPEED_DEEP). */
+static inline bool symline_i_near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by,
+                                        const symline_i_near *q)
+{
+    const int32_t px = q->x, py = q->y, tol = q->tol;
+    /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
+    int32_t dx, dy, wx, wy, t2, c;
+    int64_t t, dd;
+    if ((px < ax - tol && px < bx - tol) || (px > ax + tol && px > bx + tol) ||
+        (py < ay - tol && py < by - tol) || (py > ay + tol && py > by + tol)) {
+        return false;
+    }
+    dx = bx - ax;
+    dy = by - ay;
+    wx = px - ax;
+    wy = py - ay;
+    t = (int64_t)wx * dx + (int64_t)wy * dy;
+    dd = (int64_t)dx * dx + (int64_t)dy * dy;
+    if (t <= 0 || t >= dd) {
+        /* Beyond an end (or no chord, t = 0): the distance to that end. */
+        const int32_t ex = t <= 0 ? wx : px - bx, ey = t <= 0 ? wy : py - by;
+        return (int64_t)ex * ex + (int64_t)ey * ey <= (int64_t)tol * tol;
+    }
+    /* Inside the chord: |w x d| <= tol |d|, squared. Coarsen all lengths alike
+     * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
+     * no square root and no division, so this stays cheap and shallow. */
+    t2 = tol;
+    while (SL_OUTSIDE(dx, 32767) || SL_OUTSIDE(dy, 32767) || SL_OUTSIDE(wx, 32767) ||
+           SL_OUTSIDE(wy, 32767) || t2 > 32767) {
+        dx /= 2;
+        dy /= 2;
+        wx /= 2;
+        wy /= 2;
+        t2 /= 2;
+    }
+    /* All within +-32767 now: the cross and the squares fit 32 bits. */
+    c = wx * dy - wy * dx;
+    return (int64_t)c * c <=
+           (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
+}
 
 /* True when q's point lies within q's tolerance of the curve piece a-b
  * (whole pixels): one step of symline_i_near_segment()'s polyline. */

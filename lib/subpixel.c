@@ -162,28 +162,11 @@ static void energies3(const symline_i_across *a, uint32_t e[3])
     }
 }
 
-/* Offset (1/128 grid px) of the ridge's middle from index i across the line. */
-static int32_t offset_at(const symline_i_across *a)
+/* Offset (1/128 grid px) of the parabola's vertex through E at i-1, i and
+ * i+1 (e: no two neighbours equal); 0 where E has no minimum at i. */
+static inline int32_t vertex(const uint32_t e[3])
 {
-    uint32_t e[3];
     int32_t num, den;
-    if (a->i == 0u || a->i + 1u >= a->n) {
-        return 0;
-    }
-    energies3(a, e);
-    if (e[0] == e[1] || e[2] == e[1]) {
-        /* A run of equal E: its exact middle (the S point is its lower middle). */
-        const int32_t longest = 2 * (int32_t)a->lag + 1, last = (int32_t)a->n - 1 - (int32_t)a->i;
-        int32_t lo = 0, hi = 0;
-        while ((int32_t)a->i + lo > 1 && hi - lo + 1 < longest && energy_at(a, lo - 1) == e[1]) {
-            lo--;
-        }
-        while (hi + 1 < last && hi - lo + 1 < longest && energy_at(a, hi + 1) == e[1]) {
-            hi++;
-        }
-        /* i is the run's (a+b) div 2, so this is 0 or half a pixel. */
-        return lo + hi > 0 ? 64 : 0;
-    }
     if (e[0] < e[1] || e[2] < e[1]) {
         return 0; /* not a minimum of E (not an S point) */
     }
@@ -202,19 +185,116 @@ static int32_t offset_at(const symline_i_across *a)
     return den > 0 ? num * 64 / den : 0;
 }
 
+/* Offset (1/128 grid px) of the ridge's middle from index i across the line. */
+static int32_t offset_at(const symline_i_across *a)
+{
+    uint32_t e[3];
+    if (a->i == 0u || a->i + 1u >= a->n) {
+        return 0;
+    }
+    energies3(a, e);
+    if (e[0] == e[1] || e[2] == e[1]) {
+        /* A run of equal E: its exact middle (the S point is its lower middle). */
+        const int32_t longest = 2 * (int32_t)a->lag + 1, last = (int32_t)a->n - 1 - (int32_t)a->i;
+        int32_t lo = 0, hi = 0;
+        while ((int32_t)a->i + lo > 1 && hi - lo + 1 < longest && energy_at(a, lo - 1) == e[1]) {
+            lo--;
+        }
+        while (hi + 1 < last && hi - lo + 1 < longest && energy_at(a, hi + 1) == e[1]) {
+            hi++;
+        }
+        /* i is the run's (a+b) div 2, so this is 0 or half a pixel. */
+        return lo + hi > 0 ? 64 : 0;
+    }
+    return vertex(e);
+}
+
+/* The squared difference of two gray values. */
+static inline uint32_t sq(uint32_t l, uint32_t r)
+{
+    const int32_t d = (int32_t)l - (int32_t)r;
+    return (uint32_t)(d * d);
+}
+
+/* Marks a point for offset_at() (fx; no offset is this far). */
+#define SL_SUB_LATER INT8_MIN
+
+/* The offsets of points q[0, n) with m = 3 (the default radius) at level 0
+ * or 1 (most points), to save time (SL_FOR_SPEED): away from the border, E
+ * at i-1, i and i+1 from the nine gray values around i in straight-line
+ * code; vert and level constants. A point near the border or on a run of
+ * equal E is marked SL_SUB_LATER. Returns how many were. */
+static inline uint32_t offsets_m3(const symline_image *img, uint32_t n_across, int vert,
+                                  uint32_t level, symline_point *q, uint32_t n)
+{
+    const ptrdiff_t st = vert ? (ptrdiff_t)1 << level : (ptrdiff_t)img->stride << level;
+    const size_t sd = img->stride;
+    uint32_t k, later = 0u;
+    for (k = 0; k < n; k++) {
+        /* g + j * st: the block of index i + j. */
+        const uint8_t *g = img->data + ((size_t)q[k].y << level) * sd + ((size_t)q[k].x << level);
+        const uint32_t i = vert ? q[k].x : q[k].y;
+        if (i >= 4u && i + 4u < n_across) {
+            const uint32_t m4 = grid_px(g - 4 * st, sd, level), m3 = grid_px(g - 3 * st, sd, level);
+            const uint32_t m2 = grid_px(g - 2 * st, sd, level), m1 = grid_px(g - st, sd, level);
+            const uint32_t c0 = grid_px(g, sd, level), p1 = grid_px(g + st, sd, level);
+            const uint32_t p2 = grid_px(g + 2 * st, sd, level), p3 = grid_px(g + 3 * st, sd, level);
+            const uint32_t p4 = grid_px(g + 4 * st, sd, level);
+            uint32_t e[3];
+            /* E(c) = 3 d(c-1, c+1)^2 + 2 d(c-2, c+2)^2 + d(c-3, c+3)^2. */
+            e[0] = 3u * sq(m2, c0) + 2u * sq(m3, p1) + sq(m4, p2);
+            e[1] = 3u * sq(m1, p1) + 2u * sq(m2, p2) + sq(m3, p3);
+            e[2] = 3u * sq(c0, p2) + 2u * sq(m1, p3) + sq(m2, p4);
+            if (e[0] != e[1] && e[2] != e[1]) {
+                const int32_t off = vertex(e);
+                q[k].fx = (int8_t)(vert ? off : 0);
+                q[k].fy = (int8_t)(vert ? 0 : off);
+                continue;
+            }
+        }
+        q[k].fx = SL_SUB_LATER;
+        q[k].fy = 0;
+        later++;
+    }
+    return later;
+}
+
+/* offsets_m3() with the pass's axis and level as constants. Out of line:
+ * its frame is gone when offset_at() runs (the stack budget). */
+SL_NOINLINE static uint32_t offsets_fast(const symline_image *img, const symline_i_pass *p,
+                                         symline_point *q, uint32_t n)
+{
+    if (p->axis == SYMLINE_AXIS_VERTICAL) {
+        return p->level == 0u ? offsets_m3(img, p->w, 1, 0u, q, n)
+                              : offsets_m3(img, p->w, 1, 1u, q, n);
+    }
+    return p->level == 0u ? offsets_m3(img, p->h, 0, 0u, q, n) : offsets_m3(img, p->h, 0, 1u, q, n);
+}
+
 void symline_i_subpixel(const symline_image *img, const symline_i_pass *p, symline_point *q,
                         uint32_t n)
 {
     const int vert = p->axis == SYMLINE_AXIS_VERTICAL;
     symline_i_across a;
-    uint32_t k;
+    uint32_t k = 0u;
+    if (SL_FOR_SPEED && p->level <= 1u && p->m == 3u) {
+        /* Only the points marked SL_SUB_LATER are left: from the first of
+         * them on, every point as below (the same offsets again; a second
+         * test per point would make the frame larger). */
+        if (offsets_fast(img, p, q, n) == 0u) {
+            return;
+        }
+        while (q[k].fx != SL_SUB_LATER) {
+            k++;
+        }
+    }
     a.stride = img->stride;
     a.step = vert ? ((size_t)1u << p->level) : (size_t)img->stride << p->level;
     a.level = p->level;
     a.n = vert ? p->w : p->h;
     a.m = p->m;
     a.lag = p->lag;
-    for (k = 0; k < n; k++) {
+    for (; k < n; k++) {
         int32_t off;
         a.i = vert ? q[k].x : q[k].y;
         a.at =

@@ -45,6 +45,31 @@ static void integer_square_root(void **state)
     }
 }
 
+/* Every bit length: the root starts at the largest power of 4 not above v
+ * (found from v's highest bit where the build optimises for speed), so
+ * each power of 2, its neighbours and the squares next to it are checked. */
+static void square_root_every_bit_length(void **state)
+{
+    uint32_t k;
+    (void)state;
+    for (k = 1; k < 64; k++) {
+        const uint64_t p = (uint64_t)1 << k;
+        const uint64_t vs[3] = {p - 1u, p, p + 1u};
+        uint32_t j;
+        for (j = 0; j < 3u; j++) {
+            const uint64_t r = symline_i_isqrt64(vs[j]);
+            assert_true(r * r <= vs[j]);
+            assert_true(r >= 0xFFFFFFFFu || (r + 1u) * (r + 1u) > vs[j]);
+        }
+        if (k < 32) {
+            const uint64_t q = p * p; /* 2^2k and its neighbours */
+            assert_true(symline_i_isqrt64(q) == p);
+            assert_true(symline_i_isqrt64(q - 1u) == p - 1u);
+            assert_true(symline_i_isqrt64(q + 1u) == p);
+        }
+    }
+}
+
 static void q8_division(void **state)
 {
     (void)state;
@@ -62,6 +87,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(q8_coordinates),
         cmocka_unit_test(integer_square_root),
+        cmocka_unit_test(square_root_every_bit_length),
         cmocka_unit_test(q8_division),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

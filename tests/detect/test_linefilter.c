@@ -185,6 +185,82 @@ static void whole_piece_side_test(void **state)
     assert_true(band_fails(200, 60, 60, 87u));  /* 140 < 140.5 */
 }
 
+/* The whole-piece test the plain way: every side clamped to the frame. */
+static bool piece_fails_ref(const symline_i_linefilter *f, const symline_image *img, bool horiz,
+                            uint32_t level, uint32_t k, const symline_point *q, uint32_t n)
+{
+    const uint32_t half = (1u << level) >> 1, off = k << level, len = n << level;
+    const uint32_t lim = horiz ? img->height : img->width;
+    uint32_t lo = 0u, hi = 0u, centre = 0u, i, side, ridge;
+    for (i = 0; i < n; i++) {
+        const uint32_t x = ((uint32_t)q[i].x << level) + half;
+        const uint32_t y = ((uint32_t)q[i].y << level) + half;
+        const uint32_t pos = horiz ? y : x, a = pos >= off ? pos - off : 0u;
+        const uint32_t b = pos + off < lim ? pos + off : lim - 1u;
+        centre += img->data[y * img->stride + x];
+        lo += horiz ? img->data[a * img->stride + x] : img->data[y * img->stride + a];
+        hi += horiz ? img->data[b * img->stride + x] : img->data[y * img->stride + b];
+    }
+    side = lo > hi ? lo : hi;
+    if (centre <= side) {
+        return true;
+    }
+    ridge = centre - side;
+    if ((2u * side - lo - hi) * (2u * f->asym_pct) > ridge * 100u) {
+        return true;
+    }
+    return (uint64_t)ridge * len < (uint64_t)f->ridge_min * n * (len + 16u);
+}
+
+/* Pieces along and across both borders of a noisy frame, both axes, the
+ * first scales and reaches up to past half the frame: the same answer as
+ * the plain clamped sums (the speed builds read most sides unclamped). */
+static void whole_piece_side_test_at_borders(void **state)
+{
+    enum {
+        W = 48,
+        H = 36
+    };
+    static uint8_t px[W * H];
+    symline_point q[40];
+    symline_image img;
+    symline_config cfg;
+    symline_i_linefilter f;
+    uint32_t seed = 3u, i, t, fails = 0u;
+    (void)state;
+    for (i = 0; i < W * H; i++) {
+        seed = seed * 1664525u + 1013904223u;
+        px[i] = (uint8_t)(((i / W) % 5u == 2u ? 150u : 40u) + (seed >> 26));
+    }
+    img.width = W;
+    img.height = H;
+    img.stride = W;
+    img.data = px;
+    symline_config_default(&cfg);
+    symline_i_linefilter_setup(&f, &cfg);
+    for (t = 0; t < 400u; t++) {
+        const uint32_t level = t % 3u, k = 1u + (t / 3u) % 12u, n = 4u + t % 30u;
+        const bool horiz = (t / 7u) % 2u == 0u;
+        const uint32_t gw = W >> level, gh = H >> level;
+        uint32_t x = (t * 7u) % gw, y = (t * 5u) % gh;
+        for (i = 0; i < n; i++) {
+            q[i].x = (uint16_t)x;
+            q[i].y = (uint16_t)y;
+            x = (x + 1u) % gw;
+            y = (y + (i % 3u == 0u ? 1u : 0u)) % gh;
+        }
+        f.ridge_min = t % 4u;
+        f.asym_pct = t % 5u == 0u ? 0u : 40u;
+        assert_int_equal(
+            symline_i_linefilter_piece_fails(
+                &f, &img, horiz ? SYMLINE_AXIS_HORIZONTAL : SYMLINE_AXIS_VERTICAL, level, k, q, n),
+            piece_fails_ref(&f, &img, horiz, level, k, q, n));
+        fails += piece_fails_ref(&f, &img, horiz, level, k, q, n) ? 1u : 0u;
+    }
+    /* Both answers occur. */
+    assert_true(fails > 0u && fails < 400u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -192,6 +268,7 @@ int main(void)
         cmocka_unit_test(gray_test),
         cmocka_unit_test(statistics_and_adaptive_thresholds),
         cmocka_unit_test(whole_piece_side_test),
+        cmocka_unit_test(whole_piece_side_test_at_borders),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

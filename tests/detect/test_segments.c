@@ -2,7 +2,8 @@
 /*
  * From chains to segments (lib/segments.c): corner cuts, the least-squares
  * fit and the line/curve decision, the bend of flat arcs, distances to
- * chords and nearness to earlier segments.
+ * chords and nearness to earlier segments (one by one and through the grid
+ * of earlier segments, lib/segindex.c).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -13,6 +14,7 @@
 
 #include <cmocka.h>
 
+#include "segindex.h"
 #include "segments.h"
 
 /* An L: 7 points down x = 0, then 8 to the right along y = 6. */
@@ -207,6 +209,164 @@ static void near_segment(void **state)
     assert_false(near(&s, pts, 17 * 256, 17 * 256, 256)); /* on the chord only */
 }
 
+/* A small deterministic generator (tests only). */
+static uint32_t rnd(uint32_t *s)
+{
+    *s = *s * 1664525u + 1013904223u;
+    return *s >> 8;
+}
+
+/* A traced chain of n grid points from (x, y): neighbours differ by at most
+ * 1, with sub-pixel offsets in -64..63. */
+static void random_chain(symline_point *p, uint32_t n, uint32_t x, uint32_t y, uint32_t *s)
+{
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        p[i].x = (uint16_t)x;
+        p[i].y = (uint16_t)y;
+        p[i].fx = (int8_t)((int32_t)(rnd(s) % 128u) - 64);
+        p[i].fy = (int8_t)((int32_t)(rnd(s) % 128u) - 64);
+        x = x + rnd(s) % 3u - 1u;
+        y = y + rnd(s) % 3u - 1u;
+    }
+}
+
+/* symline_i_chord_dev() the plain way: every window's sum of crosses from
+ * the points' Q8 positions, or every point's distance to a chord end. */
+static uint32_t chord_dev_ref(const symline_point *p, uint32_t n, uint32_t level,
+                              const symline_segment *c, uint32_t win)
+{
+    const int64_t dx = c->x1 - c->x0, dy = c->y1 - c->y0;
+    uint64_t best = 0u;
+    uint32_t i, j;
+    if (n == 0u) {
+        return 0u;
+    }
+    if (dx == 0 && dy == 0) {
+        for (i = 0; i < n; i++) {
+            const int64_t wx = symline_i_pt_q8x(&p[i], level) - c->x0;
+            const int64_t wy = symline_i_pt_q8y(&p[i], level) - c->y0;
+            const uint64_t d = (uint64_t)(wx * wx + wy * wy);
+            best = d > best ? d : best;
+        }
+        return (uint32_t)symline_i_isqrt64(best);
+    }
+    win = win < 1u ? 1u : (win > n ? n : win);
+    for (i = 0; i + win <= n; i++) {
+        int64_t sum = 0;
+        for (j = i; j < i + win; j++) {
+            sum += (symline_i_pt_q8x(&p[j], level) - c->x0) * dy -
+                   (symline_i_pt_q8y(&p[j], level) - c->y0) * dx;
+        }
+        best = (uint64_t)(sum < 0 ? -sum : sum) > best ? (uint64_t)(sum < 0 ? -sum : sum) : best;
+    }
+    return symline_i_div_q8(best, symline_i_isqrt64((uint64_t)(dx * dx + dy * dy)) * win);
+}
+
+/* The sweeps (one window, and the pair of symline_i_chord_devs()) against
+ * the plain sums, for every window width up to past the ring of crosses the
+ * speed builds keep, short and long chains, and chords with no direction. */
+static void chord_dev_every_window(void **state)
+{
+    symline_point p[96];
+    symline_segment c;
+    uint32_t seed = 7u, t;
+    (void)state;
+    memset(&c, 0, sizeof c);
+    for (t = 0; t < 200u; t++) {
+        const uint32_t n = 1u + rnd(&seed) % 96u, level = rnd(&seed) % 4u;
+        uint32_t win, dev[2];
+        random_chain(p, n, 200u + rnd(&seed) % 100u, 200u + rnd(&seed) % 100u, &seed);
+        c.x0 = symline_i_pt_q8x(&p[0], level) + (int32_t)(rnd(&seed) % 2048u) - 1024;
+        c.y0 = symline_i_pt_q8y(&p[0], level) + (int32_t)(rnd(&seed) % 2048u) - 1024;
+        c.x1 = t % 10u == 0u ? c.x0 : symline_i_pt_q8x(&p[n - 1u], level);
+        c.y1 = t % 10u == 0u ? c.y0 : symline_i_pt_q8y(&p[n - 1u], level);
+        for (win = 0; win <= 12u; win++) {
+            assert_int_equal(symline_i_chord_dev(p, n, level, &c, win),
+                             chord_dev_ref(p, n, level, &c, win));
+        }
+        symline_i_chord_devs(p, n, level, &c, SL_SMOOTH_WIN, dev);
+        assert_int_equal(dev[0], chord_dev_ref(p, n, level, &c, 1u));
+        assert_int_equal(dev[1], chord_dev_ref(p, n, level, &c, SL_SMOOTH_WIN));
+    }
+}
+
+/* The grid of earlier segments answers as testing every segment does, for
+ * points along paths (its entry found last is tried first), and a cell it
+ * lists nothing in holds no point near any segment (what the pass's chain
+ * search relies on to skip the test). */
+static void grid_near_equals_every_segment(void **state)
+{
+    enum {
+        W = 320,
+        H = 240,
+        NSEG = 12,
+        PER = 24
+    };
+    static uint32_t mem[4096];
+    static symline_point pts[NSEG * PER];
+    symline_segment segs[NSEG];
+    symline_result r;
+    symline_i_segindex ix;
+    uint32_t seed = 11u, k, t;
+    (void)state;
+    assert_true(symline_i_segindex_ws_size(W, H) <= sizeof mem);
+    memset(&r, 0, sizeof r);
+    memset(segs, 0, sizeof segs);
+    r.points = pts;
+    r.segments = segs;
+    for (k = 0; k < NSEG; k++) {
+        symline_segment *s = &segs[k];
+        symline_point *q = &pts[k * PER];
+        uint32_t i;
+        random_chain(q, PER, 20u + rnd(&seed) % (W - 40u), 20u + rnd(&seed) % (H - 40u), &seed);
+        for (i = 0; i < PER; i++) {
+            q[i].fx = 0; /* full-resolution points, as the pass keeps them */
+            q[i].fy = 0;
+        }
+        s->first = k * PER;
+        s->count = PER;
+        s->kind = (uint8_t)(k % 3u == 0u ? SYMLINE_KIND_CURVE : SYMLINE_KIND_LINE);
+        s->x0 = symline_i_pt_q8x(&q[0], 0u);
+        s->y0 = symline_i_pt_q8y(&q[0], 0u);
+        s->x1 = symline_i_pt_q8x(&q[PER - 1u], 0u);
+        s->y1 = symline_i_pt_q8y(&q[PER - 1u], 0u);
+    }
+    for (t = 0; t < 16u; t++) {
+        /* Levels 0..3, and id areas from roomy to too small for every
+         * segment (the speed builds keep the curve runs' boxes at its far
+         * end while they fit). */
+        const int32_t tol = (int32_t)(512u + 256u * ((1u << (t % 4u)) - 1u));
+        const size_t ends = 10u * 8u * 4u + 16u; /* the 10 x 8 cells, aligned */
+        const size_t room[4] = {sizeof mem, ends + 4u * 90u, ends + 4u * 60u, ends + 4u * 45u};
+        uint32_t x = rnd(&seed) % W, y = rnd(&seed) % H, i;
+        symline_i_segindex_build(&ix, mem, room[t / 4u], NULL, 0u, W, H, &r, NSEG, tol);
+        if (t < 4u) {
+            assert_int_equal(ix.indexed, NSEG);
+        }
+        ix.hit = SL_NO_HIT;
+        for (i = 0; i < 4000u; i++) {
+            const int32_t qx = (int32_t)(x << 8), qy = (int32_t)(y << 8);
+            symline_i_near q;
+            bool any = false;
+            q.x = qx;
+            q.y = qy;
+            q.tol = tol;
+            for (k = 0; k < NSEG; k++) {
+                any = any || symline_i_near_segment(&segs[k], pts, &q);
+            }
+            assert_int_equal(symline_i_segindex_near(&ix, &r, NSEG, qx, qy, tol), any);
+            if (ix.indexed == NSEG &&
+                symline_i_segindex_cell_empty(&ix, symline_i_cell_at(ix.cols, ix.rows, qx, qy))) {
+                assert_false(any);
+            }
+            /* A walk of single steps, now and then a jump. */
+            x = i % 200u == 199u ? rnd(&seed) % W : (x + rnd(&seed) % 3u + W - 1u) % W;
+            y = i % 200u == 199u ? rnd(&seed) % H : (y + rnd(&seed) % 3u + H - 1u) % H;
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -215,6 +375,8 @@ int main(void)
         cmocka_unit_test(bend_tells_flat_arc_from_line),
         cmocka_unit_test(distances),
         cmocka_unit_test(near_segment),
+        cmocka_unit_test(chord_dev_every_window),
+        cmocka_unit_test(grid_near_equals_every_segment),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
