@@ -49,7 +49,7 @@ static void lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w,
 }
 
 void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t y, uint16_t *acc,
-                              uint8_t *out)
+                              uint8_t *out, uint8_t *twin)
 {
     /* The width in a local: out (bytes) might alias the image's fields. */
     const uint32_t w = img->width >> level;
@@ -57,7 +57,9 @@ void symline_i_grid_level_row(const symline_image *img, uint32_t level, uint32_t
     const uint8_t *src = img->data + ((size_t)y << level) * stride;
     if (SL_FOR_SPEED && level - 1u < 4u) { /* levels 1..4 */
         lanes(src, stride, level, w, acc, out);
+        symline_i_grid_twin(out, 0u, w, twin);
         return;
     }
     symline_i_grid_blocks(src, stride, level, 0u, w, out);
+    symline_i_grid_twin(out, 0u, w, twin);
 }

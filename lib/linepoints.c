@@ -36,9 +36,9 @@
 #define SL_GRID_ROW symline_i_grid_row
 #endif
 void SL_GRID_ROW(const symline_image *img, const symline_i_pass *p, uint32_t y, uint16_t *acc,
-                 uint8_t *out)
+                 uint8_t *out, uint8_t *twin)
 {
-    symline_i_grid_level_row(img, p->level, y, acc, out);
+    symline_i_grid_level_row(img, p->level, y, acc, out, twin);
 }
 
 /* How far from a decided row a candidate's work reaches down the columns
@@ -488,7 +488,7 @@ SL_NOINLINE static void decide(lp_ctx *c)
 
 /* Grid row y of the pass (c->y): the frame's row at full resolution; at a
  * coarse level the grid row, and down the columns the ring's rows up to
- * y + R produced (each stored twice, see symline_i_collect()), with rows
+ * y + R produced (each written twice, see symline_i_collect()), with rows
  * y - R .. y + R at the ring's stride around the row returned. Apart from
  * the collection's loop: its frame is not on the deepest call chain. */
 SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
@@ -500,18 +500,14 @@ SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
     }
     SL_STAGE(GRID);
     if (p->axis == SYMLINE_AXIS_VERTICAL) {
-        symline_i_grid_row(c->img, p, y, c->acc, c->gray);
+        symline_i_grid_row(c->img, p, y, c->acc, c->gray, NULL);
         return c->gray;
     } else {
         const uint32_t R = reach(p), held = ring_rows(p);
         const uint32_t need = y + R < h ? y + R : h - 1u, first = y > R ? y - R : 0u;
         for (; c->produced <= need; c->produced++) {
-            uint8_t *g = c->gray + (size_t)(c->produced % held) * w, *g2 = g + (size_t)held * w;
-            uint32_t x;
-            symline_i_grid_row(c->img, p, c->produced, c->acc, g);
-            for (x = 0; x < w; x++) {
-                g2[x] = g[x];
-            }
+            uint8_t *g = c->gray + (size_t)(c->produced % held) * w;
+            symline_i_grid_row(c->img, p, c->produced, c->acc, g, g + (size_t)held * w);
         }
         /* Rows first .. need from the slot of row first on. */
         return c->gray + (size_t)(first % held + (y - first)) * w;

@@ -61,15 +61,20 @@ static inline __attribute__((always_inline)) void reduce(uint16x8_t *P, uint32_t
  * (<= 2 * 16 * 255) added pairwise level - 1 times (<= 256 * 255); then
  * four pixels from half as many (or half a vector at level 1). */
 static inline __attribute__((always_inline)) uint32_t
-lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w, uint8_t *out)
+lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w, uint8_t *out, uint8_t *twin)
 {
     const uint32_t s = 1u << level, nv = s / 2u;
     uint16x8_t P[8], Q;
     uint32_t x;
     for (x = 0; x + 8u <= w; x += 8u) {
+        uint8x8_t v;
         pair_sums(src + (size_t)x * s, stride, s, nv, P);
         reduce(P, nv);
-        vst1_u8(out + x, narrow(P[0], level));
+        v = narrow(P[0], level);
+        vst1_u8(out + x, v);
+        if (twin != NULL) {
+            vst1_u8(twin + x, v);
+        }
     }
     if (x + 4u <= w) {
         const uint8_t *b = src + (size_t)x * s;
@@ -84,6 +89,9 @@ lanes(const uint8_t *src, size_t stride, uint32_t level, uint32_t w, uint8_t *ou
         }
         t = vget_lane_u32(vreinterpret_u32_u8(narrow(Q, level)), 0);
         memcpy(out + x, &t, 4u);
+        if (twin != NULL) {
+            memcpy(twin + x, &t, 4u);
+        }
         x += 4u;
     }
     return x;
@@ -110,20 +118,25 @@ static uint32_t wide(const uint8_t *src, size_t stride, uint32_t level, uint32_t
     return w;
 }
 
+/* The row into out and, where twin is not NULL, into twin too: the lanes
+ * store both, the last blocks (all of them at level 5) are copied. */
 void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint32_t y,
-                        uint16_t *acc, uint8_t *out)
+                        uint16_t *acc, uint8_t *out, uint8_t *twin)
 {
     const uint32_t level = p->level, w = p->w;
     const size_t stride = img->stride;
     const uint8_t *src = img->data + ((size_t)y << level) * stride;
     uint32_t x;
     switch (level) {
-    case 1u: x = lanes(src, stride, 1u, w, out); break;
-    case 2u: x = lanes(src, stride, 2u, w, out); break;
-    case 3u: x = lanes(src, stride, 3u, w, out); break;
-    case 4u: x = lanes(src, stride, 4u, w, out); break;
-    case 5u: x = wide(src, stride, 5u, w, out); break;
-    default: symline_i_grid_row_c(img, p, y, acc, out); return;
+    case 1u: x = lanes(src, stride, 1u, w, out, twin); break;
+    case 2u: x = lanes(src, stride, 2u, w, out, twin); break;
+    case 3u: x = lanes(src, stride, 3u, w, out, twin); break;
+    case 4u: x = lanes(src, stride, 4u, w, out, twin); break;
+    case 5u: (void)wide(src, stride, 5u, w, out); x = 0u; break; /* none in twin yet */
+    default: symline_i_grid_row_c(img, p, y, acc, out, twin); return;
     }
-    symline_i_grid_blocks(src, stride, level, x, w, out); /* at most three blocks */
+    if (level < 5u) {
+        symline_i_grid_blocks(src, stride, level, x, w, out); /* at most three blocks */
+    }
+    symline_i_grid_twin(out, x, w, twin);
 }

@@ -104,7 +104,7 @@ static void energy_checks(void)
 #define PT_STRIDE 88u
 static uint8_t pt_img[PT_STRIDE * PT_H + 4u];
 static uint16_t pt_acc[PT_W];
-static uint8_t pt_g1[PT_W], pt_g2[PT_W];
+static uint8_t pt_g1[PT_W], pt_g2[PT_W], pt_t1[PT_W];
 
 static void grid_checks(void)
 {
@@ -123,10 +123,17 @@ static void grid_checks(void)
                 p.h = PT_H >> level;
                 fill_gray(pt_img, sizeof pt_img, round);
                 for (y = 0; y < p.h; y++) {
-                    symline_i_grid_row(&img, &p, y, pt_acc, pt_g1);
-                    symline_i_grid_row_c(&img, &p, y, pt_acc, pt_g2);
+                    symline_i_grid_row(&img, &p, y, pt_acc, pt_g1, NULL);
+                    symline_i_grid_row_c(&img, &p, y, pt_acc, pt_g2, NULL);
                     FW_CHECK(memcmp(pt_g1, pt_g2, p.w) == 0, "grid row %lu level %u width %lu",
                              (unsigned long)y, level, (unsigned long)width);
+                    /* written twice (the ring down the columns) */
+                    memset(pt_g1, 0, sizeof pt_g1);
+                    memset(pt_t1, 0, sizeof pt_t1);
+                    symline_i_grid_row(&img, &p, y, pt_acc, pt_g1, pt_t1);
+                    FW_CHECK(memcmp(pt_g1, pt_g2, p.w) == 0 && memcmp(pt_t1, pt_g2, p.w) == 0,
+                             "grid row twice %lu level %u width %lu", (unsigned long)y, level,
+                             (unsigned long)width);
                 }
             }
         }

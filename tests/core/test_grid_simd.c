@@ -5,8 +5,8 @@
  * against the definition (the rounded mean of each 2^level x 2^level block,
  * (sum + 2^(2 level - 1)) >> 2 level), and where built, the SIMD version
  * against the portable reference: random images, levels 0..5, odd and short
- * widths, unaligned starts, strides, gray-value extremes, and no write past
- * the row or the scratch.
+ * widths, unaligned starts, strides, gray-value extremes, the row written
+ * once or twice (the twin), and no write past the rows or the scratch.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -99,7 +99,7 @@ static symline_image pick(uint32_t t, uint32_t *s, uint32_t *level)
 
 static void row_is_definition(void **state)
 {
-    uint8_t got[MAXW + 16u], want[MAXW + 16u];
+    uint8_t got[MAXW + 16u], want[MAXW + 16u], twin[MAXW + 16u];
     uint16_t acc[MAXW + 8u];
     uint32_t s = 11u, t, y, level;
     symline_i_pass p;
@@ -115,10 +115,17 @@ static void row_is_definition(void **state)
             memset(got, GUARD, sizeof got);
             memset(acc, GUARD, sizeof acc);
             memcpy(want, got, sizeof want);
-            symline_i_grid_row(&im, &p, y, acc, got);
+            symline_i_grid_row(&im, &p, y, acc, got, NULL);
             definition(&im, level, y, want);
             assert_memory_equal(got, want, sizeof got); /* nothing past w either */
             assert_int_equal(acc[im.width], 0x5a5au);   /* scratch: width entries */
+            /* Twice: the same row in both. */
+            memset(got, GUARD, sizeof got);
+            memset(twin, GUARD, sizeof twin);
+            symline_i_grid_row(&im, &p, y, acc, got, twin);
+            assert_memory_equal(got, want, sizeof got);
+            assert_memory_equal(twin, want, sizeof twin);
+            assert_int_equal(acc[im.width], 0x5a5au);
         }
         free_frame(&im);
     }
@@ -129,7 +136,7 @@ static void row_is_definition(void **state)
  * past the row. */
 static void simd_is_reference(void **state)
 {
-    uint8_t a[MAXW + 16u], b[MAXW + 16u];
+    uint8_t a[MAXW + 16u], b[MAXW + 16u], a2[MAXW + 16u], b2[MAXW + 16u];
     uint16_t acc[MAXW + 8u];
     uint32_t s = 5u, t, y, level;
     symline_i_pass p;
@@ -144,9 +151,20 @@ static void simd_is_reference(void **state)
         for (y = 0; y < 2u; y++) {
             memset(a, GUARD, sizeof a);
             memset(b, GUARD, sizeof b);
-            symline_i_grid_row(&im, &p, y, acc, a);
-            symline_i_grid_row_c(&im, &p, y, acc, b);
+            symline_i_grid_row(&im, &p, y, acc, a, NULL);
+            symline_i_grid_row_c(&im, &p, y, acc, b, NULL);
             assert_memory_equal(a, b, sizeof a);
+            /* Twice, each: both rows the reference's. */
+            memset(a, GUARD, sizeof a);
+            memset(a2, GUARD, sizeof a2);
+            symline_i_grid_row(&im, &p, y, acc, a, a2);
+            assert_memory_equal(a, b, sizeof a);
+            assert_memory_equal(a2, b, sizeof a2);
+            memset(a, GUARD, sizeof a);
+            memset(b2, GUARD, sizeof b2);
+            symline_i_grid_row_c(&im, &p, y, acc, a, b2);
+            assert_memory_equal(a, b, sizeof a);
+            assert_memory_equal(b2, b, sizeof b2);
         }
         free_frame(&im);
     }

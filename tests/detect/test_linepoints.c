@@ -60,7 +60,7 @@ static uint32_t full_frame_points(const symline_image *img, const symline_i_pass
     void *ws;
     uint32_t x, y, n = 0u;
     for (y = 0; y < h; y++) {
-        symline_i_grid_row(img, p, y, acc, g + (size_t)y * w);
+        symline_i_grid_row(img, p, y, acc, g + (size_t)y * w, NULL);
     }
     gi.width = w;
     gi.height = h;
