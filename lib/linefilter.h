@@ -108,7 +108,7 @@ static inline void symline_i_prefilter_setup(const symline_i_linefilter *f, syml
 }
 
 /* Most indices one call of symline_i_line_cand() reports. */
-#define SL_LINE_CAND_MAX 32u
+#define SL_LINE_CAND_MAX 64u
 
 /*
  * The entries of c[x .. n-1] whose gray values c[i], lo[i], hi[i] pass the
