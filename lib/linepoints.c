@@ -347,7 +347,10 @@ static SL_ALWAYS_INLINE uint32_t s_point(lp_ctx *c, uint32_t x, bool along)
     if (!along) {
         c->l.c0 = c->c + x; /* down column x from row y */
     }
-    if (at != 0u && at + 1u < c->l.n) {
+    if (along && c->l.m == 3u && c->dk > 3u) {
+        /* along a row the batch's candidates lie dk > m entries inside it */
+        energies3_in(&c->l, at, 3u, 1, &up, &e, &dn);
+    } else if (at != 0u && at + 1u < c->l.n) {
         energies3(&c->l, at, &up, &e, &dn, true, along);
     }
     s = (uint32_t)(up > e) & (uint32_t)(dn > e);
