@@ -304,18 +304,27 @@ static SL_LP_INLINE void decide_edge(lp_ctx *c, uint32_t x0, uint32_t x1, bool a
     }
 }
 
-/* decide_edge() behind the byte test's first part, c >= min_gray (speed
- * builds): most border entries fail that one compare, which costs a fifth
- * of the side loads, clamps and exact test per entry (callgrind). */
-static SL_ALWAYS_INLINE void decide_edge_pf(lp_ctx *c, const symline_i_prefilter *pf, uint32_t x0,
-                                            uint32_t x1, bool along)
+/* decide_edge() for a row's left or right border along the row (speed
+ * builds, w > 2 dk), behind the byte test (for the paper's filter its
+ * gray value alone): the clamped side is the row's
+ * first or last entry, the other lies in the row; most border entries fail
+ * at c >= min_gray, bright ones mostly at the contrast (callgrind). */
+static SL_ALWAYS_INLINE void decide_border(lp_ctx *c, const symline_i_prefilter *pf, bool left,
+                                           bool along)
 {
-    const uint32_t mg = pf->min_gray;
+    const uint32_t w = c->w, dk = c->dk, x0 = left ? 0u : w - dk;
     const uint8_t *const r = c->c;
+    const uint32_t fixed = left ? r[0] : r[w - 1u];
+    const bool paper = c->f->kind == SYMLINE_FILTER_PAPER; /* gray only */
     uint32_t x;
-    for (x = x0; x < x1; x++) {
-        if (r[x] >= mg) {
-            decide_edge(c, x, x + 1u, along);
+    for (x = x0; x < x0 + dk; x++) {
+        const uint32_t v = r[x];
+        if (v >= pf->min_gray) {
+            const uint32_t other = left ? r[x + dk] : r[x - dk];
+            const uint32_t side = fixed > other ? fixed : other;
+            if (paper || ((v >= side + pf->ridge_min || v == 255u) && side <= pf->side_max)) {
+                decide_at(c, x, left ? fixed : other, left ? other : fixed, along);
+            }
         }
     }
 }
@@ -483,7 +492,9 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         symline_i_prefilter pf;
         uint32_t at = 0u;
         symline_i_prefilter_setup(c->f, &pf);
-        decide_edge_pf(c, &pf, 0u, dk, along); /* the left border */
+        if (along) { /* down the columns dk = 0: no border */
+            decide_border(c, &pf, true, true); /* the left border */
+        }
 #if SL_LP_LANES
         /* down the columns: rows y - 4 .. y + 4 held */
         c->lanes_row = c->lanes && !along && c->y >= 4u && c->y + 4u < c->l.n;
@@ -491,7 +502,9 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         while (at < len) {
             decide_batch(c, symline_i_line_cand(&pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
-        decide_edge_pf(c, &pf, w - dk, w, along); /* the right border */
+        if (along) {
+            decide_border(c, &pf, false, true); /* the right border */
+        }
     }
 }
 
