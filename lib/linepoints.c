@@ -435,10 +435,15 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
     {
 #if SL_LP_LANES
         if (c->gray_rest) { /* what the byte test left open */
+            /* held in registers across the list's stores (along a row its
+             * sides are the row itself) */
+            const symline_i_lane_gray lg = c->lg;
+            const uint8_t *const r = c->c + dk, *const lo = along ? c->c : c->lo;
+            const uint8_t *const hi = (along ? c->c : c->hi) + (size_t)2u * dk;
             for (i = 0; i < k; i++) {
                 const uint32_t j = cand[i];
                 cand[kg] = (uint16_t)(dk + j);
-                kg += symline_i_lane_gray_ok(&c->lg, c->c[dk + j], c->lo[j], c->hi[j + 2u * dk]);
+                kg += symline_i_lane_gray_ok(&lg, r[j], lo[j], hi[j]);
             }
         } else
 #endif
@@ -492,8 +497,8 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         symline_i_prefilter pf;
         uint32_t at = 0u;
         symline_i_prefilter_setup(c->f, &pf);
-        if (along) { /* down the columns dk = 0: no border */
-            decide_border(c, &pf, true, true); /* the left border */
+        if (along) { /* the left border (down the columns dk = 0: none) */
+            decide_border(c, &pf, true, true);
         }
 #if SL_LP_LANES
         /* down the columns: rows y - 4 .. y + 4 held */
@@ -502,8 +507,8 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         while (at < len) {
             decide_batch(c, symline_i_line_cand(&pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
-        if (along) {
-            decide_border(c, &pf, false, true); /* the right border */
+        if (along) { /* the right border */
+            decide_border(c, &pf, false, true);
         }
     }
 }
