@@ -244,6 +244,7 @@ typedef struct lp_ctx {
     uint8_t *gray;     /* the coarse grid's row, or ring of rows */
     uint32_t produced; /* grid rows in the ring so far */
     uint16_t cand[SL_LINE_CAND_MAX];
+    symline_i_prefilter pf; /* the byte test of this pass's filter */
 #if SL_LP_LANES
     symline_i_lane_gray lg; /* the exact gray test after the byte test */
     bool gray_rest;         /* lg holds this pass's filter */
@@ -494,21 +495,20 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         const bool paper = c->f->kind == SYMLINE_FILTER_PAPER; /* gray only */
         const uint8_t *ic = c->c + dk, *ilo = paper ? ic : c->lo,
                       *ihi = paper ? ic : c->hi + (size_t)2u * dk;
-        symline_i_prefilter pf;
+        const symline_i_prefilter *const pf = &c->pf;
         uint32_t at = 0u;
-        symline_i_prefilter_setup(c->f, &pf);
         if (along) { /* the left border (down the columns dk = 0: none) */
-            decide_border(c, &pf, true, true);
+            decide_border(c, pf, true, true);
         }
 #if SL_LP_LANES
         /* down the columns: rows y - 4 .. y + 4 held */
         c->lanes_row = c->lanes && !along && c->y >= 4u && c->y + 4u < c->l.n;
 #endif
         while (at < len) {
-            decide_batch(c, symline_i_line_cand(&pf, ic, ilo, ihi, at, len, c->cand, &at), along);
+            decide_batch(c, symline_i_line_cand(pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
         if (along) { /* the right border */
-            decide_border(c, &pf, false, true);
+            decide_border(c, pf, false, true);
         }
     }
 }
@@ -614,6 +614,9 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->l.lag = p->lag;
     c->l.i0 = 0u;
     c->l.step = along ? 1 : (ptrdiff_t)(p->level == 0u ? img->stride : p->w);
+    if (SL_FOR_SPEED) { /* the size builds have no byte test */
+        symline_i_prefilter_setup(c->f, &c->pf);
+    }
 #if SL_LP_LANES
     /* the byte test and the rest of the gray test; the blocks of lanes at
      * m = 3 (k = 4), in a row that holds one */
