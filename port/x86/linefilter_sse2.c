@@ -46,8 +46,9 @@ uint32_t symline_i_line_cand(const symline_i_prefilter *pf, const uint8_t *c, co
     const __m128i rm = _mm_set1_epi8((char)pf->ridge_min);
     const __m128i sm = _mm_set1_epi8((char)pf->side_max);
     const size_t end = n;
-    size_t at = x; /* 64 bits wide: the block offsets fold into the loads */
-    uint32_t k = 0u;
+    size_t at = x;     /* 64 bits wide: the block offsets fold into the loads */
+    uint16_t *o = out; /* the next index goes here */
+    uint16_t *const full = out + SL_LINE_CAND_MAX;
     if (n < 16u) {
         return symline_i_line_cand_c(pf, c, lo, hi, x, n, out, next);
     }
@@ -80,13 +81,13 @@ uint32_t symline_i_line_cand(const symline_i_prefilter *pf, const uint8_t *c, co
         }
         for (; bits != 0u; bits &= bits - 1u) {
             const uint32_t i = (uint32_t)base + (uint32_t)__builtin_ctzll(bits);
-            out[k++] = (uint16_t)i;
-            if (k == SL_LINE_CAND_MAX) {
+            *o++ = (uint16_t)i;
+            if (o == full) {
                 *next = i + 1u;
-                return k;
+                return SL_LINE_CAND_MAX;
             }
         }
     }
     *next = n;
-    return k;
+    return (uint32_t)(o - out);
 }
