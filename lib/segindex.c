@@ -52,6 +52,15 @@ static void visit_cell(symline_i_cellwalk *w, uint32_t c)
     if (w->mode == SL_WALK_COUNT) {
         w->end[c] += w->width * w->sign;
         w->added += w->width;
+#if SL_FOR_SPEED_DEEP
+        if (w->sign == 1u) {
+            if (w->kept < w->cell_cap) {
+                w->cells[-1 - (ptrdiff_t)w->kept++] = c;
+            } else {
+                w->full = true;
+            }
+        }
+#endif
     } else if (w->mode == SL_WALK_FILL) {
         w->ids[w->end[c]++] = w->seg;
         if (w->width == 2u) {
@@ -126,6 +135,40 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     }
 }
 
+#if SL_FOR_SPEED_DEEP
+/* The count's end of an entry whose cells are kept from item `from` on: its
+ * last cell marked or, when they did not all fit, none of them kept and no
+ * later entry's either (the fill walks those). */
+static void entry_counted(symline_i_cellwalk *w, uint32_t from)
+{
+    if (w->mode != SL_WALK_COUNT || w->sign != 1u) {
+        return;
+    }
+    if (w->full) {
+        w->kept = from;
+        w->cell_cap = from;
+    } else if (w->kept > from) {
+        w->cells[-(ptrdiff_t)w->kept] |= SL_PIECE;
+    }
+}
+
+/* The fill of the next entry from the cells the count kept, in the order
+ * the count visited them (the fill visits the same entries in the same
+ * order); false when they were not kept. */
+static bool entry_filled(symline_i_cellwalk *w)
+{
+    uint32_t c;
+    if (w->mode != SL_WALK_FILL || w->used >= w->kept) {
+        return false;
+    }
+    do {
+        c = w->cells[-1 - (ptrdiff_t)w->used++];
+        visit_cell(w, c & ~SL_PIECE);
+    } while ((c & SL_PIECE) == 0u);
+    return true;
+}
+#endif
+
 /* Points of a curve's polyline in one grid entry (a run): where the build
  * optimises for speed, four of its pieces, which makes fewer entries to
  * enter and to list while a cell still asks only the runs near it; else
@@ -165,7 +208,16 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
     v->seg = id;
     v->width = 1u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
+#if SL_FOR_SPEED_DEEP
+        const uint32_t from = v->kept;
+        if (entry_filled(v)) {
+            return;
+        }
+#endif
         symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, v->margin);
+#if SL_FOR_SPEED_DEEP
+        entry_counted(v, from);
+#endif
         return;
     }
     v->width = 2u;
@@ -179,11 +231,8 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
             const symline_point *q = p + i, *const e = p + j;
             uint32_t x0 = q->x, y0 = q->y, x1 = x0, y1 = y0;
 #if SL_FOR_SPEED_DEEP
-            if (v->mode == SL_WALK_FILL && v->used < v->kept) {
-                /* The count's box of this run (the fill visits the same
-                 * runs in the same order). */
-                const uint32_t *b = v->boxes - (size_t)2u * ++v->used;
-                visit_box(v, b[0] & 0xFFFFu, b[0] >> 16, b[1] & 0xFFFFu, b[1] >> 16);
+            const uint32_t from = v->kept;
+            if (entry_filled(v)) {
                 continue;
             }
 #endif
@@ -194,14 +243,10 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
                 y0 = y < y0 ? y : y0;
                 y1 = y > y1 ? y : y1;
             }
-#if SL_FOR_SPEED_DEEP
-            if (v->mode == SL_WALK_COUNT && v->sign == 1u && v->kept < v->box_cap) {
-                uint32_t *b = v->boxes - (size_t)2u * ++v->kept;
-                b[0] = x0 | y0 << 16;
-                b[1] = x1 | y1 << 16;
-            }
-#endif
             visit_box(v, x0, y0, x1, y1);
+#if SL_FOR_SPEED_DEEP
+            entry_counted(v, from);
+#endif
         } else {
             symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
                                      (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, v->margin);
@@ -257,19 +302,27 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     v.mode = SL_WALK_COUNT;
     v.sign = 1u;
 #if SL_FOR_SPEED_DEEP
-    /* The runs' boxes go to the far end of the id area while it is unused;
-     * the fill reads those the ids it writes (from the start) leave alone. */
-    v.boxes = cap != 0u ? ix->ids + cap : NULL;
-    v.box_cap = cap / 2u;
+    /* The cells the count visits go to the far end of the id area while it
+     * is unused; the fill reads those the ids it writes (from the start)
+     * leave alone instead of walking the segments again. */
+    v.cells = cap != 0u ? ix->ids + cap : NULL;
+    v.cell_cap = cap;
     v.kept = v.used = 0u;
+    v.full = false;
 #endif
     for (s = 0; s < nseg && s < SL_PIECE; s++) {
+#if SL_FOR_SPEED_DEEP
+        const uint32_t kept = v.kept;
+#endif
         v.added = 0u;
         visit_segment(&v, r, s);
         if (v.added > cap - total) {
             /* Does not fit: take its counts back; it and later ones stay out. */
             v.sign = UINT32_MAX;
             visit_segment(&v, r, s);
+#if SL_FOR_SPEED_DEEP
+            v.kept = kept;
+#endif
             break;
         }
         total += v.added;
@@ -283,8 +336,13 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
     v.mode = SL_WALK_FILL;
 #if SL_FOR_SPEED_DEEP
-    if (v.kept > (cap - sum) / 2u) {
-        v.kept = (cap - sum) / 2u; /* ids [0, sum) would overwrite the rest */
+    if (v.kept > cap - sum) {
+        /* Ids [0, sum) would overwrite the rest: the whole entries before. */
+        uint32_t t = cap - sum;
+        while (t > 0u && (v.cells[-(ptrdiff_t)t] & SL_PIECE) == 0u) {
+            t--;
+        }
+        v.kept = t;
     }
 #endif
     for (s = 0; s < ix->indexed; s++) {
