@@ -197,7 +197,7 @@ static void visit_box(symline_i_cellwalk *w, uint32_t x0, uint32_t y0, uint32_t 
  * id, a curve run by run (the pieces of its polyline from an entry's first
  * point to its last; a cell then asks only the runs near it, not a long
  * curve along its whole length), each run in every cell it touches: a
- * piece's by its chord, a longer run's by the box of its points (which
+ * piece's by its chord, a longer run's by the box of its pieces' ends (which
  * holds its pieces). Point indices from 2^31 on (16 GiB of points) list
  * the curve whole. */
 static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32_t id)
@@ -226,8 +226,9 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
         v->seg = SL_PIECE | (s->first + i);
         v->piece_end = s->first + j;
         if (SL_FOR_SPEED) {
-            /* The box of the run's pixels (the pieces are tested in whole
-             * pixels), walked by pointer: no index arithmetic per point. */
+            /* The box of the run's pieces: of their ends alone (every
+             * SL_POLY_STEP-th point and the run's last, in whole pixels, as
+             * near_entry() tests them), walked by pointer. */
             const symline_point *q = p + i, *const e = p + j;
             uint32_t x0 = q->x, y0 = q->y, x1 = x0, y1 = y0;
 #if SL_FOR_SPEED_DEEP
@@ -236,8 +237,11 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
                 continue;
             }
 #endif
-            while (q++ != e) {
-                const uint32_t x = q->x, y = q->y;
+            while (q != e) {
+                uint32_t x, y;
+                q = e - q > (ptrdiff_t)SL_POLY_STEP ? q + SL_POLY_STEP : e;
+                x = q->x;
+                y = q->y;
                 x0 = x < x0 ? x : x0;
                 x1 = x > x1 ? x : x1;
                 y0 = y < y0 ? y : y0;
