@@ -419,6 +419,11 @@ bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, ui
                 return true;
             }
         }
+        if (SL_FOR_SPEED) {
+            /* Near none: the chain has left the entry, which would only be
+             * tried again in vain at its next points. */
+            ix->hit = SL_NO_HIT;
+        }
         i = ix->indexed;
     }
     for (; i < nseg; i++) {
