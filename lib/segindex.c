@@ -162,8 +162,14 @@ static bool entry_filled(symline_i_cellwalk *w)
         return false;
     }
     do {
+        uint32_t *e;
         c = w->cells[-1 - (ptrdiff_t)w->used++];
-        visit_cell(w, c & ~SL_PIECE);
+        /* visit_cell()'s fill, here without its mode tests. */
+        e = &w->end[c & ~SL_PIECE];
+        w->ids[(*e)++] = w->seg;
+        if (w->width == 2u) {
+            w->ids[(*e)++] = w->piece_end;
+        }
     } while ((c & SL_PIECE) == 0u);
     return true;
 }
