@@ -5,7 +5,10 @@
  * id (a line) or its runs of pieces (a curve); cells hold their entries in
  * one array (compressed rows), so the grid needs 4 bytes per cell and 4 per
  * entry (8 per curve run) and nothing else. A cell the previous piece of the
- * same line touched is skipped.
+ * same line touched is skipped. Where the build optimises for speed on
+ * 64-bit targets, the count keeps the cells it visits in the unused end of
+ * the id area, and the fill enters the ids from that list instead of walking
+ * the segments again (as far as the list stays clear of the ids).
  *
  * A point near a chord lies within tol of one of the chord's pieces of at
  * most one cell's length, hence inside that piece's bounding box grown by
