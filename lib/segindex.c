@@ -5,7 +5,10 @@
  * id (a line) or its runs of pieces (a curve); cells hold their entries in
  * one array (compressed rows), so the grid needs 4 bytes per cell and 4 per
  * entry (8 per curve run) and nothing else. A cell the previous piece of the
- * same line touched is skipped.
+ * same line touched is skipped. Where the build optimises for speed on
+ * 64-bit targets, the count keeps the cells it visits in the unused end of
+ * the id area, and the fill enters the ids from that list instead of walking
+ * the segments again (as far as the list stays clear of the ids).
  *
  * A point near a chord lies within tol of one of the chord's pieces of at
  * most one cell's length, hence inside that piece's bounding box grown by
@@ -52,6 +55,15 @@ static void visit_cell(symline_i_cellwalk *w, uint32_t c)
     if (w->mode == SL_WALK_COUNT) {
         w->end[c] += w->width * w->sign;
         w->added += w->width;
+#if SL_FOR_SPEED_DEEP
+        if (w->sign == 1u) {
+            if (w->kept < w->cell_cap) {
+                w->cells[-1 - (ptrdiff_t)w->kept++] = c;
+            } else {
+                w->full = true;
+            }
+        }
+#endif
     } else if (w->mode == SL_WALK_FILL) {
         w->ids[w->end[c]++] = w->seg;
         if (w->width == 2u) {
@@ -126,6 +138,46 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     }
 }
 
+#if SL_FOR_SPEED_DEEP
+/* The count's end of an entry whose cells are kept from item `from` on: its
+ * last cell marked or, when they did not all fit, none of them kept and no
+ * later entry's either (the fill walks those). */
+static void entry_counted(symline_i_cellwalk *w, uint32_t from)
+{
+    if (w->mode != SL_WALK_COUNT || w->sign != 1u) {
+        return;
+    }
+    if (w->full) {
+        w->kept = from;
+        w->cell_cap = from;
+    } else if (w->kept > from) {
+        w->cells[-(ptrdiff_t)w->kept] |= SL_PIECE;
+    }
+}
+
+/* The fill of the next entry from the cells the count kept, in the order
+ * the count visited them (the fill visits the same entries in the same
+ * order); false when they were not kept. */
+static bool entry_filled(symline_i_cellwalk *w)
+{
+    uint32_t c;
+    if (w->mode != SL_WALK_FILL || w->used >= w->kept) {
+        return false;
+    }
+    do {
+        uint32_t *e;
+        c = w->cells[-1 - (ptrdiff_t)w->used++];
+        /* visit_cell()'s fill, here without its mode tests. */
+        e = &w->end[c & ~SL_PIECE];
+        w->ids[(*e)++] = w->seg;
+        if (w->width == 2u) {
+            w->ids[(*e)++] = w->piece_end;
+        }
+    } while ((c & SL_PIECE) == 0u);
+    return true;
+}
+#endif
+
 /* Points of a curve's polyline in one grid entry (a run): where the build
  * optimises for speed, four of its pieces, which makes fewer entries to
  * enter and to list while a cell still asks only the runs near it; else
@@ -154,7 +206,7 @@ static void visit_box(symline_i_cellwalk *w, uint32_t x0, uint32_t y0, uint32_t 
  * id, a curve run by run (the pieces of its polyline from an entry's first
  * point to its last; a cell then asks only the runs near it, not a long
  * curve along its whole length), each run in every cell it touches: a
- * piece's by its chord, a longer run's by the box of its points (which
+ * piece's by its chord, a longer run's by the box of its pieces' ends (which
  * holds its pieces). Point indices from 2^31 on (16 GiB of points) list
  * the curve whole. */
 static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32_t id)
@@ -165,7 +217,16 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
     v->seg = id;
     v->width = 1u;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u || s->first + s->count >= SL_PIECE) {
+#if SL_FOR_SPEED_DEEP
+        const uint32_t from = v->kept;
+        if (entry_filled(v)) {
+            return;
+        }
+#endif
         symline_i_cellwalk_chord(v, s->x0, s->y0, s->x1, s->y1, v->margin);
+#if SL_FOR_SPEED_DEEP
+        entry_counted(v, from);
+#endif
         return;
     }
     v->width = 2u;
@@ -174,34 +235,31 @@ static void visit_segment(symline_i_cellwalk *v, const symline_result *r, uint32
         v->seg = SL_PIECE | (s->first + i);
         v->piece_end = s->first + j;
         if (SL_FOR_SPEED) {
-            /* The box of the run's pixels (the pieces are tested in whole
-             * pixels), walked by pointer: no index arithmetic per point. */
+            /* The box of the run's pieces: of their ends alone (every
+             * SL_POLY_STEP-th point and the run's last, in whole pixels, as
+             * near_entry() tests them), walked by pointer. */
             const symline_point *q = p + i, *const e = p + j;
             uint32_t x0 = q->x, y0 = q->y, x1 = x0, y1 = y0;
 #if SL_FOR_SPEED_DEEP
-            if (v->mode == SL_WALK_FILL && v->used < v->kept) {
-                /* The count's box of this run (the fill visits the same
-                 * runs in the same order). */
-                const uint32_t *b = v->boxes - (size_t)2u * ++v->used;
-                visit_box(v, b[0] & 0xFFFFu, b[0] >> 16, b[1] & 0xFFFFu, b[1] >> 16);
+            const uint32_t from = v->kept;
+            if (entry_filled(v)) {
                 continue;
             }
 #endif
-            while (q++ != e) {
-                const uint32_t x = q->x, y = q->y;
+            while (q != e) {
+                uint32_t x, y;
+                q = e - q > (ptrdiff_t)SL_POLY_STEP ? q + SL_POLY_STEP : e;
+                x = q->x;
+                y = q->y;
                 x0 = x < x0 ? x : x0;
                 x1 = x > x1 ? x : x1;
                 y0 = y < y0 ? y : y0;
                 y1 = y > y1 ? y : y1;
             }
-#if SL_FOR_SPEED_DEEP
-            if (v->mode == SL_WALK_COUNT && v->sign == 1u && v->kept < v->box_cap) {
-                uint32_t *b = v->boxes - (size_t)2u * ++v->kept;
-                b[0] = x0 | y0 << 16;
-                b[1] = x1 | y1 << 16;
-            }
-#endif
             visit_box(v, x0, y0, x1, y1);
+#if SL_FOR_SPEED_DEEP
+            entry_counted(v, from);
+#endif
         } else {
             symline_i_cellwalk_chord(v, (int32_t)p[i].x << 8, (int32_t)p[i].y << 8,
                                      (int32_t)p[j].x << 8, (int32_t)p[j].y << 8, v->margin);
@@ -257,19 +315,27 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     v.mode = SL_WALK_COUNT;
     v.sign = 1u;
 #if SL_FOR_SPEED_DEEP
-    /* The runs' boxes go to the far end of the id area while it is unused;
-     * the fill reads those the ids it writes (from the start) leave alone. */
-    v.boxes = cap != 0u ? ix->ids + cap : NULL;
-    v.box_cap = cap / 2u;
+    /* The cells the count visits go to the far end of the id area while it
+     * is unused; the fill reads those the ids it writes (from the start)
+     * leave alone instead of walking the segments again. */
+    v.cells = cap != 0u ? ix->ids + cap : NULL;
+    v.cell_cap = cap;
     v.kept = v.used = 0u;
+    v.full = false;
 #endif
     for (s = 0; s < nseg && s < SL_PIECE; s++) {
+#if SL_FOR_SPEED_DEEP
+        const uint32_t kept = v.kept;
+#endif
         v.added = 0u;
         visit_segment(&v, r, s);
         if (v.added > cap - total) {
             /* Does not fit: take its counts back; it and later ones stay out. */
             v.sign = UINT32_MAX;
             visit_segment(&v, r, s);
+#if SL_FOR_SPEED_DEEP
+            v.kept = kept;
+#endif
             break;
         }
         total += v.added;
@@ -283,8 +349,13 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
     v.mode = SL_WALK_FILL;
 #if SL_FOR_SPEED_DEEP
-    if (v.kept > (cap - sum) / 2u) {
-        v.kept = (cap - sum) / 2u; /* ids [0, sum) would overwrite the rest */
+    if (v.kept > cap - sum) {
+        /* Ids [0, sum) would overwrite the rest: the whole entries before. */
+        uint32_t t = cap - sum;
+        while (t > 0u && (v.cells[-(ptrdiff_t)t] & SL_PIECE) == 0u) {
+            t--;
+        }
+        v.kept = t;
     }
 #endif
     for (s = 0; s < ix->indexed; s++) {
@@ -356,6 +427,11 @@ bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, ui
                 ix->hit = k;
                 return true;
             }
+        }
+        if (SL_FOR_SPEED) {
+            /* Near none: the chain has left the entry, which would only be
+             * tried again in vain at its next points. */
+            ix->hit = SL_NO_HIT;
         }
         i = ix->indexed;
     }

@@ -57,10 +57,13 @@ typedef struct symline_i_cellwalk {
     const uint32_t *head, *next;     /* GATHER */
     uint32_t *cand, cand_cap, n;     /* GATHER: n found; cap + 1 when full */
 #if SL_FOR_SPEED_DEEP
-    /* COUNT, FILL of symline_i_segindex_build(): the curve runs' boxes the
-     * count keeps for the fill, box k at boxes[-2 - 2k] and [-1 - 2k]: the
-     * first `kept` runs (at most box_cap), `used` of them read so far. */
-    uint32_t *boxes, box_cap, kept, used;
+    /* COUNT, FILL of symline_i_segindex_build(): the cells the count visits,
+     * kept for the fill, entry by entry (a line, or a curve's run; its last
+     * cell marked SL_PIECE), item t at cells[-1 - t]: the first `kept`
+     * (at most cell_cap; a whole entry or none of it), `used` of them read
+     * so far; full: the entry being counted did not fit. */
+    uint32_t *cells, cell_cap, kept, used;
+    bool full;
 #endif
 } symline_i_cellwalk;
 

@@ -334,8 +334,8 @@ static void grid_near_equals_every_segment(void **state)
     }
     for (t = 0; t < 16u; t++) {
         /* Levels 0..3, and id areas from roomy to too small for every
-         * segment (the speed builds keep the curve runs' boxes at its far
-         * end while they fit). */
+         * segment (the speed builds keep the count's cells at its far end
+         * while they fit). */
         const int32_t tol = (int32_t)(512u + 256u * ((1u << (t % 4u)) - 1u));
         const size_t ends = 10u * 8u * 4u + 16u; /* the 10 x 8 cells, aligned */
         const size_t room[4] = {sizeof mem, ends + 4u * 90u, ends + 4u * 60u, ends + 4u * 45u};
@@ -363,6 +363,26 @@ static void grid_near_equals_every_segment(void **state)
             /* A walk of single steps, now and then a jump. */
             x = i % 200u == 199u ? rnd(&seed) % W : (x + rnd(&seed) % 3u + W - 1u) % W;
             y = i % 200u == 199u ? rnd(&seed) % H : (y + rnd(&seed) % 3u + H - 1u) % H;
+        }
+    }
+    /* Id areas from just the ids' size up: the same grid however few of the
+     * count's cells the speed builds keep for the fill at its far end. */
+    for (t = 0; t < 4u; t++) {
+        static uint32_t ref[4096];
+        const int32_t tol = (int32_t)(512u + 256u * ((1u << t) - 1u));
+        const size_t ends = 10u * 8u * 4u + 16u;
+        symline_i_segindex big;
+        uint32_t cells, sum, extra;
+        symline_i_segindex_build(&big, ref, sizeof ref, NULL, 0u, W, H, &r, NSEG, tol);
+        assert_int_equal(big.indexed, NSEG);
+        cells = big.cols * big.rows;
+        sum = big.end[cells - 1u];
+        for (extra = 0; extra < sum + 8u; extra += 1u + extra / 4u) {
+            symline_i_segindex_build(&ix, mem, ends + 4u * ((size_t)sum + extra), NULL, 0u, W, H,
+                                     &r, NSEG, tol);
+            assert_int_equal(ix.indexed, NSEG);
+            assert_memory_equal(ix.end, big.end, (size_t)cells * sizeof(uint32_t));
+            assert_memory_equal(ix.ids, big.ids, (size_t)sum * sizeof(uint32_t));
         }
     }
 }
