@@ -463,6 +463,16 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
         }
     }
     SL_STAGE(FILTER);
+    if (c->f->a_distance == 0u && *c->n + ks <= c->cap) {
+        /* the contrast filter, room for all: the S points are the points */
+        symline_point *const q = c->pts + *c->n;
+        for (i = 0; i < ks; i++) {
+            q[i].x = cand[i];
+            q[i].y = (uint16_t)c->y;
+        }
+        *c->n += ks;
+        return;
+    }
     for (i = 0; i < ks; i++) {
         const uint32_t x = cand[i];
         if (c->f->a_distance != 0u) {
