@@ -85,9 +85,9 @@ for c in m0plus-os m4; do
     esac
     # shellcheck disable=SC2086 # the words of the architecture flags
     arm-none-eabi-objdump -dt "$(arm-none-eabi-gcc $arch -print-libgcc-file-name)" |
-        awk -f tools/firmware/helpers.awk >"$TMP/libgcc-$c"
+        awk -f tools/firmware/helpers.awk >"$TMP/libgcc-$c.txt"
     # shellcheck disable=SC2046 # one argument per call-graph file
-    awk -v budget=512 -f tools/firmware/stack.awk "$TMP/libgcc-$c" $(find "$FW-$c/lib" -name '*.ci' | sort) \
+    awk -v budget=512 -f tools/firmware/stack.awk "$TMP/libgcc-$c.txt" $(find "$FW-$c/lib" -name '*.ci' | sort) \
         >"$TMP/stack-$c" || true
 done
 stack() { awk -v f="$2" '$1 == f { print $2 }' "$TMP/stack-$1"; }
