@@ -463,8 +463,10 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
         }
     }
     SL_STAGE(FILTER);
-    if (c->f->a_distance == 0u && *c->n + ks <= c->cap) {
-        /* the contrast filter, room for all: the S points are the points */
+    if (c->f->a_distance == 0u && ks != 0u && *c->n + ks <= c->cap) {
+        /* the contrast filter, room for all: the S points are the points
+         * (ks != 0: storage of capacity 0 may be NULL, and NULL + 0 is
+         * undefined) */
         symline_point *const q = c->pts + *c->n;
         for (i = 0; i < ks; i++) {
             q[i].x = cand[i];
