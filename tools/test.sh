@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: Apache-2.0
 # The whole test suite, as CI runs it:
 #   1. host build and every CTest test but the qemu one of step 4 (preset default);
-#   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (preset asan,
-#      built with -Os, so it runs the size forms of lib/ that SL_FOR_SPEED selects);
+#   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer twice: preset
+#      asan, built with -Os, so it runs the size forms of lib/ that SL_FOR_SPEED
+#      selects, and preset asan-speed, -O2, the speed forms and the SIMD ports;
 #   3. firmware checks: cross builds, no float / no malloc on the symbol table,
 #      stack and size budgets, static analysis, tests on an emulated Cortex-M4;
 #   4. the capture integration test on real kernel drivers (vivid, vimc) under qemu;
@@ -40,9 +41,11 @@ step "1. host build and tests (preset default)"
 record $? "host build and tests"
 
 if [ "$mode" != "--host" ]; then
-    step "2. sanitizers (preset asan: ASan + UBSan)"
+    step "2. sanitizers (presets asan and asan-speed: ASan + UBSan, -Os and -O2)"
     { cmake --preset asan >/dev/null && cmake --build --preset asan -j "$jobs" &&
-        ctest --preset asan -j "$jobs"; }
+        ctest --preset asan -j "$jobs" &&
+        cmake --preset asan-speed >/dev/null && cmake --build --preset asan-speed -j "$jobs" &&
+        ctest --preset asan-speed -j "$jobs"; }
     record $? "tests under ASan + UBSan"
 
     step "3. firmware (cross builds, symbols, stack, size, static analysis, emulated Cortex-M4)"
