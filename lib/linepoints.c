@@ -130,15 +130,13 @@ static SL_ALWAYS_INLINE void energies3_in(const line_view *l, uint32_t i, uint32
 }
 
 /* E(i-1), E(i) and E(i+1) of entry 0 < i < n-1 of the line; unrolled at
- * the default radius where `unroll` is set, with step 1 where `along` says
- * the line is a row. */
+ * the default radius (along a row at m = 3 s_point() calls energies3_in()
+ * with step 1 itself). */
 static SL_ALWAYS_INLINE void energies3(const line_view *l, uint32_t i, uint32_t *up, uint32_t *e,
-                                       uint32_t *dn, bool unroll, bool along)
+                                       uint32_t *dn)
 {
     if (SL_FOR_SPEED && i > l->m && i + l->m + 1u < l->n) {
-        if (unroll && l->m == 3u && along) { /* constant offsets */
-            energies3_in(l, i, 3u, 1, up, e, dn);
-        } else if (unroll && l->m == 3u) {
+        if (l->m == 3u) { /* constant offsets */
             energies3_in(l, i, 3u, l->step, up, e, dn);
         } else {
             energies3_in(l, i, l->m, l->step, up, e, dn);
@@ -165,7 +163,7 @@ static bool extremum_at(const line_view *l, uint32_t i, bool s)
         return false;
     }
     SL_STAGE(OPERATOR);
-    energies3(l, i, &up, &e, &dn, true, false);
+    energies3(l, i, &up, &e, &dn);
     SL_STAGE(EXTREMA);
     /* The run of equal energies through i, followed on the slow path. */
     while (up == e) {
@@ -361,7 +359,7 @@ static SL_ALWAYS_INLINE uint32_t s_point(lp_ctx *c, uint32_t x, bool along)
         /* along a row the batch's candidates lie dk > m entries inside it */
         energies3_in(&c->l, at, 3u, 1, &up, &e, &dn);
     } else if (at != 0u && at + 1u < c->l.n) {
-        energies3(&c->l, at, &up, &e, &dn, true, along);
+        energies3(&c->l, at, &up, &e, &dn);
     }
     s = (uint32_t)(up > e) & (uint32_t)(dn > e);
     if (up == e || dn == e) {
