@@ -617,15 +617,23 @@ void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint3
     }
 }
 
+uint32_t symline_i_field_top(const uint16_t *rows, uint32_t w)
+{
+    uint32_t x, lo = 0xFFFFu;
+    for (x = 0; x < w; x++) {
+        lo = rows[x] < lo ? rows[x] : lo;
+    }
+    return lo;
+}
+
 uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *pts,
                               uint32_t *row_start, uint32_t h)
 {
-    /* To save time (SL_FOR_SPEED): the rows wholly above the boundary (y < lo)
-     * are dropped unseen, and from its lowest row (hi) on the rest stays
-     * where it is. */
-    uint32_t y, i = 0u, k = 0u, lo = 0xFFFFu, hi = 0u;
+    /* To save time (SL_FOR_SPEED): from the boundary's lowest row (hi) on the
+     * rest stays where it is. (The rows wholly above it hold no points: the
+     * collection leaves them out, pass.c.) */
+    uint32_t y, i = 0u, k = 0u, hi = 0u;
     for (y = 0; SL_FOR_SPEED && y < w; y++) {
-        lo = rows[y] < lo ? rows[y] : lo;
         hi = rows[y] > hi ? rows[y] : hi;
     }
     for (y = 0; y < h; y++) {
@@ -634,9 +642,6 @@ uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *p
             return row_start[h]; /* the rest is field and stays where it is */
         }
         row_start[y] = k;
-        if (SL_FOR_SPEED && y < lo) {
-            i = end; /* the whole row lies above the field */
-        }
         for (; i < end; i++) { /* the points of row y */
             if (pts[i].y >= rows[pts[i].x]) {
                 /* Field by field (no memcpy call); the offsets fx, fy are

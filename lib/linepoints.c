@@ -555,7 +555,9 @@ SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
     } else {
         const uint32_t R = reach(p), held = ring_rows(p);
         const uint32_t need = y + R < h ? y + R : h - 1u, first = y > R ? y - R : 0u;
-        for (; c->produced <= need; c->produced++) {
+        /* (the first row decided may lie below the first row: symline_i_collect()) */
+        for (c->produced = c->produced > first ? c->produced : first; c->produced <= need;
+             c->produced++) {
             uint8_t *g = c->gray + (size_t)(c->produced % held) * w;
             symline_i_grid_row(c->img, p, c->produced, c->acc, g, g + (size_t)held * w);
         }
@@ -634,7 +636,12 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->lanes = c->gray_rest && p->m == 3u && p->k == 4u && c->w >= 2u * c->dk + SL_LP_LANES;
 #endif
     for (y = 0; y < h; y++) {
-        const uint8_t *row = grid_row_at(c, y);
+        const uint8_t *row;
+        row_start[y] = *n;
+        if (y < p->from) {
+            continue;
+        }
+        row = grid_row_at(c, y);
         c->c = row;
         c->lo = row;
         c->hi = row;
@@ -646,7 +653,6 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
             c->l.i0 = y;
         }
         c->y = y;
-        row_start[y] = *n;
         decide(c);
     }
     row_start[h] = *n;

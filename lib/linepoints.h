@@ -22,6 +22,8 @@ typedef struct symline_i_pass {
     uint32_t m;     /* radius */
     uint32_t k;     /* contrast sample offset across the line: m + 1 */
     uint32_t lag;   /* longest accepted plateau: end - marked index <= lag (= m) */
+    uint32_t from;  /* the first grid row decided: the rows above it lie above
+                       the field boundary in every column (0: none) */
     symline_i_linefilter filter;
 } symline_i_pass;
 
@@ -31,9 +33,11 @@ size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width);
 /*
  * The line points of one pass, in raster order, grid coordinates, written to
  * pts[0 .. *n-1] (at most cap); row_start[y] is the index of the first point
- * of grid row y, row_start[h] = *n (h+1 entries). Adds to *dropped the line
- * points that did not fit (cap too small). Strip processing: only a ring of
- * rows is held.
+ * of grid row y, row_start[h] = *n (h+1 entries). Grid rows above p->from
+ * are not decided (they hold no points; the caller drops every point there:
+ * the field boundary), but read as the rows below them need. Adds to
+ * *dropped the line points that did not fit (cap too small). Strip
+ * processing: only a ring of rows is held.
  * Returns SYMLINE_OK, SYMLINE_ERR_SIZE (empty grid) or SYMLINE_ERR_BUFFER
  * (ws_size below symline_i_collect_ws_size()).
  */

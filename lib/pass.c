@@ -43,6 +43,7 @@ void symline_i_pass_setup(symline_i_pass *p, const symline_config *cfg, symline_
     p->m = cfg->radius;
     p->k = cfg->radius + 1u;
     p->lag = cfg->radius;
+    p->from = 0u;
     symline_i_linefilter_setup(&p->filter, cfg);
 }
 
@@ -287,20 +288,13 @@ SL_NOINLINE static void trace(symline_i_run *d, const symline_i_pass *p, const u
  * d->npts), *n points; row_start[p->h + 1] counts those that did not fit. Apart from
  * symline_i_pass_run() so that the collection's call and the tracing's are never on
  * the stack together. */
-SL_NOINLINE static symline_status collect(symline_i_run *d, const symline_i_pass *p, uint8_t *ws,
+SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, uint8_t *ws,
                                           const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
-    symline_status st =
-        symline_i_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
-                          d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);
-    if (row_start[p->h + 1u] != 0u) {
-        d->truncated = true;
-    }
-    /* The raster list needs its room (all of it, stored or not) before the
-     * field boundary thins it. */
-    note_listed(d, *n, row_start[p->h + 1u]);
-    if (st == SYMLINE_OK && d->field_rows != NULL) {
-        /* Above the field: nothing to trace. */
+    symline_status st;
+    if (d->field_rows != NULL) {
+        /* Above the field: nothing to trace, and the grid rows above every
+         * column's first kept row are not even decided. */
         SL_STAGE(FIELD);
         if (!SL_FOR_SPEED || p->axis == SYMLINE_AXIS_HORIZONTAL ||
             d->cfg->axes != SYMLINE_AXES_BOTH) {
@@ -309,6 +303,18 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, const symline_i_pass
             symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
                                  d->field_rows);
         }
+        p->from = symline_i_field_top(d->field_rows, p->w);
+    }
+    st = symline_i_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
+                           d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);
+    if (row_start[p->h + 1u] != 0u) {
+        d->truncated = true;
+    }
+    /* The raster list needs its room (all of it, stored or not) before the
+     * field boundary thins it. */
+    note_listed(d, *n, row_start[p->h + 1u]);
+    if (st == SYMLINE_OK && d->field_rows != NULL) {
+        SL_STAGE(FIELD);
         *n = symline_i_field_drop(d->field_rows, p->w, point_at(d->r, d->npts), row_start, p->h);
     }
     return st;
@@ -338,8 +344,7 @@ SL_NOINLINE static symline_i_segindex *index_earlier(const symline_i_run *d,
     return ix;
 }
 
-symline_status symline_i_pass_run(symline_i_run *d, const symline_i_pass *p, uint8_t *ws,
-                                  uint8_t *end)
+symline_status symline_i_pass_run(symline_i_run *d, symline_i_pass *p, uint8_t *ws, uint8_t *end)
 {
     uint8_t *rest = ws;
     /* The row index (h + 1 entries), then the count of line points that did not fit. */

@@ -59,12 +59,12 @@ static inline size_t symline_i_pass_ws_size(const symline_i_pass *p, uint32_t wi
 
 /*
  * Runs pass p over d->img: appends its segments to d->r and their points
- * after the first d->npts, and updates d. [ws, end): the pass workspace
+ * after the first d->npts, and updates d (and p->from, the field boundary's
+ * first row). [ws, end): the pass workspace
  * after p itself (which the caller carved first). Returns SYMLINE_OK, or
  * SYMLINE_ERR_BUFFER when the workspace is smaller than symline_i_pass_ws_size()
  * (then d is unchanged but for d->truncated).
  */
-symline_status symline_i_pass_run(symline_i_run *d, const symline_i_pass *p, uint8_t *ws,
-                                  uint8_t *end);
+symline_status symline_i_pass_run(symline_i_run *d, symline_i_pass *p, uint8_t *ws, uint8_t *end);
 
 #endif /* SYMLINE_LIB_PASS_H */

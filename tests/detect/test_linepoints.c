@@ -5,7 +5,8 @@
  * grid image, whole energy and extrema maps, the same filter rule), for both
  * axes, three scales, both filters, several contrast limits and two radii,
  * on a synthetic and a real frame and on one of flat bands (plateaus);
- * nothing is written outside the workspace.
+ * the same list from a first row on (rows above it left out); nothing is
+ * written outside the workspace.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -150,6 +151,29 @@ static void compare_pass(const symline_image *img, const symline_config *cfg, sy
         }
     }
     assert_int_equal(row_start[p.h], na);
+    /* Rows above p.from left out (the field boundary): the list from there on,
+     * whatever rows the ring down the columns must read above it. */
+    for (i = 0; i < 4u; i++) {
+        const uint32_t froms[4] = {1u, p.h / 3u, p.h - 1u, p.h + 5u};
+        const uint32_t from = froms[i], f = from < p.h ? from : p.h;
+        uint32_t *rs = (uint32_t *)malloc(((size_t)p.h + 1u) * sizeof(uint32_t));
+        uint32_t nc = 0u, j;
+        memset(ws, 0x5A, wsn);
+        p.from = from;
+        assert_int_equal(symline_i_collect(img, &p, ws, wsn, b, p.w * p.h, &nc, rs, &dropped),
+                         SYMLINE_OK);
+        p.from = 0u;
+        assert_true(tu_guard_ok(ws, wsn));
+        assert_int_equal(nc, na - row_start[f]);
+        for (j = 0; j < nc; j++) {
+            assert_int_equal(b[j].x, a[row_start[f] + j].x);
+            assert_int_equal(b[j].y, a[row_start[f] + j].y);
+        }
+        for (y = 0; y <= p.h; y++) {
+            assert_int_equal(rs[y], y < f ? 0u : row_start[y] - row_start[f]);
+        }
+        free(rs);
+    }
     tu_guard_free(ws);
     free(a);
     free(b);
