@@ -617,15 +617,6 @@ void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint3
     }
 }
 
-uint32_t symline_i_field_top(const uint16_t *rows, uint32_t w)
-{
-    uint32_t x, lo = 0xFFFFu;
-    for (x = 0; x < w; x++) {
-        lo = rows[x] < lo ? rows[x] : lo;
-    }
-    return lo;
-}
-
 uint32_t symline_i_field_drop(const uint16_t *rows, uint32_t w, symline_point *pts,
                               uint32_t *row_start, uint32_t h)
 {

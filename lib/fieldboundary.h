@@ -26,9 +26,6 @@ bool symline_i_field_config_ok(const symline_field_config *fc);
 void symline_i_field_rows(const symline_field_boundary *b, uint32_t level, uint32_t w,
                           uint32_t width, uint32_t margin, uint16_t *rows);
 
-/* The first row any of the w columns keeps: the smallest of rows[0 .. w-1]. */
-uint32_t symline_i_field_top(const uint16_t *rows, uint32_t w);
-
 /* Drops the points of a pass's raster list (row_start[0..h], points in grid
  * coordinates) that lie above rows[x] (w entries); compacts the list in
  * place (x, y only: the offsets are set later, symline_i_subpixel()) and

@@ -236,6 +236,12 @@ typedef struct lp_ctx {
     symline_point *pts;
     uint32_t *n, *dropped;
     uint32_t cap, y, w, dk; /* dk: across the line along the row (vertical axis), else 0 */
+    uint32_t x0, x1;        /* the columns of row y decided: x0 .. x1-1 */
+    uint32_t at, len;       /* speed builds, w > 2 dk: the interior entries among
+                               them, dk + at .. dk + len-1 */
+    uint32_t top, full;     /* speed builds, below the field boundary: the rows no
+                               column keeps are those above top, every column keeps
+                               those from full on (field_spans()) */
     const symline_image *img;
     const symline_i_pass *p;
     uint16_t *acc;     /* box sums of the coarse grids' rows (speed builds) */
@@ -311,12 +317,14 @@ static SL_LP_INLINE void decide_edge(lp_ctx *c, uint32_t x0, uint32_t x1, bool a
 static SL_ALWAYS_INLINE void decide_border(lp_ctx *c, const symline_i_prefilter *pf, bool left,
                                            bool along)
 {
-    const uint32_t w = c->w, dk = c->dk, x0 = left ? 0u : w - dk;
+    const uint32_t w = c->w, dk = c->dk;
     const uint8_t *const r = c->c;
     const uint32_t fixed = left ? r[0] : r[w - 1u];
     const bool paper = c->f->kind == SYMLINE_FILTER_PAPER; /* gray only */
-    uint32_t x;
-    for (x = x0; x < x0 + dk; x++) {
+    /* the border's entries among columns c->x0 .. c->x1-1 */
+    const uint32_t x1 = left ? (dk < c->x1 ? dk : c->x1) : c->x1;
+    uint32_t x = left ? c->x0 : (w - dk > c->x0 ? w - dk : c->x0);
+    for (; x < x1; x++) {
         const uint32_t v = r[x];
         if (v >= pf->min_gray) {
             const uint32_t other = left ? r[x + dk] : r[x - dk];
@@ -497,17 +505,18 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
     if (!SL_FOR_SPEED || w <= 2u * dk) {
         /* Every entry with clamped sides: on scalar cores the byte test
          * costs what the exact test's first compares cost, and code. */
-        decide_edge(c, 0u, w, along);
+        decide_edge(c, c->x0, c->x1, along);
         return;
     }
     {
-        const uint32_t len = w - 2u * dk;
+        /* the interior entries dk + j, j = at .. len-1, of columns x0 .. x1-1 */
+        const uint32_t len = c->len;
         const bool paper = c->f->kind == SYMLINE_FILTER_PAPER; /* gray only */
         const uint8_t *ic = c->c + dk, *ilo = paper ? ic : c->lo,
                       *ihi = paper ? ic : c->hi + (size_t)2u * dk;
         const symline_i_prefilter *const pf = &c->pf;
-        uint32_t at = 0u;
-        if (along) { /* the left border (down the columns dk = 0: none) */
+        uint32_t at = c->at;
+        if (along && c->x0 < dk) { /* the left border (down the columns dk = 0: none) */
             decide_border(c, pf, true, true);
         }
 #if SL_LP_LANES
@@ -517,7 +526,7 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         while (at < len) {
             decide_batch(c, symline_i_line_cand(pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
-        if (along) { /* the right border */
+        if (along && c->x1 > w - dk) { /* the right border */
             decide_border(c, pf, false, true);
         }
     }
@@ -533,6 +542,74 @@ SL_NOINLINE static void decide(lp_ctx *c)
         decide_row(c, false);
     } else {
         decide_row(c, along);
+    }
+}
+
+/* The columns of each row that keep it below the field boundary, from the
+ * first kept rows rows[0 .. w-1] (w <= 65535) of a grid h rows high, where
+ * the build optimises for speed: no column keeps a row above c->top, every
+ * column those from c->full on, and for the rows between span[y] becomes x0
+ * | x1 << 16, columns x0 .. x1-1 from the first to the last one that keeps
+ * row y (x0 >= x1: none). In time w + (c->full - c->top); field_columns()
+ * reads them. */
+static void field_spans(lp_ctx *c, const uint16_t *rows, uint32_t w, uint32_t h, uint32_t *span)
+{
+    uint32_t x, y, x0 = 0xFFFFu, x1 = 0u, top = 0xFFFFu, full = 0u;
+    for (x = 0; x < w; x++) {
+        top = rows[x] < top ? rows[x] : top;
+        full = rows[x] > full ? rows[x] : full;
+    }
+    full = full < h ? full : h;
+    c->top = top;
+    c->full = full;
+    if (top >= full) {
+        return; /* no row between */
+    }
+    for (y = top; y < full; y++) {
+        span[y] = 0xFFFFu;
+    }
+    /* the columns whose first kept row is r (left to right: the first one
+     * seen is the first), then those whose first kept row is y or above */
+    for (x = 0; x < w; x++) {
+        const uint32_t r = rows[x];
+        if (r < full) {
+            span[r] = (span[r] == 0xFFFFu ? x : (span[r] & 0xFFFFu)) | (x + 1u) << 16;
+        }
+    }
+    for (y = top; y < full; y++) {
+        x0 = (span[y] & 0xFFFFu) < x0 ? (span[y] & 0xFFFFu) : x0;
+        x1 = (span[y] >> 16) > x1 ? (span[y] >> 16) : x1;
+        span[y] = x0 | x1 << 16;
+    }
+}
+
+/* The columns of row y to decide, c->x0 .. c->x1-1: all, or from the first
+ * to the last one that keeps row y below the field boundary; from the row's
+ * span (field_spans()), or where the build optimises for size by looking for
+ * them from either end (in time of the columns left out). Where the build
+ * optimises for speed, also the interior entries among them (c->at, c->len:
+ * decide_row()). */
+static void field_columns(lp_ctx *c, uint32_t y, const uint32_t *span)
+{
+    const uint16_t *const rows = c->p->field;
+    const uint32_t w = c->w, dk = c->dk;
+    uint32_t x0 = 0u, x1 = w;
+    if (SL_FOR_SPEED && rows != NULL && y < c->full) {
+        x0 = y < c->top ? 1u : span[y] & 0xFFFFu;
+        x1 = y < c->top ? 0u : span[y] >> 16;
+    } else if (!SL_FOR_SPEED && rows != NULL) {
+        while (x0 < x1 && rows[x0] > y) {
+            x0++;
+        }
+        while (x1 > x0 && rows[x1 - 1u] > y) {
+            x1--;
+        }
+    }
+    c->x0 = x0;
+    c->x1 = x1;
+    if (SL_FOR_SPEED && w > 2u * dk) {
+        c->at = x0 > dk ? x0 - dk : 0u;
+        c->len = x1 <= dk ? 0u : x1 < w - dk ? x1 - dk : w - 2u * dk;
     }
 }
 
@@ -587,7 +664,8 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     const uint32_t h = p->h;
     const bool along = p->axis == SYMLINE_AXIS_VERTICAL;
     lp_ctx *c = (lp_ctx *)symline_i_carve(&cur, end, sizeof(lp_ctx));
-    uint32_t y;
+    uint32_t y, full;
+    bool none;
     *n = 0u;
     if (p->w == 0u || h == 0u) {
         return SYMLINE_ERR_SIZE;
@@ -635,11 +713,23 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->gray_rest = lane_gray_setup(c->f, &c->lg);
     c->lanes = c->gray_rest && p->m == 3u && p->k == 4u && c->w >= 2u * c->dk + SL_LP_LANES;
 #endif
-    for (y = 0; y < h; y++) {
+    c->top = 0u;
+    c->full = 0u;
+    if (SL_FOR_SPEED && p->field != NULL) {
+        field_spans(c, p->field, p->w, h, row_start);
+    }
+    full = c->full;
+    for (y = 0, none = false; y < h; y++) {
         const uint8_t *row;
+        /* (where the build optimises for speed the columns stay all of them
+         * from the row below the spans on) */
+        if (!SL_FOR_SPEED || y <= full) {
+            field_columns(c, y, row_start);
+            none = c->x0 >= c->x1;
+        }
         row_start[y] = *n;
-        if (y < p->from) {
-            continue;
+        if (none) {
+            continue; /* above the field in every column */
         }
         row = grid_row_at(c, y);
         c->c = row;

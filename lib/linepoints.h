@@ -17,13 +17,13 @@
  * Filled by symline_i_pass_setup() (pass.c). */
 typedef struct symline_i_pass {
     symline_axis axis;
-    uint32_t level; /* grid = frame box-downsampled by 2^level */
-    uint32_t w, h;  /* grid size: width >> level, height >> level */
-    uint32_t m;     /* radius */
-    uint32_t k;     /* contrast sample offset across the line: m + 1 */
-    uint32_t lag;   /* longest accepted plateau: end - marked index <= lag (= m) */
-    uint32_t from;  /* the first grid row decided: the rows above it lie above
-                       the field boundary in every column (0: none) */
+    uint32_t level;        /* grid = frame box-downsampled by 2^level */
+    uint32_t w, h;         /* grid size: width >> level, height >> level */
+    uint32_t m;            /* radius */
+    uint32_t k;            /* contrast sample offset across the line: m + 1 */
+    uint32_t lag;          /* longest accepted plateau: end - marked index <= lag (= m) */
+    const uint16_t *field; /* NULL, or the first grid row each column keeps below
+                              the field boundary (w entries, fieldboundary.h) */
     symline_i_linefilter filter;
 } symline_i_pass;
 
@@ -33,11 +33,12 @@ size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width);
 /*
  * The line points of one pass, in raster order, grid coordinates, written to
  * pts[0 .. *n-1] (at most cap); row_start[y] is the index of the first point
- * of grid row y, row_start[h] = *n (h+1 entries). Grid rows above p->from
- * are not decided (they hold no points; the caller drops every point there:
- * the field boundary), but read as the rows below them need. Adds to
- * *dropped the line points that did not fit (cap too small). Strip
- * processing: only a ring of rows is held.
+ * of grid row y, row_start[h] = *n (h+1 entries). Where p->field is set, row
+ * y is decided only from the first to the last column that keeps it (the
+ * caller drops the points above the field boundary), the rows above every
+ * column's first kept row not at all; grid rows are still read as the rows
+ * below them need. Adds to *dropped the line points that did not fit (cap
+ * too small). Strip processing: only a ring of rows is held.
  * Returns SYMLINE_OK, SYMLINE_ERR_SIZE (empty grid) or SYMLINE_ERR_BUFFER
  * (ws_size below symline_i_collect_ws_size()).
  */

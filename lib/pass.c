@@ -43,7 +43,7 @@ void symline_i_pass_setup(symline_i_pass *p, const symline_config *cfg, symline_
     p->m = cfg->radius;
     p->k = cfg->radius + 1u;
     p->lag = cfg->radius;
-    p->from = 0u;
+    p->field = NULL;
     symline_i_linefilter_setup(&p->filter, cfg);
 }
 
@@ -284,6 +284,21 @@ SL_NOINLINE static void trace(symline_i_run *d, const symline_i_pass *p, const u
     d->prev_seg = d->nseg;
 }
 
+/* Whether the field boundary lies more than the margin below the frame's
+ * top anywhere; else every grid row lies below it in every column (between
+ * two vertices the boundary lies no lower than the lower one). */
+static bool field_below_top(const symline_i_run *d)
+{
+    const symline_field_boundary *const b = &d->r->field;
+    uint32_t i;
+    for (i = 0; i < b->count; i++) {
+        if (b->v[i].y > (int32_t)d->cfg->field_margin) {
+            return true;
+        }
+    }
+    return false;
+}
+
 /* The pass's raster list into the free part of the point storage (after
  * d->npts), *n points; row_start[p->h + 1] counts those that did not fit. Apart from
  * symline_i_pass_run() so that the collection's call and the tracing's are never on
@@ -293,8 +308,9 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, u
 {
     symline_status st;
     if (d->field_rows != NULL) {
-        /* Above the field: nothing to trace, and the grid rows above every
-         * column's first kept row are not even decided. */
+        /* Above the field: nothing to trace, and in each row only the
+         * columns from the first to the last one whose field has begun are
+         * decided. */
         SL_STAGE(FIELD);
         if (!SL_FOR_SPEED || p->axis == SYMLINE_AXIS_HORIZONTAL ||
             d->cfg->axes != SYMLINE_AXES_BOTH) {
@@ -303,7 +319,9 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, u
             symline_i_field_rows(&d->r->field, p->level, p->w, d->img->width, d->cfg->field_margin,
                                  d->field_rows);
         }
-        p->from = symline_i_field_top(d->field_rows, p->w);
+        /* (where the build optimises for speed, not where every column keeps
+         * every row) */
+        p->field = (!SL_FOR_SPEED || field_below_top(d)) ? d->field_rows : NULL;
     }
     st = symline_i_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
                            d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);

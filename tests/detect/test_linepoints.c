@@ -5,8 +5,8 @@
  * grid image, whole energy and extrema maps, the same filter rule), for both
  * axes, three scales, both filters, several contrast limits and two radii,
  * on a synthetic and a real frame and on one of flat bands (plateaus);
- * the same list from a first row on (rows above it left out); nothing is
- * written outside the workspace.
+ * the same list in the columns below a field boundary; nothing is written
+ * outside the workspace.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -151,27 +151,53 @@ static void compare_pass(const symline_image *img, const symline_config *cfg, sy
         }
     }
     assert_int_equal(row_start[p.h], na);
-    /* Rows above p.from left out (the field boundary): the list from there on,
-     * whatever rows the ring down the columns must read above it. */
-    for (i = 0; i < 4u; i++) {
-        const uint32_t froms[4] = {1u, p.h / 3u, p.h - 1u, p.h + 5u};
-        const uint32_t from = froms[i], f = from < p.h ? from : p.h;
+    /* Below a field boundary: each row decided only from the first to the
+     * last column that keeps it (their first kept rows in field[]), every
+     * row above the first kept one left out, whatever rows the ring down the
+     * columns must read above them. Boundaries: flat at several heights, a
+     * random walk, a peak, none in some columns (rows below the grid). */
+    for (i = 0; i < 6u; i++) {
+        uint16_t *field = (uint16_t *)malloc((size_t)p.w * sizeof(uint16_t));
         uint32_t *rs = (uint32_t *)malloc(((size_t)p.h + 1u) * sizeof(uint32_t));
-        uint32_t nc = 0u, j;
+        uint32_t nc = 0u, j = 0u, x, s = 7u + i;
+        int32_t walk = (int32_t)(p.h / 2u);
+        for (x = 0; x < p.w; x++) {
+            const uint32_t flat[3] = {1u, p.h / 3u, p.h - 1u};
+            walk += (int32_t)(tu_rand(&s) % 5u) - 2;
+            walk = walk < 0 ? 0 : walk > (int32_t)p.h + 3 ? (int32_t)p.h + 3 : walk;
+            field[x] = (uint16_t)(i < 3u    ? flat[i]
+                                  : i == 3u ? (uint32_t)walk
+                                  : i == 4u ? (x < p.w / 2u ? p.h - x * p.h / p.w : x * p.h / p.w)
+                                            : (x % 7u == 0u ? p.h + 1u : p.h / 4u + x % 5u));
+        }
         memset(ws, 0x5A, wsn);
-        p.from = from;
+        p.field = field;
         assert_int_equal(symline_i_collect(img, &p, ws, wsn, b, p.w * p.h, &nc, rs, &dropped),
                          SYMLINE_OK);
-        p.from = 0u;
+        p.field = NULL;
         assert_true(tu_guard_ok(ws, wsn));
-        assert_int_equal(nc, na - row_start[f]);
-        for (j = 0; j < nc; j++) {
-            assert_int_equal(b[j].x, a[row_start[f] + j].x);
-            assert_int_equal(b[j].y, a[row_start[f] + j].y);
+        /* the whole list's points in the columns of their rows, in order */
+        for (y = 0; y < p.h; y++) {
+            uint32_t x0 = 0u, x1 = p.w, k;
+            while (x0 < x1 && field[x0] > y) {
+                x0++;
+            }
+            while (x1 > x0 && field[x1 - 1u] > y) {
+                x1--;
+            }
+            assert_int_equal(rs[y], j);
+            for (k = row_start[y]; k < row_start[y + 1u]; k++) {
+                if (a[k].x >= x0 && a[k].x < x1) {
+                    assert_true(j < nc);
+                    assert_int_equal(b[j].x, a[k].x);
+                    assert_int_equal(b[j].y, a[k].y);
+                    j++;
+                }
+            }
         }
-        for (y = 0; y <= p.h; y++) {
-            assert_int_equal(rs[y], y < f ? 0u : row_start[y] - row_start[f]);
-        }
+        assert_int_equal(j, nc);
+        assert_int_equal(rs[p.h], nc);
+        free(field);
         free(rs);
     }
     tu_guard_free(ws);
