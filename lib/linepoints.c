@@ -516,7 +516,10 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
                       *ihi = paper ? ic : c->hi + (size_t)2u * dk;
         const symline_i_prefilter *const pf = &c->pf;
         uint32_t at = c->at;
-        if (along && c->x0 < dk) { /* the left border (down the columns dk = 0: none) */
+        /* the left border (down the columns dk = 0: none); the border keeps
+         * to columns x0 .. x1-1 itself (asking here would hold two more
+         * values across the row: the stack's budget on Cortex-M4) */
+        if (along) {
             decide_border(c, pf, true, true);
         }
 #if SL_LP_LANES
@@ -526,7 +529,7 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         while (at < len) {
             decide_batch(c, symline_i_line_cand(pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
-        if (along && c->x1 > w - dk) { /* the right border */
+        if (along) { /* the right border */
             decide_border(c, pf, false, true);
         }
     }
@@ -713,12 +716,15 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->gray_rest = lane_gray_setup(c->f, &c->lg);
     c->lanes = c->gray_rest && p->m == 3u && p->k == 4u && c->w >= 2u * c->dk + SL_LP_LANES;
 #endif
-    c->top = 0u;
-    c->full = 0u;
-    if (SL_FOR_SPEED && p->field != NULL) {
-        field_spans(c, p->field, p->w, h, row_start);
+    full = 0u;
+    if (SL_FOR_SPEED) {
+        c->top = 0u;
+        c->full = 0u;
+        if (p->field != NULL) {
+            field_spans(c, p->field, p->w, h, row_start);
+        }
+        full = c->full;
     }
-    full = c->full;
     for (y = 0, none = false; y < h; y++) {
         const uint8_t *row;
         /* (where the build optimises for speed the columns stay all of them
