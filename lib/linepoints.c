@@ -549,40 +549,37 @@ SL_NOINLINE static void decide(lp_ctx *c)
 }
 
 /* The columns of each row that keep it below the field boundary, from the
- * first kept rows rows[0 .. w-1] (w <= 65535) of a grid h rows high, where
- * the build optimises for speed: no column keeps a row above c->top, every
- * column those from c->full on, and for the rows between span[y] becomes x0
- * | x1 << 16, columns x0 .. x1-1 from the first to the last one that keeps
- * row y (x0 >= x1: none). In time w + (c->full - c->top); field_columns()
- * reads them. */
-static void field_spans(lp_ctx *c, const uint16_t *rows, uint32_t w, uint32_t h, uint32_t *span)
+ * first kept rows rows[0 .. w-1] of the pass's grid (c->p: field, w <=
+ * 65535, h), where the build optimises for speed: no column keeps a row
+ * above c->top, the first and the last column (and so the span between
+ * them) those from c->full on, and for the rows between span[y] becomes x0 |
+ * x1 << 16, columns x0 .. x1-1 from the first to the last one that keeps
+ * row y. The first such column changes only where the minimum of the rows
+ * from the left drops, the last one where that from the right drops: each
+ * row is written at most twice, in time w + (c->full - c->top);
+ * field_columns() reads them. Apart from the collection's loop: its frame
+ * is on the deepest call chain. */
+SL_NOINLINE static void field_spans(lp_ctx *c, uint32_t *span)
 {
-    uint32_t x, y, x0 = 0xFFFFu, x1 = 0u, top = 0xFFFFu, full = 0u;
-    for (x = 0; x < w; x++) {
-        top = rows[x] < top ? rows[x] : top;
-        full = rows[x] > full ? rows[x] : full;
-    }
-    full = full < h ? full : h;
-    c->top = top;
-    c->full = full;
-    if (top >= full) {
-        return; /* no row between */
-    }
-    for (y = top; y < full; y++) {
-        span[y] = 0xFFFFu;
-    }
-    /* the columns whose first kept row is r (left to right: the first one
-     * seen is the first), then those whose first kept row is y or above */
-    for (x = 0; x < w; x++) {
-        const uint32_t r = rows[x];
-        if (r < full) {
-            span[r] = (span[r] == 0xFFFFu ? x : (span[r] & 0xFFFFu)) | (x + 1u) << 16;
+    const uint16_t *const rows = c->p->field;
+    const uint32_t w = c->p->w, h = c->p->h;
+    const uint32_t l0 = rows[0] < h ? rows[0] : h, r0 = rows[w - 1u] < h ? rows[w - 1u] : h;
+    uint32_t x, y, m = l0;
+    for (x = 1u; x < w; x++) { /* x0 of the rows above l0 (x1 = 0 for now) */
+        while (rows[x] < m) {
+            span[--m] = x;
         }
     }
-    for (y = top; y < full; y++) {
-        x0 = (span[y] & 0xFFFFu) < x0 ? (span[y] & 0xFFFFu) : x0;
-        x1 = (span[y] >> 16) > x1 ? (span[y] >> 16) : x1;
-        span[y] = x0 | x1 << 16;
+    c->top = m;
+    c->full = l0 > r0 ? l0 : r0;
+    for (m = r0, x = w - 1u; x-- > 0u;) { /* x1 of the rows above r0 */
+        while (rows[x] < m) {
+            m--;
+            span[m] = (m < l0 ? span[m] : 0u) | (x + 1u) << 16;
+        }
+    }
+    for (y = r0; y < l0; y++) { /* from r0 on the last column keeps them */
+        span[y] |= w << 16;
     }
 }
 
@@ -716,15 +713,14 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->gray_rest = lane_gray_setup(c->f, &c->lg);
     c->lanes = c->gray_rest && p->m == 3u && p->k == 4u && c->w >= 2u * c->dk + SL_LP_LANES;
 #endif
-    full = 0u;
     if (SL_FOR_SPEED) {
         c->top = 0u;
         c->full = 0u;
         if (p->field != NULL) {
-            field_spans(c, p->field, p->w, h, row_start);
+            field_spans(c, row_start);
         }
-        full = c->full;
     }
+    full = SL_FOR_SPEED ? c->full : 0u;
     for (y = 0, none = false; y < h; y++) {
         const uint8_t *row;
         /* (where the build optimises for speed the columns stay all of them
