@@ -59,8 +59,8 @@ static inline size_t symline_i_pass_ws_size(const symline_i_pass *p, uint32_t wi
 
 /*
  * Runs pass p over d->img: appends its segments to d->r and their points
- * after the first d->npts, and updates d (and p->from, the field boundary's
- * first row). [ws, end): the pass workspace
+ * after the first d->npts, and updates d (and p->field, the field boundary's
+ * first kept row of each column). [ws, end): the pass workspace
  * after p itself (which the caller carved first). Returns SYMLINE_OK, or
  * SYMLINE_ERR_BUFFER when the workspace is smaller than symline_i_pass_ws_size()
  * (then d is unchanged but for d->truncated).
