@@ -142,60 +142,39 @@ static uint32_t sample_row(const symline_i_fstate *f, uint32_t h, uint32_t r)
     return (top + bottom - 1u) / 2u;
 }
 
-/* Relative texture, Q8, clamped to 255: d / sum over the same pixels. */
-static uint8_t rel_tex(uint32_t d, uint32_t sum, uint32_t n)
-{
-    const uint32_t t = (d << 8) / (sum + n);
-    return (uint8_t)(t < 255u ? t : 255u);
-}
-
-/* Mean gray value and relative texture of the cell whose pixels start at p,
- * left (>= 1) pixels before the row's end. Every other pair of neighbours
- * measures the grain as well as all of them at half the cost: each pair's
- * difference as its sum less twice its smaller value, doubled. This is the
- * stage's cost. */
-static inline void cell_stats_n(const uint8_t *p, uint32_t n, uint32_t *mean, uint32_t *tex)
-{
-    uint32_t i, sum = 0u, lows = 0u, pairs;
-    if (n == 0u) {
-        *mean = 0u; /* not reached: a cell starts inside its row */
-        *tex = 0u;
-        return;
-    }
-    for (i = 0; i + 1u < n; i += 2u) {
-        const uint32_t a = p[i], b = p[i + 1u];
-        sum += a + b;
-        lows += a < b ? a : b;
-    }
-    pairs = sum;
-    if (i < n) {
-        sum += p[i]; /* an odd cell's last pixel */
-    }
-    *mean = sum / n;
-    *tex = rel_tex(2u * (pairs - 2u * lows), sum, n);
-}
-
 static inline void cell_stats(const symline_i_fstate *f, const uint8_t *p, uint32_t left,
                               uint32_t *mean, uint32_t *tex)
 {
     const uint32_t n = left < f->s ? left : f->s;
     if (SL_FOR_SPEED && n == 8u) {
-        cell_stats_n(p, 8u, mean, tex); /* the usual cell: a constant count, unrolled */
+        symline_i_field_cell(p, 8u, mean, tex); /* the usual cell: a constant count, unrolled */
         return;
     }
-    cell_stats_n(p, n, mean, tex);
+    symline_i_field_cell(p, n, mean, tex);
 }
 
 /* The cells (mean, texture) of grid row r into out, two bytes per column;
  * a column behind a barrier (col not NULL, gap > gmax), which the scan
- * is done with, is left out to save time (SL_FOR_SPEED). */
+ * is done with, is left out to save time (SL_FOR_SPEED) where the cells
+ * are not taken in lanes (a port's symline_i_field_cells8()). */
 static void row_cells(const symline_i_fstate *f, uint32_t r, const symline_i_fcol *col,
                       uint32_t gmax, uint8_t *out)
 {
     const symline_image *img = f->img;
     const uint8_t *row = img->data + (size_t)sample_row(f, img->height, r) * img->stride;
-    uint32_t c, x0 = 0u;
-    for (c = 0; c < f->nc; c++, x0 += f->sx, out += 2) {
+    uint32_t c = 0u, x0 = 0u;
+#ifdef SYMLINE_PORT_FIELD_CELLS
+    if (SL_FOR_SPEED && f->s == 8u && img->width >= 8u) {
+        /* The cells of 8 px that end inside the row, in lanes: all of them
+         * (those behind a barrier cost less than skipping them) */
+        const uint32_t full = (img->width - 8u) / f->sx + 1u;
+        c = full < f->nc ? full : f->nc;
+        symline_i_field_cells8(row, f->sx, c, out);
+        x0 = c * f->sx;
+        out += 2u * (size_t)c;
+    }
+#endif
+    for (; c < f->nc; c++, x0 += f->sx, out += 2) {
         uint32_t m, t;
         if (SL_FOR_SPEED && col != NULL && col[c].gap > gmax) {
             continue;
