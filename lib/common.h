@@ -33,6 +33,13 @@
 #define SL_FOR_SPEED 1
 #endif
 
+/* Speed-only code that makes a frame on the detection's deepest paths
+ * larger (a ring of crosses, a test inline, the grid row cache of
+ * linepoints.h): where the build optimises for speed on a 64-bit core only.
+ * The 32-bit targets are the firmware's, whose detection must stay within
+ * 512 B of stack (tools/firmware/check.sh). */
+#define SL_FOR_SPEED_DEEP (SL_FOR_SPEED && UINTPTR_MAX > 0xFFFFFFFFu)
+
 /* Copies a small routine into each caller even at -Os, where a constant
  * argument then folds away (extrema.c). */
 #if defined(__GNUC__)

@@ -316,6 +316,9 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
     d->npts = 0u;
     out->points_needed = 0u; /* raised by every pass (pass.c) */
     d->truncated = false;
+    if (SL_FOR_SPEED_DEEP) { /* read nowhere else (no code in the firmware) */
+        d->cache_level = 0u;
+    }
     d->stats.mean = 0u;
     d->stats.sigma_q4 = 0u;
     out->field.count = 0u;

@@ -627,6 +627,9 @@ SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
     }
     SL_STAGE(GRID);
     if (p->axis == SYMLINE_AXIS_VERTICAL) {
+        if (SL_FOR_SPEED_DEEP && p->cache == SL_CACHE_READ) { /* linepoints.h */
+            return (const uint8_t *)(c->pts + c->cap) - (size_t)w * h + (size_t)y * w;
+        }
         symline_i_grid_row(c->img, p, y, c->acc, c->gray, NULL);
         return c->gray;
     } else {
@@ -637,6 +640,14 @@ SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
              c->produced++) {
             uint8_t *g = c->gray + (size_t)(c->produced % held) * w;
             symline_i_grid_row(c->img, p, c->produced, c->acc, g, g + (size_t)held * w);
+            if (SL_FOR_SPEED_DEEP && p->cache == SL_CACHE_WRITE) { /* linepoints.h */
+                uint8_t *const to =
+                    (uint8_t *)(c->pts + c->cap) - (size_t)w * h + (size_t)c->produced * w;
+                uint32_t x;
+                for (x = 0; x < w; x++) {
+                    to[x] = g[x];
+                }
+            }
         }
         /* Rows first .. need from the slot of row first on. */
         return c->gray + (size_t)(first % held + (y - first)) * w;

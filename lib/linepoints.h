@@ -22,10 +22,29 @@ typedef struct symline_i_pass {
     uint32_t m;            /* radius */
     uint32_t k;            /* contrast sample offset across the line: m + 1 */
     uint32_t lag;          /* longest accepted plateau: end - marked index <= lag (= m) */
+    uint32_t cache;        /* SL_CACHE_*: the grid rows' cache at the point storage's end */
     const uint16_t *field; /* NULL, or the first grid row each column keeps below
                               the field boundary (w entries, fieldboundary.h) */
     symline_i_linefilter filter;
 } symline_i_pass;
+
+/*
+ * The grid row cache (SL_FOR_SPEED_DEEP: 64-bit speed builds). Both axes of
+ * a coarse scale read the same grid rows; the horizontal pass, which runs
+ * first, copies each row it builds to the last w * h bytes of the point
+ * storage given to symline_i_collect() (pts + cap), and the vertical pass
+ * of the same scale reads them there instead of summing the frame's blocks
+ * again. The caller (pass.c) asks for it only where no point can reach
+ * those bytes before the vertical pass is done with them: the storage holds
+ * them above twice w * h points after the points kept so far (a pass lists
+ * at most w * h points and traces at most as many; the vertical pass starts
+ * below the end of the horizontal one's list), and the grid of earlier
+ * segments keeps below them. Where the storage is smaller (sized by
+ * points_needed, say) the rows are built as before: the result is the same.
+ */
+#define SL_CACHE_OFF 0u   /* neither */
+#define SL_CACHE_WRITE 1u /* the horizontal pass: rows built go to the cache too */
+#define SL_CACHE_READ 2u  /* the vertical pass: rows come from the cache */
 
 /* Workspace bytes of symline_i_collect() (row index excluded). */
 size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width);

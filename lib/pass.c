@@ -43,6 +43,9 @@ void symline_i_pass_setup(symline_i_pass *p, const symline_config *cfg, symline_
     p->m = cfg->radius;
     p->k = cfg->radius + 1u;
     p->lag = cfg->radius;
+    if (SL_FOR_SPEED_DEEP) { /* read nowhere else (no code in the firmware) */
+        p->cache = SL_CACHE_OFF;
+    }
     p->field = NULL;
     symline_i_linefilter_setup(&p->filter, cfg);
 }
@@ -299,6 +302,13 @@ static bool field_below_top(const symline_i_run *d)
     return false;
 }
 
+/* Whether a w x h grid's bytes fit above the first n points of a storage
+ * of cap points (SL_FOR_SPEED_DEEP: 64-bit sizes). */
+static bool cache_fits(uint64_t n, uint64_t cap, uint32_t w, uint32_t h)
+{
+    return n * sizeof(symline_point) + (uint64_t)w * h <= cap * sizeof(symline_point);
+}
+
 /* The pass's raster list into the free part of the point storage (after
  * d->npts), *n points; row_start[p->h + 1] counts those that did not fit. Apart from
  * symline_i_pass_run() so that the collection's call and the tracing's are never on
@@ -322,6 +332,19 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, u
         /* (where the build optimises for speed, not where every column keeps
          * every row) */
         p->field = (!SL_FOR_SPEED || field_below_top(d)) ? d->field_rows : NULL;
+    }
+    if (SL_FOR_SPEED_DEEP) {
+        /* At a coarse scale of both axes the horizontal pass (first) keeps
+         * its grid rows at the point storage's end for the vertical one,
+         * where no point can reach them (linepoints.h). */
+        const bool both = p->level > 0u && d->cfg->axes == SYMLINE_AXES_BOTH;
+        const bool write =
+            both && p->axis == SYMLINE_AXIS_HORIZONTAL &&
+            cache_fits((uint64_t)d->npts + 2u * (uint64_t)p->w * p->h, d->r->point_cap, p->w, p->h);
+        p->cache = write                                     ? SL_CACHE_WRITE
+                   : both && d->cache_level == p->level + 1u ? SL_CACHE_READ
+                                                             : SL_CACHE_OFF;
+        d->cache_level = write ? (uint8_t)(p->level + 1u) : 0u;
     }
     st = symline_i_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
                            d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);
@@ -351,8 +374,13 @@ SL_NOINLINE static symline_i_segindex *index_earlier(const symline_i_run *d,
         (symline_i_segindex *)symline_i_carve(&ws, end, sizeof(symline_i_segindex));
     const uint64_t used = (uint64_t)d->npts + 2u * (uint64_t)n;
     symline_point *spare = used < d->r->point_cap ? d->r->points + (size_t)used : NULL;
-    const size_t spare_bytes =
+    size_t spare_bytes =
         spare != NULL ? (size_t)(d->r->point_cap - used) * sizeof(symline_point) : 0u;
+    if (SL_FOR_SPEED_DEEP && d->cache_level != 0u) {
+        /* not into the grid rows kept for the vertical pass: they lie above
+         * twice the pass's grid in points (n <= w h) */
+        spare_bytes -= (size_t)p->w * p->h;
+    }
     SL_STAGE(SEGMENTS); /* it serves the overlap test with earlier passes */
     if (ix != NULL) {
         symline_i_segindex_build(ix, ws, (size_t)(end - ws), spare, spare_bytes, d->img->width,

@@ -77,12 +77,6 @@ static inline uint32_t symline_i_smooth_dev(const symline_point *p, uint32_t n, 
 /* Curve test: max_dev above thr and above 1/32 of c's chord (its ends). */
 bool symline_i_is_curve(const symline_segment *c, uint32_t max_dev, uint32_t thr);
 
-/* Speed-only code that makes a frame on the detection's deepest paths
- * larger (a ring of crosses, a test inline): where the build optimises for
- * speed on a 64-bit core only. The 32-bit targets are the firmware's, whose
- * detection must stay within 512 B of stack (tools/firmware/check.sh). */
-#define SL_FOR_SPEED_DEEP (SL_FOR_SPEED && UINTPTR_MAX > 0xFFFFFFFFu)
-
 /* Curves are followed through every SL_POLY_STEP-th point (symline_i_near_segment(),
  * and the grid of earlier segments, segindex.c). */
 #define SL_POLY_STEP 4u

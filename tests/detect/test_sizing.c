@@ -205,6 +205,88 @@ static void test_points_needed_is_exact(void **state)
     }
 }
 
+/*
+ * The point storage beyond what a frame needs changes nothing. Where the
+ * build keeps a coarse scale's grid rows at the storage's end for its
+ * vertical pass (lib/linepoints.h, 64-bit speed builds) it does so once the
+ * storage holds them above twice the scale's grid in points after the
+ * points kept so far (at most the result's): every capacity from
+ * points_needed on a little, and every one around each scale's threshold,
+ * gives the result of plenty, on a 320x240 window of a bundled frame with
+ * both axes and three scales.
+ */
+static void same_as(const frame *f, const symline_config *c, const symline_result *big,
+                    const symline_segment *s1, const symline_point *p1, uint32_t cap,
+                    symline_segment *s2, uint32_t segcap, symline_point *p2)
+{
+    const symline_result r = detect(f, c, p2, cap, s2, segcap);
+    uint32_t i;
+    assert_false(r.truncated);
+    assert_int_equal(r.points_needed, big->points_needed);
+    assert_int_equal(r.segment_count, big->segment_count);
+    assert_int_equal(r.point_count, big->point_count);
+    for (i = 0; i < big->segment_count; i++) {
+        assert_memory_equal(&s1[i], &s2[i], sizeof s1[i]);
+    }
+    assert_memory_equal(p1, p2, (size_t)big->point_count * sizeof *p1);
+}
+
+static void check_any_room(const frame *f, const symline_config *c)
+{
+    enum {
+        SEGS = 1024
+    };
+    const uint32_t plenty = 2u * f->view.width * f->view.height + 1024u;
+    symline_segment *s1 = malloc(SEGS * sizeof *s1), *s2 = malloc(SEGS * sizeof *s2);
+    symline_point *p1 = malloc((size_t)plenty * sizeof *p1);
+    symline_point *p2 = malloc((size_t)plenty * sizeof *p2);
+    symline_result big;
+    uint32_t cap, level;
+    assert_non_null(s1);
+    assert_non_null(s2);
+    assert_non_null(p1);
+    assert_non_null(p2);
+    big = detect(f, c, p1, plenty, s1, SEGS);
+    assert_false(big.truncated);
+    assert_true(big.segment_count > 0u);
+    for (cap = big.points_needed; cap <= big.points_needed + 64u; cap++) {
+        same_as(f, c, &big, s1, p1, cap, s2, SEGS, p2);
+    }
+    for (level = 1u; level <= 3u; level++) {
+        const uint32_t g = (f->view.width >> level) * (f->view.height >> level);
+        /* the threshold after no point kept, from one below */
+        const uint32_t t = 2u * g + (g + 5u) / 6u - 1u;
+        for (cap = t > big.points_needed ? t : big.points_needed; cap <= t + big.point_count + 1u;
+             cap++) {
+            same_as(f, c, &big, s1, p1, cap, s2, SEGS, p2);
+        }
+    }
+    free(s1);
+    free(s2);
+    free(p1);
+    free(p2);
+}
+
+static void test_more_room_same_result(void **state)
+{
+    frame f, win;
+    symline_config c;
+    (void)state;
+    load(&f, "msl_20190606_r2_cam0_20190606_204340.pgm");
+    assert_true(f.view.width >= 320u && f.view.height >= 560u);
+    /* the window of rows 320..559, columns 0..319: carpet and lines */
+    win.view.width = 320u;
+    win.view.height = 240u;
+    win.view.stride = f.view.stride;
+    win.view.data = f.view.data + (size_t)320u * f.view.stride;
+    symline_config_default(&c);
+    c.levels = 3u;
+    check_any_room(&win, &c);
+    c.field_boundary = SYMLINE_FIELD_OFF; /* every row of every scale */
+    check_any_room(&win, &c);
+    imgio_free(&f.img);
+}
+
 static void expect_field(void (*spoil)(symline_config *), symline_config_field want)
 {
     symline_config c;
@@ -345,6 +427,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_workspace_macro_bounds_the_query),
         cmocka_unit_test(test_points_needed_is_exact),
+        cmocka_unit_test(test_more_room_same_result),
         cmocka_unit_test(test_config_check_names_the_field),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
