@@ -613,6 +613,16 @@ static void field_columns(lp_ctx *c, uint32_t y, const uint32_t *span)
     }
 }
 
+/* The grid row cache's copy of a row (linepoints.h): apart, so that the
+ * compiler sees the two rows never overlap. */
+static void copy_row(uint8_t *restrict to, const uint8_t *restrict from, uint32_t w)
+{
+    uint32_t x;
+    for (x = 0; x < w; x++) {
+        to[x] = from[x];
+    }
+}
+
 /* Grid row y of the pass (c->y): the frame's row at full resolution; at a
  * coarse level the grid row, and down the columns the ring's rows up to
  * y + R produced (each written twice, see symline_i_collect()), with rows
@@ -641,12 +651,8 @@ SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
             uint8_t *g = c->gray + (size_t)(c->produced % held) * w;
             symline_i_grid_row(c->img, p, c->produced, c->acc, g, g + (size_t)held * w);
             if (SL_FOR_SPEED_DEEP && p->cache == SL_CACHE_WRITE) { /* linepoints.h */
-                uint8_t *const to =
-                    (uint8_t *)(c->pts + c->cap) - (size_t)w * h + (size_t)c->produced * w;
-                uint32_t x;
-                for (x = 0; x < w; x++) {
-                    to[x] = g[x];
-                }
+                copy_row((uint8_t *)(c->pts + c->cap) - (size_t)w * h + (size_t)c->produced * w, g,
+                         w);
             }
         }
         /* Rows first .. need from the slot of row first on. */
