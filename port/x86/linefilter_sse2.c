@@ -11,7 +11,9 @@
  * first (three loads and five instructions per 16: max, saturating add, max,
  * two saturating subtracts; zero where they pass), one test for the step on
  * the minimum of the four, and only in steps where some pass the masks;
- * then only the set bits of the masks are visited.
+ * then only the set bits of the masks are visited. The last 33 to 63
+ * entries of a row of 64 and more are one such step too, over the row's
+ * last 64 (the bits before them cleared).
  */
 #include <emmintrin.h>
 
@@ -70,6 +72,19 @@ uint32_t symline_i_line_cand(const symline_i_prefilter *pf, const uint8_t *c, co
         base = at;
         if (bits != 0u) {
             at += 64u;
+        } else if (at + 32u < end && end >= 64u) {
+            /* The last 33 to 63 entries: the row's last 64 in one step,
+             * without those before at (0 < at - base < 32). */
+            const __m128i a = gray_short(c, lo, hi, end - 64u, mg, rm, sm);
+            const __m128i b = gray_short(c, lo, hi, end - 48u, mg, rm, sm);
+            const __m128i d = gray_short(c, lo, hi, end - 32u, mg, rm, sm);
+            const __m128i e = gray_short(c, lo, hi, end - 16u, mg, rm, sm);
+            base = end - 64u;
+            if (passed(_mm_min_epu8(_mm_min_epu8(a, b), _mm_min_epu8(d, e))) != 0u) {
+                bits = (passed(a) | passed(b) << 16 | passed(d) << 32 | passed(e) << 48) &
+                       (~(uint64_t)0 << (at - base));
+            }
+            at = end;
         } else if (at + 16u <= end) {
             bits = passed(gray_short(c, lo, hi, at, mg, rm, sm));
             at += 16u;
