@@ -144,6 +144,39 @@ SL_NOINLINE static const symline_point *next_point(const symline_i_run *d, uint3
     return q;
 }
 
+/* The earlier passes' segments on a grid, so that testing a chain point
+ * against them looks at one cell instead of all of them (time linear in the
+ * frame, not quadratic, on cluttered frames). The ids go to the workspace
+ * or, when larger, to the point storage beyond what the tracing can write
+ * (at most n points after the raster list). */
+static SL_ALWAYS_INLINE void index_fill(const symline_i_run *d, const symline_i_pass *p,
+                                        symline_i_segindex *ix, uint8_t *ws, size_t ws_bytes,
+                                        uint32_t n)
+{
+    const uint64_t used = (uint64_t)d->npts + 2u * (uint64_t)n;
+    symline_point *spare = used < d->r->point_cap ? d->r->points + (size_t)used : NULL;
+    size_t spare_bytes =
+        spare != NULL ? (size_t)(d->r->point_cap - used) * sizeof(symline_point) : 0u;
+    if (SL_FOR_SPEED_DEEP && d->cache_level != 0u) {
+        /* not into the grid rows kept for the vertical pass: they lie above
+         * twice the pass's grid in points (n <= w h) */
+        spare_bytes -= (size_t)p->w * p->h;
+    }
+    SL_STAGE(SEGMENTS); /* it serves the overlap test with earlier passes */
+    if (ix != NULL) {
+        symline_i_segindex_build(ix, ws, ws_bytes, spare, spare_bytes, d->img->width,
+                                 d->img->height, d->r, d->prev_seg,
+                                 symline_i_cover_tol_q8(p->level));
+    }
+}
+
+/* An index not built yet (SL_FOR_SPEED_DEEP, symline_i_segindex.hit): it is
+ * built at the pass's first chain long enough to report (chain()), so a
+ * pass without one (on several field frames the vertical axis at full
+ * resolution) never builds it. Until then its cols hold the pass's points n
+ * and its rows the bytes of its workspace, which follows it. */
+#define SL_INDEX_PENDING 0xFFFFFFFEu
+
 /* A traced chain at storage index `at`: drop covered parts, cut at corners, emit pieces. */
 static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex *ix, uint32_t at,
                   uint32_t n)
@@ -154,6 +187,10 @@ static void chain(symline_i_run *d, const symline_i_pass *p, symline_i_segindex 
      * (most of them: two or three points of turf) needs no per-point test. */
     if (!piece_long_enough(d, p, n)) {
         return;
+    }
+    if (SL_FOR_SPEED_DEEP && ix != NULL && ix->hit == SL_INDEX_PENDING) {
+        /* the first chain of the pass that may report: the index now */
+        index_fill(d, p, ix, (uint8_t *)(ix + 1), ix->rows, ix->cols);
     }
     if (SL_FOR_SPEED && ix != NULL) {
         ix->hit = SL_NO_HIT; /* another chain: the last one's entry is not a better guess */
@@ -361,32 +398,23 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, u
     return st;
 }
 
-/* The earlier passes' segments on a grid, so that testing a chain point
- * against them looks at one cell instead of all of them (time linear in the
- * frame, not quadratic, on cluttered frames). The ids go to the workspace
- * or, when larger, to the point storage beyond what the tracing can write
- * (at most n points after the raster list). */
+/* The grid's place after the tracer's state, and its build or (where the
+ * build optimises for speed on a 64-bit core) what the build needs. */
 SL_NOINLINE static symline_i_segindex *index_earlier(const symline_i_run *d,
                                                      const symline_i_pass *p, uint8_t *ws,
                                                      uint8_t *end, uint32_t n)
 {
     symline_i_segindex *ix =
         (symline_i_segindex *)symline_i_carve(&ws, end, sizeof(symline_i_segindex));
-    const uint64_t used = (uint64_t)d->npts + 2u * (uint64_t)n;
-    symline_point *spare = used < d->r->point_cap ? d->r->points + (size_t)used : NULL;
-    size_t spare_bytes =
-        spare != NULL ? (size_t)(d->r->point_cap - used) * sizeof(symline_point) : 0u;
-    if (SL_FOR_SPEED_DEEP && d->cache_level != 0u) {
-        /* not into the grid rows kept for the vertical pass: they lie above
-         * twice the pass's grid in points (n <= w h) */
-        spare_bytes -= (size_t)p->w * p->h;
+    if (SL_FOR_SPEED_DEEP && ix != NULL) {
+        /* (the index takes far less than 4 GiB: no more is said) */
+        const size_t bytes = (size_t)(end - ws);
+        ix->hit = SL_INDEX_PENDING;
+        ix->cols = n;
+        ix->rows = bytes < 0xFFFFFFFFu ? (uint32_t)bytes : 0xFFFFFFFFu;
+        return ix;
     }
-    SL_STAGE(SEGMENTS); /* it serves the overlap test with earlier passes */
-    if (ix != NULL) {
-        symline_i_segindex_build(ix, ws, (size_t)(end - ws), spare, spare_bytes, d->img->width,
-                                 d->img->height, d->r, d->prev_seg,
-                                 symline_i_cover_tol_q8(p->level));
-    }
+    index_fill(d, p, ix, ws, (size_t)(end - ws), n);
     return ix;
 }
 
