@@ -213,7 +213,9 @@ static void test_points_needed_is_exact(void **state)
  * points kept so far (at most the result's): every capacity from
  * points_needed on a little, and every one around each scale's threshold,
  * gives the result of plenty, on a 320x240 window of a bundled frame with
- * both axes and three scales.
+ * both axes and three scales. (Where the grid of earlier segments takes
+ * point storage, test_points_needed_is_exact compares plenty, rows shared,
+ * with points_needed, rows built.)
  */
 static void same_as(const frame *f, const symline_config *c, const symline_result *big,
                     const symline_segment *s1, const symline_point *p1, uint32_t cap,
