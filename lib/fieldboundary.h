@@ -65,6 +65,15 @@ static inline void symline_i_field_cell(const uint8_t *p, uint32_t n, uint32_t *
     *tex = symline_i_field_tex(2u * (pairs - 2u * lows), sum, n);
 }
 
+/* A cell of 8 px from the sum of its gray values and the sum of its pairs'
+ * smaller values (symline_i_field_cell() with n = 8): mean and texture to
+ * out[0] and out[1]; the last step of the ports' lanes. */
+static inline void symline_i_field_put8(uint8_t *out, uint32_t sum, uint32_t lows)
+{
+    out[0] = (uint8_t)(sum >> 3);
+    out[1] = symline_i_field_tex(2u * (sum - 2u * lows), sum, 8u);
+}
+
 /* The cells of 8 px c = 0 .. n-1 that start at row + c * sx (sx >= 8), each
  * inside the row: mean and texture (symline_i_field_cell()) to out[2 c] and
  * out[2 c + 1]. symline_i_field_cells8_c() is the portable reference;

@@ -20,9 +20,6 @@ void symline_i_field_cells8(const uint8_t *row, size_t sx, uint32_t n, uint8_t *
     uint32_t c;
     for (c = 0; c < n; c++, row += sx, out += 2) {
         const uint8x8_t v = vld1_u8(row);
-        const uint32_t sum = vaddlv_u8(v);
-        const uint32_t lows = (uint32_t)vaddlv_u8(vmin_u8(v, vrev16_u8(v))) / 2u;
-        out[0] = (uint8_t)(sum >> 3);
-        out[1] = symline_i_field_tex(2u * (sum - 2u * lows), sum, 8u);
+        symline_i_field_put8(out, vaddlv_u8(v), (uint32_t)vaddlv_u8(vmin_u8(v, vrev16_u8(v))) / 2u);
     }
 }

@@ -21,13 +21,6 @@ static inline __m128i load8(const uint8_t *p)
     return _mm_loadl_epi64((const __m128i *)(const void *)p);
 }
 
-/* Cell of sum `sum` and pair minima `lows` (symline_i_field_cell(), n = 8). */
-static inline void put(uint8_t *out, uint32_t sum, uint32_t lows)
-{
-    out[0] = (uint8_t)(sum >> 3);
-    out[1] = symline_i_field_tex(2u * (sum - 2u * lows), sum, 8u);
-}
-
 void symline_i_field_cells8(const uint8_t *row, size_t sx, uint32_t n, uint8_t *out)
 {
     const __m128i z = _mm_setzero_si128();
@@ -38,8 +31,10 @@ void symline_i_field_cells8(const uint8_t *row, size_t sx, uint32_t n, uint8_t *
         const __m128i lows = _mm_sad_epu8(_mm_min_epu8(v, _mm_srli_epi16(v, 8)), z);
         /* sums (<= 2040) and lows in the 16-bit lanes 0, 2 and 4, 6 */
         const __m128i both = _mm_packs_epi32(sums, lows);
-        put(out, (uint32_t)_mm_extract_epi16(both, 0), (uint32_t)_mm_extract_epi16(both, 4));
-        put(out + 2, (uint32_t)_mm_extract_epi16(both, 2), (uint32_t)_mm_extract_epi16(both, 6));
+        symline_i_field_put8(out, (uint32_t)_mm_extract_epi16(both, 0),
+                             (uint32_t)_mm_extract_epi16(both, 4));
+        symline_i_field_put8(out + 2, (uint32_t)_mm_extract_epi16(both, 2),
+                             (uint32_t)_mm_extract_epi16(both, 6));
     }
     if (c < n) {
         symline_i_field_cells8_c(row, sx, 1u, out);
