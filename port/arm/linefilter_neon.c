@@ -7,10 +7,11 @@
  * compares them):
  *
  * symline_i_line_cand() for symline_i_line_cand_c(): one to five entries in
- * a hundred pass, so the row is tested 64 entries a step: the gray values
- * first (three loads and six instructions per 16: max, saturating add, max,
- * two compares, and), one test for the step, and only in steps where some
- * pass the nibble masks (NEON has no byte mask like SSE2's movemask: a block
+ * a hundred pass, so the row is tested 64 entries a step: the gray value
+ * and the ridge first (three loads and four instructions per 16: max,
+ * saturating add, max, compare), one test for the step, and only in steps
+ * where some pass the brighter side's limit (side_max rejects few of them)
+ * and the nibble masks (NEON has no byte mask like SSE2's movemask: a block
  * is narrowed to 4 bits per entry by vshrn).
  */
 #include <arm_neon.h>
@@ -30,6 +31,14 @@ static inline uint8x16_t gray_lanes(const uint8_t *c, const uint8_t *lo, const u
     const uint8x16_t side = vmaxq_u8(vld1q_u8(lo + x), vld1q_u8(hi + x));
     return vandq_u8(vcgeq_u8(vld1q_u8(c + x), vmaxq_u8(vqaddq_u8(side, rm), mg)),
                     vcleq_u8(side, sm));
+}
+
+/* gray_lanes() without the brighter side's limit; the brighter sides to *side. */
+static inline uint8x16_t ridge_lanes(const uint8_t *c, const uint8_t *lo, const uint8_t *hi,
+                                     size_t x, uint8x16_t mg, uint8x16_t rm, uint8x16_t *side)
+{
+    *side = vmaxq_u8(vld1q_u8(lo + x), vld1q_u8(hi + x));
+    return vcgeq_u8(vld1q_u8(c + x), vmaxq_u8(vqaddq_u8(*side, rm), mg));
 }
 
 /* Appends base + i for every set nibble i of bits; false when out filled up
@@ -60,14 +69,16 @@ uint32_t symline_i_line_cand(const symline_i_prefilter *pf, const uint8_t *c, co
     /* 64 entries a step, one test for all. */
     for (; x + 64u <= n; x += 64u) {
         const size_t at = x; /* 64 bits wide: the block offsets fold into the loads */
-        const uint8x16_t a = gray_lanes(c, lo, hi, at, mg, rm, sm);
-        const uint8x16_t b = gray_lanes(c, lo, hi, at + 16u, mg, rm, sm);
-        const uint8x16_t d = gray_lanes(c, lo, hi, at + 32u, mg, rm, sm);
-        const uint8x16_t e = gray_lanes(c, lo, hi, at + 48u, mg, rm, sm);
+        uint8x16_t sa, sb, sd, se;
+        const uint8x16_t a = ridge_lanes(c, lo, hi, at, mg, rm, &sa);
+        const uint8x16_t b = ridge_lanes(c, lo, hi, at + 16u, mg, rm, &sb);
+        const uint8x16_t d = ridge_lanes(c, lo, hi, at + 32u, mg, rm, &sd);
+        const uint8x16_t e = ridge_lanes(c, lo, hi, at + 48u, mg, rm, &se);
         if (nibbles(vorrq_u8(vorrq_u8(a, b), vorrq_u8(d, e))) != 0u &&
-            !(report(nibbles(a), x, out, &k, next) && report(nibbles(b), x + 16u, out, &k, next) &&
-              report(nibbles(d), x + 32u, out, &k, next) &&
-              report(nibbles(e), x + 48u, out, &k, next))) {
+            !(report(nibbles(vandq_u8(a, vcleq_u8(sa, sm))), x, out, &k, next) &&
+              report(nibbles(vandq_u8(b, vcleq_u8(sb, sm))), x + 16u, out, &k, next) &&
+              report(nibbles(vandq_u8(d, vcleq_u8(sd, sm))), x + 32u, out, &k, next) &&
+              report(nibbles(vandq_u8(e, vcleq_u8(se, sm))), x + 48u, out, &k, next))) {
             return k;
         }
     }
