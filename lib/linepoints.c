@@ -376,7 +376,30 @@ static SL_ALWAYS_INLINE uint32_t s_point(lp_ctx *c, uint32_t x, bool along)
     return s;
 }
 
+#ifdef SYMLINE_PORT_S_ALONG3
+/* Of the ks candidates cand[0 ..] along a row that symline_i_s_along3_keep()
+ * kept, those of the set bits of plateau lie beside a run of equal
+ * energies: the run rule decides them (extremum_at()). Keeps the S points
+ * in cand[0 ..], returns how many. Rare: apart from the batch's loop. */
+SL_NOINLINE static uint32_t plateaus_along(lp_ctx *c, uint32_t ks, uint64_t plateau)
+{
+    uint32_t i, kept = 0u;
+    for (i = 0; i < ks; i++) {
+        const uint32_t x = c->cand[i];
+        c->cand[kept] = (uint16_t)x;
+        kept += ((plateau >> i) & 1u) == 0u ? 1u : (uint32_t)extremum_at(&c->l, x, true);
+    }
+    return kept;
+}
+#endif
+
 #if SL_LP_LANES
+/* s_point() down the columns, for the few candidates decided one at a time:
+ * apart, so that the blocks' loop keeps its state in registers. */
+SL_NOINLINE static uint32_t s_point_down(lp_ctx *c, uint32_t x)
+{
+    return s_point(c, x, false);
+}
 /* Candidates within one block of lanes that make it worth its cost, about
  * that of this many candidates decided one at a time (callgrind, ex01 and
  * field frames down the columns): 2 for a port's block of 8, 4 for the
@@ -413,7 +436,7 @@ static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
             s = symline_i_lane_gray_ok(&c->lg, c->c[x], c->lo[x], c->hi[x]) != 0u ? 2u : 0u;
         }
         if (s > 1u) {
-            s = s_point(c, x, false);
+            s = s_point_down(c, x);
         }
         cand[ks] = (uint16_t)x;
         ks += s;
@@ -462,10 +485,23 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
             }
         }
         SL_STAGE(OPERATOR);
-        for (i = 0; i < kg; i++) {
-            const uint32_t x = cand[i];
-            cand[ks] = (uint16_t)x;
-            ks += s_point(c, x, along);
+#ifdef SYMLINE_PORT_S_ALONG3
+        if (along && c->l.m == 3u && c->dk > 3u) {
+            /* along a row the batch's candidates lie dk > m entries inside
+             * it: the port's lanes keep the S points and the plateaus */
+            uint64_t plateau;
+            ks = symline_i_s_along3_keep(c->c, cand, kg, &plateau);
+            if (plateau != 0u) {
+                ks = plateaus_along(c, ks, plateau);
+            }
+        } else
+#endif
+        {
+            for (i = 0; i < kg; i++) {
+                const uint32_t x = cand[i];
+                cand[ks] = (uint16_t)x;
+                ks += s_point(c, x, along);
+            }
         }
     }
     SL_STAGE(FILTER);

@@ -175,4 +175,57 @@ void symline_i_lanes_down(const uint8_t *r, ptrdiff_t st, const symline_i_lane_g
 #define symline_i_lanes_down symline_i_lanes_down_c
 #endif
 
+/*
+ * The S decision of a candidate along a row at radius m = 3 (k = 4), from
+ * the energies E(i-1), E(i), E(i+1) of entry p[0], which reads p[-4 .. 4]:
+ * 1 where both neighbours' energies exceed E(i) (an S point), 2 where
+ * neither is below it and one equals it (a plateau: the run rule of
+ * linepoints.c decides), else 0 (one is below: no run of equal energies
+ * through i can make it a minimum).
+ */
+static inline uint32_t symline_i_s_along3_c(const uint8_t *p)
+{
+    const uint32_t up = symline_i_lane_energy(symline_i_lane_absdiff(p[-2], p[0]),
+                                              symline_i_lane_absdiff(p[-3], p[1]),
+                                              symline_i_lane_absdiff(p[-4], p[2]));
+    const uint32_t e = symline_i_lane_energy(symline_i_lane_absdiff(p[-1], p[1]),
+                                             symline_i_lane_absdiff(p[-2], p[2]),
+                                             symline_i_lane_absdiff(p[-3], p[3]));
+    const uint32_t dn = symline_i_lane_energy(symline_i_lane_absdiff(p[0], p[2]),
+                                              symline_i_lane_absdiff(p[-1], p[3]),
+                                              symline_i_lane_absdiff(p[-2], p[4]));
+    return up < e || dn < e ? 0u : (up > e && dn > e ? 1u : 2u);
+}
+
+/*
+ * The candidates x = cand[0 .. k-1] (k <= SL_LINE_CAND_MAX, each with
+ * row[x - 4 .. x + 4] in the row) whose code symline_i_s_along3_c(row + x)
+ * is not 0, kept in cand[0 ..] in order; returns how many, and sets bit i
+ * of *plateau where kept entry i has code 2. symline_i_s_along3_keep_c()
+ * is the portable reference; a port's version (SYMLINE_PORT_S_ALONG3, CMake
+ * option SYMLINE_SIMD) does the same with the three energies in vector
+ * lanes, where the scalar ones take nine products and eighteen loads; the
+ * detector's speed builds with such a port use it (linepoints.c), the
+ * others compute the energies one candidate at a time.
+ */
+static inline uint32_t symline_i_s_along3_keep_c(const uint8_t *row, uint16_t *cand, uint32_t k,
+                                                 uint64_t *plateau)
+{
+    uint32_t i, ks = 0u;
+    uint64_t pl = 0u;
+    for (i = 0; i < k; i++) {
+        const uint32_t x = cand[i], code = symline_i_s_along3_c(row + x);
+        cand[ks] = (uint16_t)x;
+        pl |= (uint64_t)(code >> 1) << ks;
+        ks += code != 0u ? 1u : 0u;
+    }
+    *plateau = pl;
+    return ks;
+}
+#ifdef SYMLINE_PORT_S_ALONG3
+uint32_t symline_i_s_along3_keep(const uint8_t *row, uint16_t *cand, uint32_t k, uint64_t *plateau);
+#else
+#define symline_i_s_along3_keep symline_i_s_along3_keep_c
+#endif
+
 #endif /* SYMLINE_LIB_LINEPOINTS_H */

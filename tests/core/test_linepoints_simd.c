@@ -145,12 +145,115 @@ static void simd_is_reference(void **state)
 }
 #endif
 
+/* A row of n gray values for the decision along it: random, nearly equal,
+ * extreme, or with windows mirrored about a few entries (equal energies). */
+static void fill_row(uint8_t *row, uint32_t n, uint32_t *s)
+{
+    const uint32_t kind = tu_rand(s) % 5u, base = tu_rand(s) % 256u;
+    const uint32_t spread = 1u + tu_rand(s) % 8u;
+    uint32_t x, j;
+    for (x = 0; x < n; x++) {
+        const uint32_t q = tu_rand(s);
+        const uint32_t v = kind == 0u   ? q % 256u
+                           : kind == 1u ? ((q & 1u) ? 255u : 0u)
+                                        : base + q % spread;
+        row[x] = (uint8_t)(v < 255u ? v : 255u);
+    }
+    for (j = 0; kind >= 3u && j < n / 8u; j++) {
+        const uint32_t mid = 4u + tu_rand(s) % (n - 8u);
+        uint32_t r;
+        for (r = 1u; r <= 4u; r++) {
+            row[mid + r] = row[mid - r];
+        }
+    }
+}
+
+/* Candidates along a row of n entries, each with 4 entries to either side:
+ * k of them in increasing order, or repeated, or in no order (the call
+ * asks for none). Returns k. */
+static uint32_t pick_along(uint16_t *cand, uint32_t n, uint32_t *s)
+{
+    const uint32_t k = tu_rand(s) % (SL_LINE_CAND_MAX + 1u);
+    uint32_t i;
+    for (i = 0; i < k; i++) {
+        cand[i] = (uint16_t)(4u + tu_rand(s) % (n - 8u));
+    }
+    return k;
+}
+
+/* The reference along a row against the energies' definition: every
+ * candidate whose E(i-1) and E(i+1) both exceed E(i) is kept, one where
+ * they are at least E(i) and one equals it is kept with its plateau bit,
+ * the others are dropped, the order stays; rows read only within x -+ 4. */
+static void along_reference_is_definition(void **state)
+{
+    uint32_t s = 11u, t, codes[3] = {0u, 0u, 0u};
+    (void)state;
+    for (t = 0; t < 5000u; t++) {
+        uint8_t row[96];
+        const uint32_t n = 9u + tu_rand(&s) % (sizeof row - 8u);
+        uint16_t cand[SL_LINE_CAND_MAX], orig[SL_LINE_CAND_MAX];
+        uint64_t plateau = 0x5a5au;
+        uint32_t i, ks = 0u, k;
+        fill_row(row, n, &s);
+        k = pick_along(cand, n, &s);
+        memcpy(orig, cand, sizeof cand);
+        const uint32_t got = symline_i_s_along3_keep_c(row, cand, k, &plateau);
+        for (i = 0; i < k; i++) {
+            const uint8_t *p = row + orig[i];
+            const uint32_t up = energy(p, 1, -1), e = energy(p, 1, 0), dn = energy(p, 1, 1);
+            const uint32_t want = up < e || dn < e ? 0u : up > e && dn > e ? 1u : 2u;
+            assert_int_equal(symline_i_s_along3_c(p), want);
+            codes[want]++;
+            if (want != 0u) {
+                assert_true(ks < got);
+                assert_int_equal(cand[ks], orig[i]);
+                assert_int_equal((plateau >> ks) & 1u, want == 2u ? 1u : 0u);
+                ks++;
+            }
+        }
+        assert_int_equal(got, ks);
+        assert_int_equal(ks < 64u ? plateau >> ks : 0u, 0u);
+    }
+    assert_true(codes[0] > 1000u && codes[1] > 1000u && codes[2] > 1000u);
+}
+
+#ifdef SYMLINE_PORT_S_ALONG3
+/* The SIMD version along a row against the reference: the same entries
+ * kept, the same plateau bits, rows exactly as long as read (the sanitizer
+ * builds catch a read beyond them) at every alignment. */
+static void along_simd_is_reference(void **state)
+{
+    uint32_t s = 13u, t;
+    (void)state;
+    for (t = 0; t < 20000u; t++) {
+        uint8_t buf[16u + 96u];
+        const uint32_t off = tu_rand(&s) % 16u, n = 9u + tu_rand(&s) % 88u;
+        uint8_t *const row = buf + off;
+        uint16_t a[SL_LINE_CAND_MAX], b[SL_LINE_CAND_MAX];
+        uint64_t pa = 1u, pb = 2u;
+        uint32_t k;
+        fill_row(row, n, &s);
+        k = pick_along(a, n, &s);
+        memcpy(b, a, sizeof a);
+        assert_int_equal(symline_i_s_along3_keep(row, a, k, &pa),
+                         symline_i_s_along3_keep_c(row, b, k, &pb));
+        assert_memory_equal(a, b, sizeof a);
+        assert_true(pa == pb);
+    }
+}
+#endif
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(reference_is_definition),
+        cmocka_unit_test(along_reference_is_definition),
 #ifdef SYMLINE_PORT_LANES_DOWN
         cmocka_unit_test(simd_is_reference),
+#endif
+#ifdef SYMLINE_PORT_S_ALONG3
+        cmocka_unit_test(along_simd_is_reference),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
