@@ -47,14 +47,6 @@ static inline void energy8(__m128i d1, __m128i d2, __m128i d3, __m128i *lo, __m1
     *hi = _mm_add_epi32(_mm_slli_epi32(_mm_madd_epi16(a1, a1), 1), _mm_madd_epi16(b1, b1));
 }
 
-/* All ones in the 16-bit lanes where the sign of v | w is set (as 32-bit
- * lanes lo, hi). */
-static inline __m128i negative(__m128i v_lo, __m128i w_lo, __m128i v_hi, __m128i w_hi)
-{
-    return _mm_packs_epi32(_mm_srai_epi32(_mm_or_si128(v_lo, w_lo), 31),
-                           _mm_srai_epi32(_mm_or_si128(v_hi, w_hi), 31));
-}
-
 /* The codes of eight entries r[0 .. 7], in 16-bit lanes. */
 static inline __m128i codes8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m128i rp, __m128i ap,
                              __m128i paper)
@@ -62,19 +54,17 @@ static inline __m128i codes8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m1
     const __m128i m4 = load8(r - 4 * st), m3 = load8(r - 3 * st), m2 = load8(r - 2 * st);
     const __m128i m1 = load8(r - st), p0 = load8(r), p1 = load8(r + st);
     const __m128i p2 = load8(r + 2 * st), p3 = load8(r + 3 * st), p4 = load8(r + 4 * st);
-    const __m128i one = _mm_set1_epi32(1), z = _mm_setzero_si128();
-    __m128i up0, up1, e0, e1, dn0, dn1, du0, du1, dd0, dd1, not_maybe, not_s, side, t, t100, ok, g;
+    const __m128i z = _mm_setzero_si128();
+    __m128i up0, up1, e0, e1, dn0, dn1, low, not_maybe, s, side, t, t100, ok, g;
     energy8(_mm_sub_epi16(m2, p0), _mm_sub_epi16(m3, p1), _mm_sub_epi16(m4, p2), &up0, &up1);
     energy8(_mm_sub_epi16(m1, p1), _mm_sub_epi16(m2, p2), _mm_sub_epi16(m3, p3), &e0, &e1);
     energy8(_mm_sub_epi16(p0, p2), _mm_sub_epi16(m1, p3), _mm_sub_epi16(m2, p4), &dn0, &dn1);
-    du0 = _mm_sub_epi32(up0, e0);
-    du1 = _mm_sub_epi32(up1, e1);
-    dd0 = _mm_sub_epi32(dn0, e0);
-    dd1 = _mm_sub_epi32(dn1, e1);
-    /* maybe S: both differences >= 0; S: both > 0 */
-    not_maybe = negative(du0, dd0, du1, dd1);
-    not_s = negative(_mm_sub_epi32(du0, one), _mm_sub_epi32(dd0, one), _mm_sub_epi32(du1, one),
-                     _mm_sub_epi32(dd1, one));
+    /* the smaller of E(y-1) - E(y), E(y+1) - E(y) in 16-bit lanes (saturated:
+     * the sign and 0 stay); maybe S: it is >= 0; S: > 0 */
+    low = _mm_min_epi16(_mm_packs_epi32(_mm_sub_epi32(up0, e0), _mm_sub_epi32(up1, e1)),
+                        _mm_packs_epi32(_mm_sub_epi32(dn0, e0), _mm_sub_epi32(dn1, e1)));
+    not_maybe = _mm_srai_epi16(low, 15);
+    s = _mm_cmpgt_epi16(low, z);
     /* the rest of the gray test; t100 >= x (unsigned) as x -sat t100 == 0 */
     side = _mm_max_epi16(m4, p4);
     t = _mm_sub_epi16(p0, side);
@@ -90,7 +80,7 @@ static inline __m128i codes8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m1
     g = _mm_andnot_si128(not_maybe, _mm_or_si128(paper, ok));
     /* 2 where g, less 1 where also S */
     return _mm_sub_epi16(_mm_and_si128(g, _mm_set1_epi16(2)),
-                         _mm_and_si128(_mm_andnot_si128(not_s, g), _mm_set1_epi16(1)));
+                         _mm_and_si128(_mm_and_si128(s, g), _mm_set1_epi16(1)));
 }
 
 void symline_i_lanes_down(const uint8_t *r, ptrdiff_t st, const symline_i_lane_gray *g,
