@@ -11,8 +11,8 @@
  * and the ridge first (three loads and four instructions per 16: max,
  * saturating add, max, saturating subtract; zero where they pass), one test
  * for the step on the minimum of the four, and only in steps where some
- * pass the brighter side's limit and the masks (side_max rejects few of
- * them: 5 % of such steps on ex01, so the common step goes without it);
+ * pass the brighter side's limit and the masks (it rarely decides whether
+ * a step has a candidate, so the common step goes without it);
  * then only the set bits of the masks are visited. The last 33 to 63
  * entries of a row of 64 and more are one such step too, over the row's
  * last 64 (the bits before them cleared).
