@@ -317,7 +317,7 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
     out->points_needed = 0u; /* raised by every pass (pass.c) */
     d->truncated = false;
     if (SL_FOR_SPEED_DEEP) { /* read nowhere else (no code in the firmware) */
-        d->cache_level = 0u;
+        d->cache_top = 0u;
     }
     d->stats.mean = 0u;
     d->stats.sigma_q4 = 0u;

@@ -54,6 +54,62 @@ static inline void symline_i_grid_twin(const uint8_t *out, uint32_t x0, uint32_t
     }
 }
 
+/*
+ * The grid pyramid (64-bit speed builds: the grid row cache, linepoints.h):
+ * level 1's rows from the frame with their block sums, and each coarser
+ * level's rows from the sums of the level below, two of its rows per row,
+ * instead of from the frame's blocks again. The same rounded means as
+ * above: the sums are exact (<= 256 * 255 at level 4, 16 bits).
+ */
+
+/* Level 1's row from the frame rows at src and src + stride: sum[x] the 2 x 2
+ * block sums (<= 4 * 255), out[x] their rounded means, x < w. The portable
+ * reference; symline_i_grid_sums1() the build's choice. */
+static inline void symline_i_grid_sums1_c(const uint8_t *src, size_t stride, uint32_t w,
+                                          uint8_t *out, uint16_t *sum)
+{
+    uint32_t x;
+    for (x = 0; x < w; x++) {
+        const uint8_t *b = src + 2u * (size_t)x;
+        const uint32_t s = (uint32_t)b[0] + b[1] + b[stride] + b[stride + 1u];
+        sum[x] = (uint16_t)s;
+        out[x] = (uint8_t)((s + 2u) >> 2);
+    }
+}
+
+/* One row of the level below's sums s[0 .. 2w-1] folded into level
+ * `level`'s (2..4) sums acc[0 .. w-1]: the first of the two rows of a grid
+ * row (out NULL) sets acc[x] = s[2x] + s[2x+1], the second adds the same
+ * and writes the grid row's rounded means to out. The portable reference;
+ * symline_i_grid_fold() the build's choice. */
+static inline void symline_i_grid_fold_c(const uint16_t *s, uint32_t w, uint32_t level,
+                                         uint16_t *acc, uint8_t *out)
+{
+    const uint32_t shift = 2u * level;
+    uint32_t x;
+    for (x = 0; x < w; x++) {
+        const uint32_t pair = (uint32_t)s[2u * x] + s[2u * x + 1u];
+        if (out == NULL) {
+            acc[x] = (uint16_t)pair;
+        } else {
+            acc[x] = (uint16_t)(acc[x] + pair);
+            out[x] = (uint8_t)(((uint32_t)acc[x] + ((1u << shift) >> 1)) >> shift);
+        }
+    }
+}
+
+/* A port's versions (SYMLINE_PORT_GRID_SUMS), with the same output
+ * (tests/core/test_grid_simd.c). */
+#ifdef SYMLINE_PORT_GRID_SUMS
+void symline_i_grid_sums1(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
+                          uint16_t *sum);
+void symline_i_grid_fold(const uint16_t *s, uint32_t w, uint32_t level, uint16_t *acc,
+                         uint8_t *out);
+#else
+#define symline_i_grid_sums1 symline_i_grid_sums1_c
+#define symline_i_grid_fold symline_i_grid_fold_c
+#endif
+
 struct symline_i_pass; /* linepoints.h */
 
 /* The row y of pass p's grid, as above at p->level, into out and, where

@@ -246,7 +246,10 @@ typedef struct lp_ctx {
     const symline_i_pass *p;
     uint16_t *acc;     /* box sums of the coarse grids' rows (speed builds) */
     uint8_t *gray;     /* the coarse grid's row, or ring of rows */
-    uint32_t produced; /* grid rows in the ring so far */
+    uint32_t produced; /* grid rows in the ring (or the cache) so far */
+#if SL_FOR_SPEED_DEEP
+    uint32_t built; /* the first row this pass built into the grid row cache; h: none */
+#endif
     uint16_t cand[SL_LINE_CAND_MAX];
     symline_i_prefilter pf; /* the byte test of this pass's filter */
 #if SL_LP_LANES
@@ -649,21 +652,83 @@ static void field_columns(lp_ctx *c, uint32_t y, const uint32_t *span)
     }
 }
 
-/* The grid row cache's copy of a row (linepoints.h): apart, so that the
- * compiler sees the two rows never overlap. */
-static void copy_row(uint8_t *restrict to, const uint8_t *restrict from, uint32_t w)
+#if SL_FOR_SPEED_DEEP
+/* Row r of the pass's scale into its place in the grid row cache
+ * (linepoints.h), c->gray pointing at the scale's rows: from the frame's
+ * blocks, or where the pass folds (level 1), with its sums, which make the
+ * coarser scales' rows: a level's sums of an even row start a row of the
+ * next level, those of the odd row after it finish that row, which then
+ * goes on to the level after. acc holds the row's sums, then each coarser
+ * level's. */
+static void cache_build(lp_ctx *c, uint32_t r)
 {
-    uint32_t x;
-    for (x = 0; x < w; x++) {
-        to[x] = from[x];
+    const symline_i_pass *p = c->p;
+    const uint32_t fold = p->cache >> 4, W = c->img->width, H = c->img->height;
+    uint8_t *const out = c->gray + (size_t)r * p->w;
+    const uint16_t *head, *s = c->acc;
+    uint16_t *a;
+    uint8_t *rows;
+    uint32_t l, j = r;
+    if (fold == 0u) {
+        symline_i_grid_row(c->img, p, r, c->acc, out, NULL);
+        return;
+    }
+    symline_i_grid_sums1(c->img->data + (size_t)2u * r * c->img->stride, c->img->stride, p->w, out,
+                         c->acc);
+    head = symline_i_cache_head(c->pts + c->cap);
+    a = c->acc + p->w;
+    rows = c->gray + (size_t)p->w * p->h;
+    for (l = 2u; l <= fold; l++) {
+        const uint32_t wl = W >> l, i = j >> 1;
+        if (i >= (H >> l) || i < head[l]) {
+            break; /* below the last row, or its first row was not built */
+        }
+        if ((j & 1u) == 0u) {
+            symline_i_grid_fold(s, wl, l, a, NULL);
+            break;
+        }
+        symline_i_grid_fold(s, wl, l, a, rows + (size_t)i * wl);
+        s = a;
+        a += wl;
+        rows += (size_t)wl * (H >> l);
+        j = i;
     }
 }
 
+/* Row y from the grid row cache, the rows up to what the pass reads with it
+ * (down the columns: y + reach) built where the cache holds them not yet.
+ * The pass's first row built makes the first rows of the coarser scales it
+ * folds into: those whose rows below it are all built. */
+static const uint8_t *cache_row_at(lp_ctx *c, uint32_t y)
+{
+    const symline_i_pass *p = c->p;
+    const uint32_t h = p->h, R = p->axis == SYMLINE_AXIS_VERTICAL ? 0u : reach(p);
+    const uint32_t need = y + R < h ? y + R : h - 1u, first = y > R ? y - R : 0u;
+    uint16_t *const head = symline_i_cache_head(c->pts + c->cap);
+    const uint32_t held = head[p->level];
+    uint32_t r = c->produced > first ? c->produced : first;
+    if (r < held && r < c->built) {
+        uint32_t l, f = r;
+        c->built = r;
+        for (l = 2u; l <= (p->cache >> 4); l++) {
+            f = (f + 1u) / 2u;
+            head[l] = (uint16_t)f;
+        }
+    }
+    for (; r <= need && r < held; r++) {
+        cache_build(c, r);
+    }
+    c->produced = need + 1u;
+    return c->gray + (size_t)y * p->w;
+}
+#endif
+
 /* Grid row y of the pass (c->y): the frame's row at full resolution; at a
- * coarse level the grid row, and down the columns the ring's rows up to
- * y + R produced (each written twice, see symline_i_collect()), with rows
- * y - R .. y + R at the ring's stride around the row returned. Apart from
- * the collection's loop: its frame is not on the deepest call chain. */
+ * coarse level the grid row, from the grid row cache where the pass has it
+ * (linepoints.h), and down the columns the ring's rows up to y + R produced
+ * (each written twice, see symline_i_collect()), with rows y - R .. y + R at
+ * the ring's stride around the row returned. Apart from the collection's
+ * loop: its frame is not on the deepest call chain. */
 SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
 {
     const symline_i_pass *p = c->p;
@@ -672,10 +737,12 @@ SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
         return c->img->data + (size_t)y * c->img->stride;
     }
     SL_STAGE(GRID);
+#if SL_FOR_SPEED_DEEP
+    if (p->cache != SL_CACHE_OFF) {
+        return cache_row_at(c, y);
+    }
+#endif
     if (p->axis == SYMLINE_AXIS_VERTICAL) {
-        if (SL_FOR_SPEED_DEEP && p->cache == SL_CACHE_READ) { /* linepoints.h */
-            return (const uint8_t *)(c->pts + c->cap) - (size_t)w * h + (size_t)y * w;
-        }
         symline_i_grid_row(c->img, p, y, c->acc, c->gray, NULL);
         return c->gray;
     } else {
@@ -686,10 +753,6 @@ SL_NOINLINE static const uint8_t *grid_row_at(lp_ctx *c, uint32_t y)
              c->produced++) {
             uint8_t *g = c->gray + (size_t)(c->produced % held) * w;
             symline_i_grid_row(c->img, p, c->produced, c->acc, g, g + (size_t)held * w);
-            if (SL_FOR_SPEED_DEEP && p->cache == SL_CACHE_WRITE) { /* linepoints.h */
-                copy_row((uint8_t *)(c->pts + c->cap) - (size_t)w * h + (size_t)c->produced * w, g,
-                         w);
-            }
         }
         /* Rows first .. need from the slot of row first on. */
         return c->gray + (size_t)(first % held + (y - first)) * w;
@@ -745,6 +808,13 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
     c->img = img;
     c->p = p;
     c->produced = 0u;
+#if SL_FOR_SPEED_DEEP
+    c->built = h;
+    if (p->cache != SL_CACHE_OFF) { /* the scale's rows in the cache instead of the ring */
+        c->gray =
+            symline_i_cache_rows(pts + cap, img->width, img->height, p->level, p->cache & 15u);
+    }
+#endif
     c->f = &p->filter;
     c->pts = pts;
     c->n = n;
@@ -801,5 +871,10 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
         decide(c);
     }
     row_start[h] = *n;
+#if SL_FOR_SPEED_DEEP
+    if (c->built < h) { /* rows built .. h-1 are held now */
+        symline_i_cache_head(pts + cap)[p->level] = (uint16_t)c->built;
+    }
+#endif
     return SYMLINE_OK;
 }

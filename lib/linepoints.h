@@ -29,22 +29,60 @@ typedef struct symline_i_pass {
 } symline_i_pass;
 
 /*
- * The grid row cache (SL_FOR_SPEED_DEEP: 64-bit speed builds). Both axes of
- * a coarse scale read the same grid rows; the horizontal pass, which runs
- * first, copies each row it builds to the last w * h bytes of the point
- * storage given to symline_i_collect() (pts + cap), and the vertical pass
- * of the same scale reads them there instead of summing the frame's blocks
- * again. The caller (pass.c) asks for it only where no point can reach
- * those bytes before the vertical pass is done with them: the storage holds
- * them above twice w * h points after the points kept so far (a pass lists
- * at most w * h points and traces at most as many; the vertical pass starts
- * below the end of the horizontal one's list), and the grid of earlier
- * segments keeps below them. Where the storage is smaller (sized by
- * points_needed, say) the rows are built as before: the result is the same.
+ * The grid row cache (SL_FOR_SPEED_DEEP: 64-bit speed builds). Every coarse
+ * pass reads whole grid rows: both axes of a scale the same ones, and each
+ * scale's rows follow from the sums of the scale below (grid.h). So, where
+ * the point storage given to symline_i_collect() has the room, the coarse
+ * scales' rows live at its end (pts + cap), each scale's rows one after the
+ * other, at the scale's row stride w:
+ *
+ *   ... points ... | level 1 rows | level 2 rows | ... | level top rows | head
+ *
+ * head: SL_CACHE_HEAD bytes, from[level] (uint16_t) the first row of each
+ * scale held (rows from[level] .. h-1 are; h: none yet). A pass reads its
+ * rows there and builds the ones it needs that are not, in order, into
+ * their place; the first coarse pass (level 1) folds the sums of the rows it
+ * builds into the coarser scales' rows up to level `fold` as well. The
+ * caller (pass.c) asks for it only where no point can reach those bytes
+ * while they are needed: during a pass at level l the storage holds the
+ * bytes of levels l .. top and the head (symline_i_cache_bytes()) above
+ * twice w * h points after the points kept so far (a pass lists at most
+ * w * h points and traces at most as many), and the grid of earlier segments
+ * keeps below them. Where the storage is smaller (sized by points_needed,
+ * say) each pass builds its rows from the frame into its ring as the size
+ * builds do: the result is the same.
+ *
+ * symline_i_pass.cache: SL_CACHE_OFF, or top | fold << 4 (fold: 0, or the
+ * coarsest level the pass's folding reaches, <= SL_CACHE_FOLD_MAX).
  */
-#define SL_CACHE_OFF 0u   /* neither */
-#define SL_CACHE_WRITE 1u /* the horizontal pass: rows built go to the cache too */
-#define SL_CACHE_READ 2u  /* the vertical pass: rows come from the cache */
+#define SL_CACHE_OFF 0u
+#define SL_CACHE_FOLD_MAX 4u /* level 4's sums fill 16 bits (256 * 255) */
+#define SL_CACHE_HEAD ((SYMLINE_DETECT_MAX_LEVELS + 1u) * sizeof(uint16_t))
+
+/* Bytes at the storage's end that levels `level` .. top of a width x height
+ * frame take, with the head. */
+static inline uint64_t symline_i_cache_bytes(uint32_t width, uint32_t height, uint32_t level,
+                                             uint32_t top)
+{
+    uint64_t n = SL_CACHE_HEAD;
+    for (; level <= top; level++) {
+        n += (uint64_t)(width >> level) * (height >> level);
+    }
+    return n;
+}
+
+/* The head of the cache whose storage ends at end (2-byte aligned: points). */
+static inline uint16_t *symline_i_cache_head(symline_point *end)
+{
+    return (uint16_t *)(void *)((uint8_t *)(void *)end - SL_CACHE_HEAD);
+}
+
+/* Level `level`'s rows in the cache of levels .. top whose storage ends at end. */
+static inline uint8_t *symline_i_cache_rows(symline_point *end, uint32_t width, uint32_t height,
+                                            uint32_t level, uint32_t top)
+{
+    return (uint8_t *)(void *)end - (size_t)symline_i_cache_bytes(width, height, level, top);
+}
 
 /* Workspace bytes of symline_i_collect() (row index excluded). */
 size_t symline_i_collect_ws_size(const symline_i_pass *p, uint32_t img_width);

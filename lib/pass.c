@@ -18,6 +18,7 @@
 #include "subpixel.h"
 #include "tracer.h"
 #include "linecheck.h"
+#include "passplan.h"
 
 /* The bend test (symline_i_bend_check) runs on pieces at least this long (px) at
  * the finest scales only: coarser grids step by 4 px and more. */
@@ -157,10 +158,11 @@ static SL_ALWAYS_INLINE void index_fill(const symline_i_run *d, const symline_i_
     symline_point *spare = used < d->r->point_cap ? d->r->points + (size_t)used : NULL;
     size_t spare_bytes =
         spare != NULL ? (size_t)(d->r->point_cap - used) * sizeof(symline_point) : 0u;
-    if (SL_FOR_SPEED_DEEP && d->cache_level != 0u) {
-        /* not into the grid rows kept for the vertical pass: they lie above
-         * twice the pass's grid in points (n <= w h) */
-        spare_bytes -= (size_t)p->w * p->h;
+    if (SL_FOR_SPEED_DEEP && p->cache != SL_CACHE_OFF) {
+        /* not into the grid row cache: it lies above twice the pass's grid
+         * in points (n <= w h) */
+        spare_bytes -=
+            (size_t)symline_i_cache_bytes(d->img->width, d->img->height, p->level, p->cache & 15u);
     }
     SL_STAGE(SEGMENTS); /* it serves the overlap test with earlier passes */
     if (ix != NULL) {
@@ -339,11 +341,45 @@ static bool field_below_top(const symline_i_run *d)
     return false;
 }
 
-/* Whether a w x h grid's bytes fit above the first n points of a storage
- * of cap points (SL_FOR_SPEED_DEEP: 64-bit sizes). */
-static bool cache_fits(uint64_t n, uint64_t cap, uint32_t w, uint32_t h)
+/* Whether `bytes` fit above the first n points of a storage of cap points
+ * (SL_FOR_SPEED_DEEP: 64-bit sizes). */
+static bool cache_fits(uint64_t n, uint64_t cap, uint64_t bytes)
 {
-    return n * sizeof(symline_point) + (uint64_t)w * h <= cap * sizeof(symline_point);
+    return n * sizeof(symline_point) + bytes <= cap * sizeof(symline_point);
+}
+
+/* The grid row cache for a pass (linepoints.h), SL_FOR_SPEED_DEEP: where
+ * the storage has the room for the pass's points and the cache of its scale
+ * and the coarser ones, the cache that earlier passes filled, or, at the
+ * first axis of a scale, a new one (its head: no rows held yet), which the
+ * pass at level 1 fills for the coarser scales as well. Where the room is
+ * short the cache ends: the rows it held may be overwritten. */
+static uint32_t cache_plan(symline_i_run *d, const symline_i_pass *p)
+{
+    const uint32_t W = d->img->width, H = d->img->height;
+    const uint32_t top = symline_i_level_count(d->cfg, W, H) - 1u;
+    uint16_t *head;
+    uint32_t l;
+    if (p->level == 0u ||
+        !cache_fits((uint64_t)d->npts + 2u * (uint64_t)p->w * p->h, d->r->point_cap,
+                    symline_i_cache_bytes(W, H, p->level, top))) {
+        d->cache_top = 0u;
+        return SL_CACHE_OFF;
+    }
+    if (d->cache_top != 0u) {
+        return top;
+    }
+    if (p->axis != symline_i_axis_of(d->cfg, 0u)) {
+        return SL_CACHE_OFF; /* the scale's first pass had no cache: rows unknown */
+    }
+    d->cache_top = (uint8_t)top;
+    head = symline_i_cache_head(d->r->points + d->r->point_cap);
+    for (l = p->level; l <= top; l++) {
+        head[l] = (uint16_t)(H >> l);
+    }
+    return p->level == 1u && top >= 2u
+               ? top | (top < SL_CACHE_FOLD_MAX ? top : SL_CACHE_FOLD_MAX) << 4
+               : top;
 }
 
 /* The pass's raster list into the free part of the point storage (after
@@ -371,17 +407,7 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, u
         p->field = (!SL_FOR_SPEED || field_below_top(d)) ? d->field_rows : NULL;
     }
     if (SL_FOR_SPEED_DEEP) {
-        /* At a coarse scale of both axes the horizontal pass (first) keeps
-         * its grid rows at the point storage's end for the vertical one,
-         * where no point can reach them (linepoints.h). */
-        const bool both = p->level > 0u && d->cfg->axes == SYMLINE_AXES_BOTH;
-        const bool write =
-            both && p->axis == SYMLINE_AXIS_HORIZONTAL &&
-            cache_fits((uint64_t)d->npts + 2u * (uint64_t)p->w * p->h, d->r->point_cap, p->w, p->h);
-        p->cache = write                                     ? SL_CACHE_WRITE
-                   : both && d->cache_level == p->level + 1u ? SL_CACHE_READ
-                                                             : SL_CACHE_OFF;
-        d->cache_level = write ? (uint8_t)(p->level + 1u) : 0u;
+        p->cache = cache_plan(d, p);
     }
     st = symline_i_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
                            d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);

@@ -26,8 +26,8 @@ typedef struct symline_i_run {
     uint32_t npts;               /* points kept so far: [0, npts) */
     symline_i_frame_stats stats; /* for the adaptive thresholds (cfg->adaptive) */
     bool truncated;
-    uint8_t cache_level;  /* SL_FOR_SPEED_DEEP: level + 1 whose grid rows the point
-                             storage's end holds (linepoints.h); 0: none */
+    uint8_t cache_top;    /* SL_FOR_SPEED_DEEP: the coarsest scale of the grid row
+                             cache at the point storage's end (linepoints.h); 0: none */
     uint16_t *field_rows; /* NULL, or width entries: line points above the field
                              boundary (d->r->field) are dropped before tracing */
 } symline_i_run;

@@ -96,8 +96,8 @@ static SL_ALWAYS_INLINE __m128i level1_sums(const uint8_t *b, size_t stride, __m
     return level1_of(load16(b), load16(b + stride), k);
 }
 
-static SL_ALWAYS_INLINE uint32_t level1(const uint8_t *src, size_t stride, uint32_t w,
-                                        uint8_t *out, uint8_t *twin)
+static SL_ALWAYS_INLINE uint32_t level1(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
+                                        uint8_t *twin)
 {
     const __m128i k = ff01();
     const uint8_t *b = src;
@@ -149,8 +149,8 @@ static SL_ALWAYS_INLINE __m128i level2_means(const uint8_t *b, size_t stride)
     return _mm_srli_epi16(_mm_add_epi16(S, half), 4);
 }
 
-static SL_ALWAYS_INLINE uint32_t level2(const uint8_t *src, size_t stride, uint32_t w,
-                                        uint8_t *out, uint8_t *twin)
+static SL_ALWAYS_INLINE uint32_t level2(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
+                                        uint8_t *twin)
 {
     const __m128i half = _mm_set1_epi16(8);
     const uint8_t *b = src;
@@ -186,8 +186,8 @@ static SL_ALWAYS_INLINE void sums8(const uint8_t *b, size_t stride, uint32_t nv,
     uint32_t i;
     for (i = 0; i < nv; i++) {
         const uint8_t *c = b + 16u * i;
-        const __m128i s01 = _mm_add_epi32(_mm_sad_epu8(load16(c), z),
-                                          _mm_sad_epu8(load16(c + stride), z));
+        const __m128i s01 =
+            _mm_add_epi32(_mm_sad_epu8(load16(c), z), _mm_sad_epu8(load16(c + stride), z));
         const __m128i s23 = _mm_add_epi32(_mm_sad_epu8(load16(c + 2u * stride), z),
                                           _mm_sad_epu8(load16(c + 3u * stride), z));
         const __m128i s45 = _mm_add_epi32(_mm_sad_epu8(load16(c + 4u * stride), z),
@@ -199,8 +199,8 @@ static SL_ALWAYS_INLINE void sums8(const uint8_t *b, size_t stride, uint32_t nv,
 }
 
 /* Level 3: one block of 8 columns per 64-bit lane of psadbw. */
-static SL_ALWAYS_INLINE uint32_t level3(const uint8_t *src, size_t stride, uint32_t w,
-                                        uint8_t *out, uint8_t *twin)
+static SL_ALWAYS_INLINE uint32_t level3(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
+                                        uint8_t *twin)
 {
     const __m128i half = _mm_set1_epi16(32);
     const uint8_t *b = src;
@@ -230,8 +230,8 @@ static SL_ALWAYS_INLINE uint32_t level3(const uint8_t *src, size_t stride, uint3
 /* Level 4: blocks of one vector, four at a time, each summed as two blocks
  * of 8 rows (sums8()) one after the other: psadbw's two half-block sums
  * added, the block sums (<= 256 * 255) rounded in 32-bit lanes. */
-static SL_ALWAYS_INLINE uint32_t level4(const uint8_t *src, size_t stride, uint32_t w,
-                                        uint8_t *out, uint8_t *twin)
+static SL_ALWAYS_INLINE uint32_t level4(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
+                                        uint8_t *twin)
 {
     const __m128i half = _mm_set1_epi32(128);
     const uint8_t *b = src;
@@ -325,4 +325,74 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     } else {
         row(src, stride, level, w, out, twin);
     }
+}
+
+/* The grid pyramid (grid.h): level 1's row with its 2 x 2 sums (level1_of()
+ * before the rounding), sixteen pixels a step. */
+void symline_i_grid_sums1(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
+                          uint16_t *sum)
+{
+    const __m128i k = ff01(), half = _mm_set1_epi16(2);
+    const size_t w16 = w & ~15u;
+    size_t x = 0u;
+    for (; x < w16; x += 16u) {
+        const uint8_t *b = src + 2u * x;
+        const __m128i u0 = load16(b), v0 = load16(b + stride);
+        const __m128i u1 = load16(b + 16), v1 = load16(b + 16 + stride);
+        const __m128i H0 = _mm_add_epi16(_mm_srli_epi16(u0, 8), _mm_srli_epi16(v0, 8));
+        const __m128i H1 = _mm_add_epi16(_mm_srli_epi16(u1, 8), _mm_srli_epi16(v1, 8));
+        const __m128i S0 = _mm_add_epi16(_mm_add_epi16(u0, v0), _mm_mullo_epi16(H0, k));
+        const __m128i S1 = _mm_add_epi16(_mm_add_epi16(u1, v1), _mm_mullo_epi16(H1, k));
+        _mm_storeu_si128((__m128i *)(void *)(sum + x), S0);
+        _mm_storeu_si128((__m128i *)(void *)(sum + x + 8u), S1);
+        _mm_storeu_si128((__m128i *)(void *)(out + x),
+                         _mm_packus_epi16(_mm_srli_epi16(_mm_add_epi16(S0, half), 2),
+                                          _mm_srli_epi16(_mm_add_epi16(S1, half), 2)));
+    }
+    symline_i_grid_sums1_c(src + 2u * x, stride, w - (uint32_t)x, out + x, sum + x);
+}
+
+/* Eight neighbour pair sums of s[0 .. 15]: pmaddwd by ones (the sums below
+ * level 4 are < 2^15, their pairs too: signed lanes hold them), packed. */
+static SL_ALWAYS_INLINE __m128i pairs8(const uint16_t *s)
+{
+    const __m128i one = _mm_set1_epi16(1);
+    return _mm_packs_epi32(
+        _mm_madd_epi16(_mm_loadu_si128((const __m128i *)(const void *)s), one),
+        _mm_madd_epi16(_mm_loadu_si128((const __m128i *)(const void *)(s + 8)), one));
+}
+
+/* A grid row's second half folded in: acc + the pairs (<= 256 * 255, 16-bit
+ * lanes wrap-free), stored, and the rounded means. */
+static SL_ALWAYS_INLINE __m128i fold8(const uint16_t *s, uint16_t *acc, __m128i half, __m128i sh)
+{
+    const __m128i a = _mm_add_epi16(_mm_loadu_si128((const __m128i *)(const void *)acc), pairs8(s));
+    _mm_storeu_si128((__m128i *)(void *)acc, a);
+    return _mm_srl_epi16(_mm_add_epi16(a, half), sh);
+}
+
+void symline_i_grid_fold(const uint16_t *s, uint32_t w, uint32_t level, uint16_t *acc, uint8_t *out)
+{
+    const size_t w8 = w & ~7u;
+    size_t x = 0u;
+    if (out == NULL) {
+        for (; x < w8; x += 8u) {
+            _mm_storeu_si128((__m128i *)(void *)(acc + x), pairs8(s + 2u * x));
+        }
+    } else {
+        const __m128i half = _mm_set1_epi16((short)(1u << (2u * level - 1u)));
+        const __m128i sh = _mm_cvtsi32_si128((int)(2u * level));
+        for (; x + 16u <= w; x += 16u) {
+            const __m128i a = fold8(s + 2u * x, acc + x, half, sh);
+            _mm_storeu_si128((__m128i *)(void *)(out + x),
+                             _mm_packus_epi16(a, fold8(s + 2u * x + 16u, acc + x + 8u, half, sh)));
+        }
+        if (x < w8) {
+            const __m128i a = fold8(s + 2u * x, acc + x, half, sh);
+            _mm_storel_epi64((__m128i *)(void *)(out + x), _mm_packus_epi16(a, a));
+            x += 8u;
+        }
+    }
+    symline_i_grid_fold_c(s + 2u * x, w - (uint32_t)x, level, acc + x,
+                          out != NULL ? out + x : NULL);
 }

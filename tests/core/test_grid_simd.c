@@ -7,6 +7,8 @@
  * against the portable reference: random images, levels 0..5, odd and short
  * widths, unaligned starts, strides, gray-value extremes, the row written
  * once or twice (the twin), and no write past the rows or the scratch.
+ * Likewise the grid pyramid's rows (grid.h) built from the sums of the
+ * level below.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -171,10 +173,113 @@ static void simd_is_reference(void **state)
 }
 #endif
 
+/* The grid pyramid (grid.h) as the grid row cache builds it (linepoints.c):
+ * level 1's rows with their sums, and each coarser level's from the sums of
+ * the level below, a row started by an even row and finished by the odd one
+ * after it, against the definition at levels 1..4 (frames of two level-4
+ * rows), nothing written past a row or the sums (width entries in all). */
+static void pyramid_is_definition(void **state)
+{
+    uint8_t got[MAXW + 16u], want[MAXW + 16u];
+    uint16_t acc[MAXW + 8u];
+    uint32_t s = 23u, t, r, l;
+    (void)state;
+    for (t = 0; t < 600u; t++) {
+        const uint32_t width = (t % 3u == 0u) ? 2u + tu_rand(&s) % 80u : 2u + tu_rand(&s) % MAXW;
+        const uint32_t stride = width + tu_rand(&s) % 40u, off = tu_rand(&s) % 16u;
+        symline_image im;
+        if (t % 10u == 0u) {
+            fill_gray(t / 10u, &s);
+        }
+        im = frame(width, 4u, stride, off);
+        memset(acc, GUARD, sizeof acc);
+        for (r = 0; r < (im.height >> 1); r++) {
+            const uint16_t *sum = acc;
+            uint16_t *a = acc + (width >> 1);
+            uint32_t j = r;
+            memset(got, GUARD, sizeof got);
+            memset(want, GUARD, sizeof want);
+            symline_i_grid_sums1(im.data + (size_t)2u * r * stride, stride, width >> 1, got, acc);
+            definition(&im, 1u, r, want);
+            assert_memory_equal(got, want, sizeof got);
+            for (l = 2u; l <= 4u && (width >> l) > 0u; l++) {
+                if ((j & 1u) == 0u) {
+                    symline_i_grid_fold(sum, width >> l, l, a, NULL);
+                    break;
+                }
+                memset(got, GUARD, sizeof got);
+                memset(want, GUARD, sizeof want);
+                symline_i_grid_fold(sum, width >> l, l, a, got);
+                definition(&im, l, j >> 1, want);
+                assert_memory_equal(got, want, sizeof got);
+                sum = a;
+                a += width >> l;
+                j >>= 1;
+            }
+            assert_int_equal(acc[width], 0x5a5au);
+        }
+        free_frame(&im);
+    }
+}
+
+#ifdef SYMLINE_PORT_GRID_SUMS
+/* The SIMD pyramid against the portable reference: level 1's rows and sums
+ * on random frames; the folds on random sums as large as each level's get
+ * (the second row's sums added to the first's), both rows of a grid row;
+ * nothing written past the row or the sums. */
+static void pyramid_simd_is_reference(void **state)
+{
+    uint8_t a[MAXW + 16u], b[MAXW + 16u];
+    uint16_t sa[MAXW + 8u], sb[MAXW + 8u], in[2u * MAXW + 16u];
+    uint32_t s = 29u, t, x, l;
+    (void)state;
+    for (t = 0; t < 3000u; t++) {
+        const uint32_t w = (t % 3u == 0u) ? 1u + tu_rand(&s) % 40u : 1u + tu_rand(&s) % (MAXW / 2u);
+        const uint32_t stride = 2u * w + tu_rand(&s) % 40u, off = tu_rand(&s) % 16u;
+        symline_image im;
+        if (t % 10u == 0u) {
+            fill_gray(t / 10u, &s);
+        }
+        im = frame(2u * w, 0u, stride, off); /* two rows */
+        memset(a, GUARD, sizeof a);
+        memset(b, GUARD, sizeof b);
+        memset(sa, GUARD, sizeof sa);
+        memset(sb, GUARD, sizeof sb);
+        symline_i_grid_sums1(im.data, stride, w, a, sa);
+        symline_i_grid_sums1_c(im.data, stride, w, b, sb);
+        assert_memory_equal(a, b, sizeof a);
+        assert_memory_equal(sa, sb, sizeof sa);
+        free_frame(&im);
+        l = 2u + t % 3u;
+        for (x = 0; x < 2u * w + 16u; x++) { /* a level l - 1 sum: <= 4^(l-1) 255 */
+            const uint32_t top = (1u << (2u * l - 2u)) * 255u, r = tu_rand(&s);
+            in[x] = (uint16_t)((t / 3u) % 4u == 0u   ? top
+                               : (t / 3u) % 4u == 1u ? 0u
+                                                     : r % (top + 1u));
+        }
+        memset(a, GUARD, sizeof a);
+        memset(b, GUARD, sizeof b);
+        memset(sa, GUARD, sizeof sa);
+        memset(sb, GUARD, sizeof sb);
+        symline_i_grid_fold(in, w, l, sa, NULL);
+        symline_i_grid_fold_c(in, w, l, sb, NULL);
+        assert_memory_equal(sa, sb, sizeof sa);
+        symline_i_grid_fold(in + 1, w, l, sa, a); /* the second row: other sums */
+        symline_i_grid_fold_c(in + 1, w, l, sb, b);
+        assert_memory_equal(sa, sb, sizeof sa);
+        assert_memory_equal(a, b, sizeof a);
+    }
+}
+#endif
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(row_is_definition),
+        cmocka_unit_test(pyramid_is_definition),
+#ifdef SYMLINE_PORT_GRID_SUMS
+        cmocka_unit_test(pyramid_simd_is_reference),
+#endif
 #ifdef SYMLINE_PORT_GRID
         cmocka_unit_test(simd_is_reference),
 #endif

@@ -207,15 +207,17 @@ static void test_points_needed_is_exact(void **state)
 
 /*
  * The point storage beyond what a frame needs changes nothing. Where the
- * build keeps a coarse scale's grid rows at the storage's end for its
- * vertical pass (lib/linepoints.h, 64-bit speed builds) it does so once the
- * storage holds them above twice the scale's grid in points after the
- * points kept so far (at most the result's): every capacity from
- * points_needed on a little, and every one around each scale's threshold,
- * gives the result of plenty, on a 320x240 window of a bundled frame with
- * both axes and three scales. (Where the grid of earlier segments takes
- * point storage, test_points_needed_is_exact compares plenty, rows shared,
- * with points_needed, rows built.)
+ * build keeps the coarse scales' grid rows at the storage's end (the grid
+ * row cache, lib/linepoints.h, 64-bit speed builds) it does so for a pass
+ * at level l once the storage holds the rows of levels l .. top and the
+ * cache's head above twice the scale's grid in points after the points kept
+ * so far (at most the result's): every capacity from points_needed on a
+ * little, and every one around each scale's threshold, gives the result of
+ * plenty, on a 320x240 window of a bundled frame with both axes and three
+ * scales, and with one axis and four (the rows of levels 2 and 3 made from
+ * level 1's sums). (Where the grid of earlier segments takes point storage,
+ * test_points_needed_is_exact compares plenty, rows shared, with
+ * points_needed, rows built.)
  */
 static void same_as(const frame *f, const symline_config *c, const symline_result *big,
                     const symline_segment *s1, const symline_point *p1, uint32_t cap,
@@ -254,10 +256,15 @@ static void check_any_room(const frame *f, const symline_config *c)
     for (cap = big.points_needed; cap <= big.points_needed + 64u; cap++) {
         same_as(f, c, &big, s1, p1, cap, s2, SEGS, p2);
     }
-    for (level = 1u; level <= 3u; level++) {
+    for (level = 1u; level < c->levels; level++) {
         const uint32_t g = (f->view.width >> level) * (f->view.height >> level);
+        /* the cache's bytes at this level: its head and levels level .. top */
+        uint32_t bytes = (SYMLINE_DETECT_MAX_LEVELS + 1u) * 2u, l, t; /* head: a row per level */
+        for (l = level; l < c->levels; l++) {
+            bytes += (f->view.width >> l) * (f->view.height >> l);
+        }
         /* the threshold after no point kept, from one below */
-        const uint32_t t = 2u * g + (g + 5u) / 6u - 1u;
+        t = 2u * g + (bytes + (uint32_t)sizeof(symline_point) - 1u) / sizeof(symline_point) - 1u;
         for (cap = t > big.points_needed ? t : big.points_needed; cap <= t + big.point_count + 1u;
              cap++) {
             same_as(f, c, &big, s1, p1, cap, s2, SEGS, p2);
@@ -285,6 +292,13 @@ static void test_more_room_same_result(void **state)
     c.levels = 3u;
     check_any_room(&win, &c);
     c.field_boundary = SYMLINE_FIELD_OFF; /* every row of every scale */
+    check_any_room(&win, &c);
+    symline_config_default(&c);
+    c.axes = SYMLINE_AXES_HORIZONTAL;
+    c.levels = 4u;
+    check_any_room(&win, &c);
+    c.axes = SYMLINE_AXES_VERTICAL;
+    c.field_boundary = SYMLINE_FIELD_OFF;
     check_any_room(&win, &c);
     imgio_free(&f.img);
 }
