@@ -62,23 +62,33 @@ static inline void symline_i_grid_twin(const uint8_t *out, uint32_t x0, uint32_t
  * above: the sums are exact (<= 256 * 255 at level 4, 16 bits).
  */
 
-/* Level 1's row from the frame rows at src and src + stride: sum[x] the 2 x 2
- * block sums (<= 4 * 255), out[x] their rounded means, x < w. The portable
- * reference; symline_i_grid_sums1() the build's choice. */
+/* Level 1's row from the frame rows at src and src + stride: out[x] the
+ * rounded means of the 2 x 2 blocks, x < w; where acc is not NULL, their sums
+ * folded into level 2's, acc[0 .. w/2 - 1], as symline_i_grid_fold() does
+ * (out2 NULL: the first of a level-2 row's two rows; else the second, and
+ * the level-2 row to out2). The portable reference; symline_i_grid_sums1()
+ * the build's choice. */
 static inline void symline_i_grid_sums1_c(const uint8_t *src, size_t stride, uint32_t w,
-                                          uint8_t *out, uint16_t *sum)
+                                          uint8_t *out, uint16_t *acc, uint8_t *out2)
 {
-    uint32_t x;
+    uint32_t x, prev = 0u;
     for (x = 0; x < w; x++) {
         const uint8_t *b = src + 2u * (size_t)x;
         const uint32_t s = (uint32_t)b[0] + b[1] + b[stride] + b[stride + 1u];
-        sum[x] = (uint16_t)s;
         out[x] = (uint8_t)((s + 2u) >> 2);
+        if (acc != NULL && (x & 1u) != 0u) {
+            uint16_t *const a = &acc[x >> 1];
+            *a = (uint16_t)(out2 == NULL ? prev + s : *a + prev + s);
+            if (out2 != NULL) {
+                out2[x >> 1] = (uint8_t)((*a + 8u) >> 4);
+            }
+        }
+        prev = s;
     }
 }
 
 /* One row of the level below's sums s[0 .. 2w-1] folded into level
- * `level`'s (2..4) sums acc[0 .. w-1]: the first of the two rows of a grid
+ * `level`'s (3..4; any of 2..4) sums acc[0 .. w-1]: the first of the two rows of a grid
  * row (out NULL) sets acc[x] = s[2x] + s[2x+1], the second adds the same
  * and writes the grid row's rounded means to out. The portable reference;
  * symline_i_grid_fold() the build's choice. */
@@ -102,7 +112,7 @@ static inline void symline_i_grid_fold_c(const uint16_t *s, uint32_t w, uint32_t
  * (tests/core/test_grid_simd.c). */
 #ifdef SYMLINE_PORT_GRID_SUMS
 void symline_i_grid_sums1(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
-                          uint16_t *sum);
+                          uint16_t *acc, uint8_t *out2);
 void symline_i_grid_fold(const uint16_t *s, uint32_t w, uint32_t level, uint16_t *acc,
                          uint8_t *out);
 #else

@@ -658,39 +658,46 @@ static void field_columns(lp_ctx *c, uint32_t y, const uint32_t *span)
  * blocks, or where the pass folds (level 1), with its sums, which make the
  * coarser scales' rows: a level's sums of an even row start a row of the
  * next level, those of the odd row after it finish that row, which then
- * goes on to the level after. acc holds the row's sums, then each coarser
- * level's. */
-static void cache_build(lp_ctx *c, uint32_t r)
+ * goes on to the level after. acc holds level 2's sums, then each coarser
+ * level's. Apart from the row's lookup: its frame stays small. */
+SL_NOINLINE static void cache_build(lp_ctx *c, uint32_t r)
 {
     const symline_i_pass *p = c->p;
     const uint32_t fold = p->cache >> 4, W = c->img->width, H = c->img->height;
+    const size_t stride = c->img->stride;
     uint8_t *const out = c->gray + (size_t)r * p->w;
-    const uint16_t *head, *s = c->acc;
-    uint16_t *a;
+    const uint16_t *head;
+    uint16_t *s;
     uint8_t *rows;
-    uint32_t l, j = r;
+    uint32_t l, j = r >> 1;
     if (fold == 0u) {
         symline_i_grid_row(c->img, p, r, c->acc, out, NULL);
         return;
     }
-    symline_i_grid_sums1(c->img->data + (size_t)2u * r * c->img->stride, c->img->stride, p->w, out,
-                         c->acc);
     head = symline_i_cache_head(c->pts + c->cap);
-    a = c->acc + p->w;
-    rows = c->gray + (size_t)p->w * p->h;
-    for (l = 2u; l <= fold; l++) {
+    rows = c->gray + (size_t)p->w * p->h; /* level 2's */
+    if (j >= (H >> 2) || j < head[2]) {   /* below the last row, or its first row was not built */
+        symline_i_grid_sums1(c->img->data + 2u * r * stride, stride, p->w, out, NULL, NULL);
+        return;
+    }
+    symline_i_grid_sums1(c->img->data + 2u * r * stride, stride, p->w, out, c->acc,
+                         (r & 1u) != 0u ? rows + (size_t)j * (W >> 2) : NULL);
+    if ((r & 1u) == 0u) {
+        return;
+    }
+    s = c->acc;
+    for (l = 3u; l <= fold; l++) {
         const uint32_t wl = W >> l, i = j >> 1;
+        rows += (size_t)(W >> (l - 1u)) * (H >> (l - 1u));
         if (i >= (H >> l) || i < head[l]) {
-            break; /* below the last row, or its first row was not built */
-        }
-        if ((j & 1u) == 0u) {
-            symline_i_grid_fold(s, wl, l, a, NULL);
             break;
         }
-        symline_i_grid_fold(s, wl, l, a, rows + (size_t)i * wl);
-        s = a;
-        a += wl;
-        rows += (size_t)wl * (H >> l);
+        symline_i_grid_fold(s, wl, l, s + (W >> (l - 1u)),
+                            (j & 1u) != 0u ? rows + (size_t)i * wl : NULL);
+        if ((j & 1u) == 0u) {
+            break;
+        }
+        s += W >> (l - 1u);
         j = i;
     }
 }
@@ -856,7 +863,9 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
         if (none) {
             continue; /* above the field in every column */
         }
-        row = grid_row_at(c, y);
+        /* (the frame's rows without a call where the build optimises for speed) */
+        row = SL_FOR_SPEED && p->level == 0u ? img->data + (size_t)y * img->stride
+                                             : grid_row_at(c, y);
         c->c = row;
         c->lo = row;
         c->hi = row;

@@ -327,13 +327,29 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     }
 }
 
-/* The grid pyramid (grid.h): level 1's row with its 2 x 2 sums (level1_of()
- * before the rounding), sixteen pixels a step. */
-void symline_i_grid_sums1(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
-                          uint16_t *sum)
+/* Eight neighbour pair sums of the 16 sums in u, v: pmaddwd by ones (the
+ * sums below level 4 are < 2^15, their pairs too: signed lanes hold them),
+ * packed. */
+static SL_ALWAYS_INLINE __m128i pairs_of(__m128i u, __m128i v)
 {
-    const __m128i k = ff01(), half = _mm_set1_epi16(2);
-    const size_t w16 = w & ~15u;
+    const __m128i one = _mm_set1_epi16(1);
+    return _mm_packs_epi32(_mm_madd_epi16(u, one), _mm_madd_epi16(v, one));
+}
+
+static SL_ALWAYS_INLINE __m128i pairs8(const uint16_t *s)
+{
+    return pairs_of(_mm_loadu_si128((const __m128i *)(const void *)s),
+                    _mm_loadu_si128((const __m128i *)(const void *)(s + 8)));
+}
+
+/* The grid pyramid (grid.h): level 1's row, sixteen pixels a step, from the
+ * sums of level1_of() before their rounding, and where asked their pairs
+ * into level 2's sums (fold: 0 none, 1 the first row, 2 the second, with
+ * level 2's row; a constant in each inlined copy). */
+static SL_ALWAYS_INLINE size_t sums1(const uint8_t *src, size_t stride, size_t w16, uint8_t *out,
+                                     uint16_t *acc, uint8_t *out2, uint32_t fold)
+{
+    const __m128i k = ff01(), half = _mm_set1_epi16(2), half2 = _mm_set1_epi16(8);
     size_t x = 0u;
     for (; x < w16; x += 16u) {
         const uint8_t *b = src + 2u * x;
@@ -343,23 +359,32 @@ void symline_i_grid_sums1(const uint8_t *src, size_t stride, uint32_t w, uint8_t
         const __m128i H1 = _mm_add_epi16(_mm_srli_epi16(u1, 8), _mm_srli_epi16(v1, 8));
         const __m128i S0 = _mm_add_epi16(_mm_add_epi16(u0, v0), _mm_mullo_epi16(H0, k));
         const __m128i S1 = _mm_add_epi16(_mm_add_epi16(u1, v1), _mm_mullo_epi16(H1, k));
-        _mm_storeu_si128((__m128i *)(void *)(sum + x), S0);
-        _mm_storeu_si128((__m128i *)(void *)(sum + x + 8u), S1);
         _mm_storeu_si128((__m128i *)(void *)(out + x),
                          _mm_packus_epi16(_mm_srli_epi16(_mm_add_epi16(S0, half), 2),
                                           _mm_srli_epi16(_mm_add_epi16(S1, half), 2)));
+        if (fold == 1u) {
+            _mm_storeu_si128((__m128i *)(void *)(acc + x / 2u), pairs_of(S0, S1));
+        } else if (fold == 2u) {
+            __m128i a = _mm_loadu_si128((const __m128i *)(const void *)(acc + x / 2u));
+            a = _mm_add_epi16(a, pairs_of(S0, S1));
+            _mm_storeu_si128((__m128i *)(void *)(acc + x / 2u), a);
+            a = _mm_srli_epi16(_mm_add_epi16(a, half2), 4);
+            _mm_storel_epi64((__m128i *)(void *)(out2 + x / 2u), _mm_packus_epi16(a, a));
+        }
     }
-    symline_i_grid_sums1_c(src + 2u * x, stride, w - (uint32_t)x, out + x, sum + x);
+    return x;
 }
 
-/* Eight neighbour pair sums of s[0 .. 15]: pmaddwd by ones (the sums below
- * level 4 are < 2^15, their pairs too: signed lanes hold them), packed. */
-static SL_ALWAYS_INLINE __m128i pairs8(const uint16_t *s)
+void symline_i_grid_sums1(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
+                          uint16_t *acc, uint8_t *out2)
 {
-    const __m128i one = _mm_set1_epi16(1);
-    return _mm_packs_epi32(
-        _mm_madd_epi16(_mm_loadu_si128((const __m128i *)(const void *)s), one),
-        _mm_madd_epi16(_mm_loadu_si128((const __m128i *)(const void *)(s + 8)), one));
+    const size_t w16 = w & ~15u;
+    const size_t x = acc == NULL    ? sums1(src, stride, w16, out, NULL, NULL, 0u)
+                     : out2 == NULL ? sums1(src, stride, w16, out, acc, NULL, 1u)
+                                    : sums1(src, stride, w16, out, acc, out2, 2u);
+    /* (x even: the tail's pairs are the row's) */
+    symline_i_grid_sums1_c(src + 2u * x, stride, w - (uint32_t)x, out + x,
+                           acc != NULL ? acc + x / 2u : NULL, out2 != NULL ? out2 + x / 2u : NULL);
 }
 
 /* A grid row's second half folded in: acc + the pairs (<= 256 * 255, 16-bit

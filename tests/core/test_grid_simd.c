@@ -174,13 +174,14 @@ static void simd_is_reference(void **state)
 #endif
 
 /* The grid pyramid (grid.h) as the grid row cache builds it (linepoints.c):
- * level 1's rows with their sums, and each coarser level's from the sums of
- * the level below, a row started by an even row and finished by the odd one
- * after it, against the definition at levels 1..4 (frames of two level-4
- * rows), nothing written past a row or the sums (width entries in all). */
+ * level 1's rows, level 2's from their sums, each coarser level's from the
+ * sums of the level below, a row started by an even row and finished by the
+ * odd one after it, against the definition at levels 1..4 (frames of two
+ * level-4 rows), nothing written past a row or the sums (width / 2 entries
+ * in all). */
 static void pyramid_is_definition(void **state)
 {
-    uint8_t got[MAXW + 16u], want[MAXW + 16u];
+    uint8_t got[MAXW + 16u], want[MAXW + 16u], two[MAXW + 16u];
     uint16_t acc[MAXW + 8u];
     uint32_t s = 23u, t, r, l;
     (void)state;
@@ -194,42 +195,57 @@ static void pyramid_is_definition(void **state)
         im = frame(width, 4u, stride, off);
         memset(acc, GUARD, sizeof acc);
         for (r = 0; r < (im.height >> 1); r++) {
-            const uint16_t *sum = acc;
-            uint16_t *a = acc + (width >> 1);
-            uint32_t j = r;
+            uint16_t *sum = acc;
+            uint32_t j = r >> 1;
             memset(got, GUARD, sizeof got);
             memset(want, GUARD, sizeof want);
-            symline_i_grid_sums1(im.data + (size_t)2u * r * stride, stride, width >> 1, got, acc);
+            memset(two, GUARD, sizeof two);
+            symline_i_grid_sums1(im.data + (size_t)2u * r * stride, stride, width >> 1, got, acc,
+                                 (r & 1u) != 0u ? two : NULL);
             definition(&im, 1u, r, want);
             assert_memory_equal(got, want, sizeof got);
-            for (l = 2u; l <= 4u && (width >> l) > 0u; l++) {
+            memset(want, GUARD, sizeof want);
+            if ((r & 1u) != 0u) {
+                definition(&im, 2u, j, want);
+            }
+            assert_memory_equal(two, want, sizeof two);
+            for (l = 3u; (r & 1u) != 0u && l <= 4u && (width >> l) > 0u; l++) {
+                uint16_t *const next = sum + (width >> (l - 1u));
                 if ((j & 1u) == 0u) {
-                    symline_i_grid_fold(sum, width >> l, l, a, NULL);
+                    symline_i_grid_fold(sum, width >> l, l, next, NULL);
                     break;
                 }
                 memset(got, GUARD, sizeof got);
                 memset(want, GUARD, sizeof want);
-                symline_i_grid_fold(sum, width >> l, l, a, got);
+                symline_i_grid_fold(sum, width >> l, l, next, got);
                 definition(&im, l, j >> 1, want);
                 assert_memory_equal(got, want, sizeof got);
-                sum = a;
-                a += width >> l;
+                sum = next;
                 j >>= 1;
             }
-            assert_int_equal(acc[width], 0x5a5au);
+            assert_int_equal(acc[width / 2u], 0x5a5au);
         }
+        /* without the sums: the row alone, acc untouched */
+        memset(got, GUARD, sizeof got);
+        memset(want, GUARD, sizeof want);
+        memset(acc, GUARD, sizeof acc);
+        symline_i_grid_sums1(im.data, stride, width >> 1, got, NULL, NULL);
+        definition(&im, 1u, 0u, want);
+        assert_memory_equal(got, want, sizeof got);
+        assert_int_equal(acc[0], 0x5a5au);
         free_frame(&im);
     }
 }
 
 #ifdef SYMLINE_PORT_GRID_SUMS
-/* The SIMD pyramid against the portable reference: level 1's rows and sums
- * on random frames; the folds on random sums as large as each level's get
- * (the second row's sums added to the first's), both rows of a grid row;
- * nothing written past the row or the sums. */
+/* The SIMD pyramid against the portable reference: level 1's rows alone
+ * and with level 2's sums, both rows of a level-2 row, on random frames;
+ * the folds on random sums as large as each level's get (the second row's
+ * sums added to the first's), both rows of a grid row; nothing written past
+ * a row or the sums. */
 static void pyramid_simd_is_reference(void **state)
 {
-    uint8_t a[MAXW + 16u], b[MAXW + 16u];
+    uint8_t a[MAXW + 16u], b[MAXW + 16u], a2[MAXW + 16u], b2[MAXW + 16u];
     uint16_t sa[MAXW + 8u], sb[MAXW + 8u], in[2u * MAXW + 16u];
     uint32_t s = 29u, t, x, l;
     (void)state;
@@ -240,17 +256,27 @@ static void pyramid_simd_is_reference(void **state)
         if (t % 10u == 0u) {
             fill_gray(t / 10u, &s);
         }
-        im = frame(2u * w, 0u, stride, off); /* two rows */
+        im = frame(2u * w, 1u, stride, off); /* four rows */
         memset(a, GUARD, sizeof a);
         memset(b, GUARD, sizeof b);
+        memset(a2, GUARD, sizeof a2);
+        memset(b2, GUARD, sizeof b2);
         memset(sa, GUARD, sizeof sa);
         memset(sb, GUARD, sizeof sb);
-        symline_i_grid_sums1(im.data, stride, w, a, sa);
-        symline_i_grid_sums1_c(im.data, stride, w, b, sb);
+        symline_i_grid_sums1(im.data, stride, w, a, NULL, NULL);
+        symline_i_grid_sums1_c(im.data, stride, w, b, NULL, NULL);
+        assert_memory_equal(a, b, sizeof a);
+        symline_i_grid_sums1(im.data, stride, w, a, sa, NULL);
+        symline_i_grid_sums1_c(im.data, stride, w, b, sb, NULL);
         assert_memory_equal(a, b, sizeof a);
         assert_memory_equal(sa, sb, sizeof sa);
+        symline_i_grid_sums1(im.data + 2u * stride, stride, w, a, sa, a2);
+        symline_i_grid_sums1_c(im.data + 2u * stride, stride, w, b, sb, b2);
+        assert_memory_equal(a, b, sizeof a);
+        assert_memory_equal(sa, sb, sizeof sa);
+        assert_memory_equal(a2, b2, sizeof a2);
         free_frame(&im);
-        l = 2u + t % 3u;
+        l = 3u + t % 2u;
         for (x = 0; x < 2u * w + 16u; x++) { /* a level l - 1 sum: <= 4^(l-1) 255 */
             const uint32_t top = (1u << (2u * l - 2u)) * 255u, r = tu_rand(&s);
             in[x] = (uint16_t)((t / 3u) % 4u == 0u   ? top
