@@ -132,11 +132,71 @@ void symline_i_grid_row(const symline_image *img, const symline_i_pass *p, uint3
     case 2u: x = lanes(src, stride, 2u, w, out, twin); break;
     case 3u: x = lanes(src, stride, 3u, w, out, twin); break;
     case 4u: x = lanes(src, stride, 4u, w, out, twin); break;
-    case 5u: (void)wide(src, stride, 5u, w, out); x = 0u; break; /* none in twin yet */
+    case 5u:
+        (void)wide(src, stride, 5u, w, out);
+        x = 0u;
+        break; /* none in twin yet */
     default: symline_i_grid_row_c(img, p, y, acc, out, twin); return;
     }
     if (level < 5u) {
         symline_i_grid_blocks(src, stride, level, x, w, out); /* at most three blocks */
     }
     symline_i_grid_twin(out, x, w, twin);
+}
+
+/* The grid pyramid (grid.h): level 1's row, sixteen pixels a step (vpadal
+ * for each row's pairs), and where asked the pairs of its sums into level
+ * 2's (vpadd; fold: 0 none, 1 the first row, 2 the second, with level 2's
+ * row; a constant in each inlined copy). */
+static inline __attribute__((always_inline)) size_t sums1(const uint8_t *src, size_t stride,
+                                                          size_t w16, uint8_t *out, uint16_t *acc,
+                                                          uint8_t *out2, uint32_t fold)
+{
+    size_t x = 0u;
+    for (; x < w16; x += 16u) {
+        uint16x8_t S[2], P;
+        pair_sums(src + 2u * x, stride, 2u, 2u, S);
+        vst1q_u8(out + x, vcombine_u8(vrshrn_n_u16(S[0], 2), vrshrn_n_u16(S[1], 2)));
+        if (fold != 0u) {
+            P = vpaddq_u16(S[0], S[1]);
+            if (fold == 2u) {
+                P = vaddq_u16(vld1q_u16(acc + x / 2u), P);
+                vst1_u8(out2 + x / 2u, vrshrn_n_u16(P, 4));
+            }
+            vst1q_u16(acc + x / 2u, P);
+        }
+    }
+    return x;
+}
+
+void symline_i_grid_sums1(const uint8_t *src, size_t stride, uint32_t w, uint8_t *out,
+                          uint16_t *acc, uint8_t *out2)
+{
+    const size_t w16 = w & ~15u;
+    const size_t x = acc == NULL    ? sums1(src, stride, w16, out, NULL, NULL, 0u)
+                     : out2 == NULL ? sums1(src, stride, w16, out, acc, NULL, 1u)
+                                    : sums1(src, stride, w16, out, acc, out2, 2u);
+    /* (x even: the tail's pairs are the row's) */
+    symline_i_grid_sums1_c(src + 2u * x, stride, w - (uint32_t)x, out + x,
+                           acc != NULL ? acc + x / 2u : NULL, out2 != NULL ? out2 + x / 2u : NULL);
+}
+
+/* Level 3 or 4's sums from the level below's: eight pair sums a step
+ * (vpadd), the second row's added and rounded as they narrow. */
+void symline_i_grid_fold(const uint16_t *s, uint32_t w, uint32_t level, uint16_t *acc, uint8_t *out)
+{
+    const int16x8_t sh = vdupq_n_s16((int16_t) - (int32_t)(2u * level));
+    const size_t w8 = w & ~7u;
+    size_t x = 0u;
+    for (; x < w8; x += 8u) {
+        uint16x8_t P = vpaddq_u16(vld1q_u16(s + 2u * x), vld1q_u16(s + 2u * x + 8u));
+        if (out != NULL) {
+            P = vaddq_u16(vld1q_u16(acc + x), P);
+            /* a rounding shift right: (P + 2^(2 level - 1)) >> 2 level */
+            vst1_u8(out + x, vmovn_u16(vrshlq_u16(P, sh)));
+        }
+        vst1q_u16(acc + x, P);
+    }
+    symline_i_grid_fold_c(s + 2u * x, w - (uint32_t)x, level, acc + x,
+                          out != NULL ? out + x : NULL);
 }
