@@ -363,10 +363,19 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
     }
 }
 
+/* Where the build optimises for speed on a 64-bit core, near_entry() is
+ * copied into both its callers in symline_i_segindex_near() (a chain asks
+ * once per point; the call cost a fifth of the test). */
+#if SL_FOR_SPEED_DEEP
+#define SL_NEAR_INLINE SL_ALWAYS_INLINE
+#else
+#define SL_NEAR_INLINE
+#endif
+
 /* Whether q lies near grid entry k (a line's id, or a curve's run: the
  * pieces of its polyline in it). */
-static bool near_entry(const symline_i_segindex *ix, const symline_result *r, uint32_t k,
-                       const symline_i_near *q)
+static SL_NEAR_INLINE bool near_entry(const symline_i_segindex *ix, const symline_result *r,
+                                      uint32_t k, const symline_i_near *q)
 {
     const uint32_t e = ix->ids[k];
     uint32_t a;
@@ -403,8 +412,9 @@ static bool near_entry(const symline_i_segindex *ix, const symline_result *r, ui
     return false;
 }
 
-bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
-                             int32_t x, int32_t y, int32_t tol_q8)
+/* symline_i_segindex_near(), inline in both its callers. */
+static SL_ALWAYS_INLINE bool near_at(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
+                                     int32_t x, int32_t y, int32_t tol_q8)
 {
     symline_i_near q;
     uint32_t i = 0u;
@@ -412,11 +422,11 @@ bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, ui
     q.y = y;
     q.tol = tol_q8;
     if (ix != NULL && ix->cols != 0u) {
-        const uint32_t c = symline_i_cell_at(ix->cols, ix->rows, x, y);
-        uint32_t k;
+        uint32_t c, k;
         if (SL_FOR_SPEED && ix->hit != SL_NO_HIT && near_entry(ix, r, ix->hit, &q)) {
-            return true;
+            return true; /* (most points of a chain along an earlier segment: no cell needed) */
         }
+        c = symline_i_cell_at(ix->cols, ix->rows, x, y);
         for (k = c == 0u ? 0u : ix->end[c - 1u]; k < ix->end[c];
              k += (ix->ids[k] & SL_PIECE) != 0u ? 2u : 1u) {
             /* The entry just tried first is not near: not again. */
@@ -442,3 +452,33 @@ bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, ui
     }
     return false;
 }
+
+bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
+                             int32_t x, int32_t y, int32_t tol_q8)
+{
+    return near_at(ix, r, nseg, x, y, tol_q8);
+}
+
+#if SL_FOR_SPEED_DEEP
+const symline_point *symline_i_segindex_scan(symline_i_segindex *ix, const symline_result *r,
+                                             uint32_t nseg, const symline_point *q,
+                                             const symline_point *e, uint32_t level, int32_t tol_q8,
+                                             bool near)
+{
+    const uint32_t sh = SL_CELL_SHIFT - level;
+    uint32_t cell = UINT32_MAX; /* the last cell found empty */
+    for (; q < e; q++) {
+        const uint32_t at = ((uint32_t)q->y >> sh) * ix->cols + ((uint32_t)q->x >> sh);
+        if (at == cell || symline_i_segindex_cell_empty(ix, at)) {
+            cell = at;
+            if (!near) {
+                break;
+            }
+        } else if (near_at(ix, r, nseg, symline_i_q8(q->x, level), symline_i_q8(q->y, level),
+                           tol_q8) == near) {
+            break;
+        }
+    }
+    return q;
+}
+#endif

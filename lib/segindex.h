@@ -99,6 +99,17 @@ void symline_i_segindex_build(symline_i_segindex *ix, void *mem, size_t bytes, v
 bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
                              int32_t x, int32_t y, int32_t tol_q8);
 
+/* The first of a chain's points q .. e-1 (grid coordinates at `level` <=
+ * SL_CELL_SHIFT, inside the frame) whose symline_i_segindex_near() is
+ * `near`, e if none: a cell the grid lists nothing in answers false for
+ * every point in it without a test (every segment in the grid: ix->indexed
+ * = nseg, ix->cols != 0). 64-bit speed builds (SL_FOR_SPEED_DEEP): one call
+ * per run of a chain instead of one per point. */
+const symline_point *symline_i_segindex_scan(symline_i_segindex *ix, const symline_result *r,
+                                             uint32_t nseg, const symline_point *q,
+                                             const symline_point *e, uint32_t level, int32_t tol_q8,
+                                             bool near);
+
 /* True when the grid lists nothing in cell c: symline_i_segindex_near() of
  * any point in it is then false once every segment is in the grid
  * (ix->indexed = nseg), whatever entry it would try first (a point near an
