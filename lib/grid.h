@@ -98,7 +98,7 @@ static inline void symline_i_grid_fold_c(const uint16_t *s, uint32_t w, uint32_t
     const uint32_t shift = 2u * level;
     uint32_t x;
     for (x = 0; x < w; x++) {
-        const uint32_t pair = (uint32_t)s[2u * x] + s[2u * x + 1u];
+        const uint32_t pair = (uint32_t)s[2u * (size_t)x] + s[2u * (size_t)x + 1u];
         if (out == NULL) {
             acc[x] = (uint16_t)pair;
         } else {
