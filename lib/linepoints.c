@@ -677,10 +677,11 @@ SL_NOINLINE static void cache_build(lp_ctx *c, uint32_t r)
     head = symline_i_cache_head(c->pts + c->cap);
     rows = c->gray + (size_t)p->w * p->h; /* level 2's */
     if (j >= (H >> 2) || j < head[2]) {   /* below the last row, or its first row was not built */
-        symline_i_grid_sums1(c->img->data + (size_t)2u * r * stride, stride, p->w, out, NULL, NULL);
+        symline_i_grid_sums1(c->img->data + (size_t)(2u * r) * stride, stride, p->w, out, NULL,
+                             NULL);
         return;
     }
-    symline_i_grid_sums1(c->img->data + (size_t)2u * r * stride, stride, p->w, out, c->acc,
+    symline_i_grid_sums1(c->img->data + (size_t)(2u * r) * stride, stride, p->w, out, c->acc,
                          (r & 1u) != 0u ? rows + (size_t)j * (W >> 2) : NULL);
     if ((r & 1u) == 0u) {
         return;
