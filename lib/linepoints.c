@@ -864,9 +864,10 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
         if (none) {
             continue; /* above the field in every column */
         }
-        /* (the frame's rows without a call where the build optimises for speed) */
-        row = SL_FOR_SPEED && p->level == 0u ? img->data + (size_t)y * img->stride
-                                             : grid_row_at(c, y);
+        /* (the frame's rows without a call on 64-bit speed builds: on the
+         * firmware's the call keeps this frame smaller) */
+        row = SL_FOR_SPEED_DEEP && p->level == 0u ? img->data + (size_t)y * img->stride
+                                                  : grid_row_at(c, y);
         c->c = row;
         c->lo = row;
         c->hi = row;
