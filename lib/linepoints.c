@@ -403,6 +403,24 @@ SL_NOINLINE static uint32_t s_point_down(lp_ctx *c, uint32_t x)
 {
     return s_point(c, x, false);
 }
+/* The code of symline_i_lanes_down_c() for one candidate down a column at
+ * m = 3 (rows y - 4 .. y + 4 held), past its gray test: 1 an S point, 2 a
+ * plateau (the run rule decides), 0 neither. The energies from the nine
+ * values' signed differences, once each. Apart, so that the blocks' loop
+ * keeps its state in registers. */
+SL_NOINLINE static uint32_t s3_down(const uint8_t *p, ptrdiff_t st)
+{
+    const int32_t m4 = p[-4 * st], m3 = p[-3 * st], m2 = p[-2 * st], m1 = p[-st], c0 = p[0];
+    const int32_t p1 = p[st], p2 = p[2 * st], p3 = p[3 * st], p4 = p[4 * st];
+    const int32_t u1 = m2 - c0, u2 = m3 - p1, u3 = m4 - p2;
+    const int32_t e1 = m1 - p1, e2 = m2 - p2, e3 = m3 - p3;
+    const int32_t d1 = c0 - p2, d2 = m1 - p3, d3 = m2 - p4;
+    const int32_t up = 3 * u1 * u1 + 2 * u2 * u2 + u3 * u3;
+    const int32_t e = 3 * e1 * e1 + 2 * e2 * e2 + e3 * e3;
+    const int32_t dn = 3 * d1 * d1 + 2 * d2 * d2 + d3 * d3;
+    return up < e || dn < e ? 0u : (up > e && dn > e ? 1u : 2u);
+}
+
 /* Candidates within one block of lanes that make it worth its cost, about
  * that of this many candidates decided one at a time (callgrind, ex01 and
  * field frames down the columns): 2 for a port's block of 8, 4 for the
@@ -436,7 +454,9 @@ static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
             s = code[x - x0];
         } else {
             /* alone */
-            s = symline_i_lane_gray_ok(&c->lg, c->c[x], c->lo[x], c->hi[x]) != 0u ? 2u : 0u;
+            s = symline_i_lane_gray_ok(&c->lg, c->c[x], c->lo[x], c->hi[x]) != 0u
+                    ? s3_down(c->c + x, c->l.step)
+                    : 0u;
         }
         if (s > 1u) {
             s = s_point_down(c, x);
