@@ -87,6 +87,15 @@ static inline void symline_i_grid_sums1_c(const uint8_t *src, size_t stride, uin
     }
 }
 
+/* symline_i_grid_sums1_c() from pixel x on, x even (so that level 2's pairs
+ * are the row's): the pixels after a port's steps. */
+static inline void symline_i_grid_sums1_from(size_t x, const uint8_t *src, size_t stride,
+                                             uint32_t w, uint8_t *out, uint16_t *acc, uint8_t *out2)
+{
+    symline_i_grid_sums1_c(src + 2u * x, stride, w - (uint32_t)x, out + x,
+                           acc != NULL ? acc + x / 2u : NULL, out2 != NULL ? out2 + x / 2u : NULL);
+}
+
 /* One row of the level below's sums s[0 .. 2w-1] folded into level
  * `level`'s (3..4; any of 2..4) sums acc[0 .. w-1]: the first of the two rows of a grid
  * row (out NULL) sets acc[x] = s[2x] + s[2x+1], the second adds the same

@@ -382,9 +382,7 @@ void symline_i_grid_sums1(const uint8_t *src, size_t stride, uint32_t w, uint8_t
     const size_t x = acc == NULL    ? sums1(src, stride, w16, out, NULL, NULL, 0u)
                      : out2 == NULL ? sums1(src, stride, w16, out, acc, NULL, 1u)
                                     : sums1(src, stride, w16, out, acc, out2, 2u);
-    /* (x even: the tail's pairs are the row's) */
-    symline_i_grid_sums1_c(src + 2u * x, stride, w - (uint32_t)x, out + x,
-                           acc != NULL ? acc + x / 2u : NULL, out2 != NULL ? out2 + x / 2u : NULL);
+    symline_i_grid_sums1_from(x, src, stride, w, out, acc, out2);
 }
 
 /* A grid row's second half folded in: acc + the pairs (<= 256 * 255, 16-bit
