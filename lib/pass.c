@@ -113,9 +113,9 @@ static void emit(symline_i_run *d, const symline_i_pass *p, uint32_t at, uint32_
  * grid lists nothing in is not covered, without asking: a cell's points have
  * grid coordinates (x >> sh, y >> sh) (inside the frame, at levels up to
  * SL_CELL_SHIFT: a block never straddles a cell), and the last such cell is
- * remembered, as a chain steps a grid pixel at a time (on a 64-bit core in
- * one call of the grid's own, symline_i_segindex_scan()). The first pass has
- * no earlier segment at all. Only where the build optimises for speed
+ * remembered, as a chain steps a grid pixel at a time (in one call of the
+ * grid's own, symline_i_segindex_scan()). The first pass has no earlier
+ * segment at all. Only where the build optimises for speed
  * (chain()); apart from it so that its frame is not under the fit's. */
 SL_NOINLINE static const symline_point *next_point(const symline_i_run *d, uint32_t level,
                                                    symline_i_segindex *ix, const symline_point *q,
@@ -130,27 +130,8 @@ SL_NOINLINE static const symline_point *next_point(const symline_i_run *d, uint3
     if (d->prev_seg == 0u) {
         return cov ? e : q;
     }
-#if SL_FOR_SPEED_DEEP
     return symline_i_segindex_scan(ix, d->r, d->prev_seg, q, e, level,
                                    symline_i_cover_tol_q8(level), cov);
-#else
-    {
-        uint32_t cell = UINT32_MAX;
-        for (; q < e; q++) {
-            const uint32_t sh = SL_CELL_SHIFT - level;
-            const uint32_t at = ((uint32_t)q->y >> sh) * ix->cols + ((uint32_t)q->x >> sh);
-            if (at == cell || symline_i_segindex_cell_empty(ix, at)) {
-                cell = at;
-                if (!cov) {
-                    break;
-                }
-            } else if (covered(d, ix, q, level) == cov) {
-                break;
-            }
-        }
-        return q;
-    }
-#endif
 }
 
 /* The earlier passes' segments on a grid, so that testing a chain point

@@ -459,7 +459,7 @@ bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, ui
     return near_at(ix, r, nseg, x, y, tol_q8);
 }
 
-#if SL_FOR_SPEED_DEEP
+#if SL_FOR_SPEED /* (chain() in pass.c asks in speed builds only) */
 const symline_point *symline_i_segindex_scan(symline_i_segindex *ix, const symline_result *r,
                                              uint32_t nseg, const symline_point *q,
                                              const symline_point *e, uint32_t level, int32_t tol_q8,

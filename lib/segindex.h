@@ -103,8 +103,8 @@ bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, ui
  * SL_CELL_SHIFT, inside the frame) whose symline_i_segindex_near() is
  * `near`, e if none: a cell the grid lists nothing in answers false for
  * every point in it without a test (every segment in the grid: ix->indexed
- * = nseg, ix->cols != 0). 64-bit speed builds (SL_FOR_SPEED_DEEP): one call
- * per run of a chain instead of one per point. */
+ * = nseg, ix->cols != 0). Speed builds: one call per run of a chain
+ * instead of one per point. */
 const symline_point *symline_i_segindex_scan(symline_i_segindex *ix, const symline_result *r,
                                              uint32_t nseg, const symline_point *q,
                                              const symline_point *e, uint32_t level, int32_t tol_q8,
