@@ -683,7 +683,7 @@ static void field_columns(lp_ctx *c, uint32_t y, const uint32_t *span)
 SL_NOINLINE static void cache_build(lp_ctx *c, uint32_t r)
 {
     const symline_i_pass *p = c->p;
-    const uint32_t fold = p->cache >> 4, W = c->img->width, H = c->img->height;
+    const uint32_t fold = SL_CACHE_FOLD(p->cache), W = c->img->width, H = c->img->height;
     const size_t stride = c->img->stride;
     uint8_t *const out = c->gray + (size_t)r * p->w;
     const uint16_t *head;
@@ -738,7 +738,7 @@ static const uint8_t *cache_row_at(lp_ctx *c, uint32_t y)
     if (r < held && r < c->built) {
         uint32_t l, f = r;
         c->built = r;
-        for (l = 2u; l <= (p->cache >> 4); l++) {
+        for (l = 2u; l <= SL_CACHE_FOLD(p->cache); l++) {
             f = (f + 1u) / 2u;
             head[l] = (uint16_t)f;
         }
@@ -839,8 +839,8 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
 #if SL_FOR_SPEED_DEEP
     c->built = h;
     if (p->cache != SL_CACHE_OFF) { /* the scale's rows in the cache instead of the ring */
-        c->gray =
-            symline_i_cache_rows(pts + cap, img->width, img->height, p->level, p->cache & 15u);
+        c->gray = symline_i_cache_rows(pts + cap, img->width, img->height, p->level,
+                                       SL_CACHE_TOP(p->cache));
     }
 #endif
     c->f = &p->filter;

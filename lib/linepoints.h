@@ -58,6 +58,8 @@ typedef struct symline_i_pass {
 #define SL_CACHE_OFF 0u
 #define SL_CACHE_FOLD_MAX 4u /* level 4's sums fill 16 bits (256 * 255) */
 #define SL_CACHE_HEAD ((SYMLINE_DETECT_MAX_LEVELS + 1u) * sizeof(uint16_t))
+#define SL_CACHE_TOP(cache) ((cache)&15u)   /* the coarsest level held */
+#define SL_CACHE_FOLD(cache) ((cache) >> 4) /* the coarsest level folded into; 0: none */
 
 /* Bytes at the storage's end that levels `level` .. top of a width x height
  * frame take, with the head. */

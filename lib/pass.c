@@ -150,8 +150,8 @@ static SL_ALWAYS_INLINE void index_fill(const symline_i_run *d, const symline_i_
     if (SL_FOR_SPEED_DEEP && p->cache != SL_CACHE_OFF) {
         /* not into the grid row cache: it lies above twice the pass's grid
          * in points (n <= w h) */
-        spare_bytes -=
-            (size_t)symline_i_cache_bytes(d->img->width, d->img->height, p->level, p->cache & 15u);
+        spare_bytes -= (size_t)symline_i_cache_bytes(d->img->width, d->img->height, p->level,
+                                                     SL_CACHE_TOP(p->cache));
     }
     SL_STAGE(SEGMENTS); /* it serves the overlap test with earlier passes */
     if (ix != NULL) {
