@@ -412,9 +412,44 @@ static SL_NEAR_INLINE bool near_entry(const symline_i_segindex *ix, const symlin
     return false;
 }
 
+/* The line entry a chain's scan tried first, prepared (SL_FOR_SPEED_DEEP):
+ * k the entry, SL_NO_HIT: none yet. Elsewhere each point tests the chord. */
+#if SL_FOR_SPEED_DEEP
+typedef struct hit_prep {
+    uint32_t k;
+    symline_i_chord_prep c;
+} hit_prep;
+#else
+typedef struct hit_prep hit_prep;
+#endif
+
+/* near_entry() of the entry tried first (ix->hit); within a scan (hp not
+ * NULL) a line's chord prepared once for the points of the chain that runs
+ * along it. */
+static SL_ALWAYS_INLINE bool near_hit(const symline_i_segindex *ix, const symline_result *r,
+                                      const symline_i_near *q, hit_prep *hp)
+{
+#if SL_FOR_SPEED_DEEP
+    const uint32_t e = ix->ids[ix->hit];
+    if (hp != NULL && (e & SL_PIECE) == 0u) {
+        const symline_segment *s = &r->segments[e];
+        if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
+            if (hp->k != ix->hit) {
+                symline_i_chord_prepare(&hp->c, s->x0, s->y0, s->x1, s->y1, q->tol);
+                hp->k = ix->hit;
+            }
+            return symline_i_near_prepared(&hp->c, q);
+        }
+    }
+#else
+    (void)hp;
+#endif
+    return near_entry(ix, r, ix->hit, q);
+}
+
 /* symline_i_segindex_near(), inline in both its callers. */
 static SL_ALWAYS_INLINE bool near_at(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
-                                     int32_t x, int32_t y, int32_t tol_q8)
+                                     int32_t x, int32_t y, int32_t tol_q8, hit_prep *hp)
 {
     symline_i_near q;
     uint32_t i = 0u;
@@ -423,7 +458,7 @@ static SL_ALWAYS_INLINE bool near_at(symline_i_segindex *ix, const symline_resul
     q.tol = tol_q8;
     if (ix != NULL && ix->cols != 0u) {
         uint32_t c, k;
-        if (SL_FOR_SPEED && ix->hit != SL_NO_HIT && near_entry(ix, r, ix->hit, &q)) {
+        if (SL_FOR_SPEED && ix->hit != SL_NO_HIT && near_hit(ix, r, &q, hp)) {
             return true; /* (most points of a chain along an earlier segment: no cell needed) */
         }
         c = symline_i_cell_at(ix->cols, ix->rows, x, y);
@@ -456,7 +491,7 @@ static SL_ALWAYS_INLINE bool near_at(symline_i_segindex *ix, const symline_resul
 bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
                              int32_t x, int32_t y, int32_t tol_q8)
 {
-    return near_at(ix, r, nseg, x, y, tol_q8);
+    return near_at(ix, r, nseg, x, y, tol_q8, NULL);
 }
 
 #if SL_FOR_SPEED /* (chain() in pass.c asks in speed builds only) */
@@ -467,6 +502,12 @@ const symline_point *symline_i_segindex_scan(symline_i_segindex *ix, const symli
 {
     const uint32_t sh = SL_CELL_SHIFT - level;
     uint32_t cell = UINT32_MAX; /* the last cell found empty */
+#if SL_FOR_SPEED_DEEP
+    /* (all of it set: no compiler sees k guard the rest) */
+    hit_prep prep = {SL_NO_HIT, {0}}, *const hp = &prep;
+#else
+    hit_prep *const hp = NULL;
+#endif
     for (; q < e; q++) {
         const uint32_t at = ((uint32_t)q->y >> sh) * ix->cols + ((uint32_t)q->x >> sh);
         if (at == cell || symline_i_segindex_cell_empty(ix, at)) {
@@ -475,7 +516,7 @@ const symline_point *symline_i_segindex_scan(symline_i_segindex *ix, const symli
                 break;
             }
         } else if (near_at(ix, r, nseg, symline_i_q8(q->x, level), symline_i_q8(q->y, level),
-                           tol_q8) == near) {
+                           tol_q8, hp) == near) {
             break;
         }
     }

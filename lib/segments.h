@@ -130,6 +130,83 @@ static inline bool symline_i_near_chord(int32_t ax, int32_t ay, int32_t bx, int3
            (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
 }
 
+#if SL_FOR_SPEED_DEEP
+/* symline_i_near_chord() of one chord for many points (a chain along an
+ * earlier segment, segindex.c): what depends on the chord and the
+ * tolerance alone, once. */
+typedef struct symline_i_chord_prep {
+    int32_t ax, ay, bx, by, tol; /* the chord and the tolerance, Q8 */
+    int32_t lox, loy;            /* the box: x, y - lox, loy in 0 .. spanx, spany */
+    uint32_t spanx, spany;
+    int32_t dx, dy;   /* b - a */
+    int64_t dd;       /* |b - a|^2 */
+    uint32_t sh;      /* the halvings dx, dy and tol need to fit 16 bits */
+    int32_t wlim;     /* |w| <= wlim: w needs no more than sh */
+    int32_t dxs, dys; /* dx, dy halved sh times */
+    int64_t lim;      /* (tol halved sh times)^2 (dxs^2 + dys^2) */
+} symline_i_chord_prep;
+
+/* v / 2^sh rounded towards 0 (v halved sh times as C's / 2 does). */
+static inline int32_t symline_i_halve(int32_t v, uint32_t sh)
+{
+    return v < 0 ? -(int32_t)((uint32_t)-v >> sh) : (int32_t)((uint32_t)v >> sh);
+}
+
+static inline void symline_i_chord_prepare(symline_i_chord_prep *c, int32_t ax, int32_t ay,
+                                           int32_t bx, int32_t by, int32_t tol)
+{
+    const int32_t dx = bx - ax, dy = by - ay;
+    const uint32_t mx = (uint32_t)(dx < 0 ? -dx : dx), my = (uint32_t)(dy < 0 ? -dy : dy);
+    uint32_t sh = 0u, t2;
+    c->ax = ax;
+    c->ay = ay;
+    c->bx = bx;
+    c->by = by;
+    c->tol = tol;
+    c->lox = (ax < bx ? ax : bx) - tol;
+    c->loy = (ay < by ? ay : by) - tol;
+    c->spanx = mx + 2u * (uint32_t)tol;
+    c->spany = my + 2u * (uint32_t)tol;
+    c->dx = dx;
+    c->dy = dy;
+    c->dd = (int64_t)dx * dx + (int64_t)dy * dy;
+    /* symline_i_near_chord()'s halvings stop when every value is within
+     * +-32767; |v| halved j times is |v| >> j, so the largest decides */
+    while (((mx | my | (uint32_t)tol) >> sh) > 32767u) {
+        sh++;
+    }
+    c->sh = sh;
+    c->wlim = (int32_t)((32768u << sh) - 1u);
+    c->dxs = symline_i_halve(dx, sh);
+    c->dys = symline_i_halve(dy, sh);
+    t2 = (uint32_t)tol >> sh;
+    c->lim = (int64_t)((uint64_t)(t2 * t2) * (uint32_t)(c->dxs * c->dxs + c->dys * c->dys));
+}
+
+/* symline_i_near_chord() of c's chord for q (q->tol = c->tol): the same
+ * answer. Where the point's offset needs more halvings than the chord (not
+ * in a frame of 32767 px), that function itself. */
+static inline bool symline_i_near_prepared(const symline_i_chord_prep *c, const symline_i_near *q)
+{
+    const int32_t px = q->x, py = q->y, wx = px - c->ax, wy = py - c->ay;
+    int64_t t;
+    int32_t cr;
+    if ((uint32_t)(px - c->lox) > c->spanx || (uint32_t)(py - c->loy) > c->spany) {
+        return false;
+    }
+    t = (int64_t)wx * c->dx + (int64_t)wy * c->dy;
+    if (t <= 0 || t >= c->dd) {
+        const int32_t ex = t <= 0 ? wx : px - c->bx, ey = t <= 0 ? wy : py - c->by;
+        return (int64_t)ex * ex + (int64_t)ey * ey <= (int64_t)c->tol * c->tol;
+    }
+    if (SL_OUTSIDE(wx, c->wlim) || SL_OUTSIDE(wy, c->wlim)) {
+        return symline_i_near_chord(c->ax, c->ay, c->bx, c->by, q);
+    }
+    cr = symline_i_halve(wx, c->sh) * c->dys - symline_i_halve(wy, c->sh) * c->dxs;
+    return (int64_t)cr * cr <= c->lim;
+}
+#endif
+
 /* True when q's point lies within q's tolerance of the curve piece a-b
  * (whole pixels): one step of symline_i_near_segment()'s polyline. */
 bool symline_i_near_piece(const symline_point *a, const symline_point *b, const symline_i_near *q);

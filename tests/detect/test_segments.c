@@ -291,6 +291,88 @@ static void chord_dev_every_window(void **state)
     }
 }
 
+/* A chord prepared once answers as the chord's own test for every point
+ * (64-bit speed builds, where the grid of earlier segments prepares the
+ * entry a chain runs along): chords of every length up to a 65535 px frame
+ * and tolerances up to 256 px (both need halvings), points across the band's
+ * edge and around the ends, and far points whose offsets need more halvings
+ * than the chord. */
+static void prepared_chord_is_chord(void **state)
+{
+#if SL_FOR_SPEED_DEEP
+    uint32_t seed = 23u, t, i;
+    (void)state;
+    for (t = 0; t < 4000u; t++) {
+        /* Q8 coordinates within 2^(11 + t % 14) (a 8 px to a 65535 px frame) */
+        const uint32_t span = 1u << (11u + t % 14u);
+        const int32_t ax = (int32_t)(rnd(&seed) % span), ay = (int32_t)(rnd(&seed) % span);
+        const int32_t bx = t % 7u == 0u ? ax : (int32_t)(rnd(&seed) % span);
+        const int32_t by = t % 7u == 0u ? ay : (int32_t)(rnd(&seed) % span);
+        const int32_t tol = (int32_t)(rnd(&seed) % (t % 5u == 0u ? 65536u : 1024u));
+        symline_i_chord_prep c;
+        symline_i_chord_prepare(&c, ax, ay, bx, by, tol);
+        for (i = 0; i < 64u; i++) {
+            symline_i_near q;
+            const int64_t u = (int64_t)(rnd(&seed) % 1200u) - 100; /* along, per mille */
+            const int32_t n = (int32_t)(rnd(&seed) % 4u) - 2;      /* normal, tol units */
+            const int32_t dx = bx - ax, dy = by - ay;
+            const int32_t len = (int32_t)(dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy) + 1;
+            const int32_t off = (int32_t)(rnd(&seed) % 65u) - 32; /* around the edge */
+            q.tol = tol;
+            if (i % 8u == 7u) { /* anywhere in the frame, far ones too */
+                q.x = (int32_t)(rnd(&seed) % (1u << 24));
+                q.y = (int32_t)(rnd(&seed) % (1u << 24));
+            } else {
+                /* along the chord at u, moved n tolerances (+ off) across */
+                q.x =
+                    ax + (int32_t)(dx * u / 1000) - (int32_t)((int64_t)dy * (n * tol + off) / len);
+                q.y =
+                    ay + (int32_t)(dy * u / 1000) + (int32_t)((int64_t)dx * (n * tol + off) / len);
+            }
+            assert_int_equal(symline_i_near_prepared(&c, &q),
+                             symline_i_near_chord(ax, ay, bx, by, &q));
+        }
+    }
+    /* At the edges of the halvings: chord lengths and tolerances of 2^k - 1,
+     * 2^k and 2^k + 1 (Q8), points whose offsets from the first end lie at
+     * the edge of the chord's halvings, across the band's edge. */
+    for (t = 0; t < 6u * 3u * 3u; t++) {
+        static const int32_t edge[6] = {32767, 32768, 65535, 65536, 131072, 262144};
+        const int32_t big = edge[t / 9u] + (int32_t)(t % 3u) - 1, tol = edge[(t / 3u) % 3u];
+        const int32_t ax = 1000, ay = 2000, bx = ax + big / 3, by = ay + big;
+        symline_i_chord_prep c;
+        symline_i_chord_prepare(&c, ax, ay, bx, by, tol);
+        for (i = 0; i < 10u; i++) {
+            /* down a column of the band, and at each change of the answer
+             * every point either side */
+            const int32_t wx = (int32_t)((32768u << c.sh) + (i % 5u)) - 3;
+            const int32_t step = big / 512 + 1;
+            symline_i_near q;
+            bool last = false;
+            int32_t y;
+            q.tol = tol;
+            q.x = ax + (i < 5u ? wx : -wx);
+            for (y = ay - 2 * big; y < ay + 3 * big; y += step) {
+                int32_t k;
+                q.y = y;
+                if (symline_i_near_chord(ax, ay, bx, by, &q) == last) {
+                    continue;
+                }
+                last = !last;
+                for (k = y - step - 2; k <= y + 2; k++) {
+                    q.y = k;
+                    assert_int_equal(symline_i_near_prepared(&c, &q),
+                                     symline_i_near_chord(ax, ay, bx, by, &q));
+                }
+            }
+        }
+    }
+#else
+    (void)state;
+    skip(); /* size builds and 32-bit cores test each point from the chord */
+#endif
+}
+
 /* The grid of earlier segments answers as testing every segment does, for
  * points along paths (its entry found last is tried first), and a cell it
  * lists nothing in holds no point near any segment (what the pass's chain
@@ -396,6 +478,7 @@ int main(void)
         cmocka_unit_test(distances),
         cmocka_unit_test(near_segment),
         cmocka_unit_test(chord_dev_every_window),
+        cmocka_unit_test(prepared_chord_is_chord),
         cmocka_unit_test(grid_near_equals_every_segment),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
