@@ -184,8 +184,9 @@ static inline void symline_i_chord_prepare(symline_i_chord_prep *c, int32_t ax, 
 }
 
 /* symline_i_near_chord() of c's chord for q (q->tol = c->tol): the same
- * answer. Where the point's offset needs more halvings than the chord (not
- * in a frame of 32767 px), that function itself. */
+ * answer. Where the point's offset needs more halvings than the chord (rare:
+ * past the box test it is at most the chord's extent plus the tolerance),
+ * that function itself. */
 static inline bool symline_i_near_prepared(const symline_i_chord_prep *c, const symline_i_near *q)
 {
     const int32_t px = q->x, py = q->y, wx = px - c->ax, wy = py - c->ay;
