@@ -91,7 +91,8 @@ static inline bool symline_i_linefilter_gray(const symline_i_linefilter *f, uint
 typedef struct symline_i_prefilter {
     uint8_t min_gray;  /* c >= min_gray */
     uint8_t ridge_min; /* c >= max(lo, hi) + ridge_min, the sum clamped to 255 */
-    uint8_t side_max;  /* max(lo, hi) <= side_max */
+    uint8_t side_max;  /* max(lo, hi) <= side_max (the contrast filter's at most
+                          255 - ridge_min: no clamped sum passes beyond) */
 } symline_i_prefilter;
 
 static inline void symline_i_prefilter_setup(const symline_i_linefilter *f, symline_i_prefilter *pf)
@@ -100,10 +101,13 @@ static inline void symline_i_prefilter_setup(const symline_i_linefilter *f, syml
     pf->ridge_min = 0u;
     pf->side_max = 255u;
     if (f->kind != SYMLINE_FILTER_PAPER) { /* a ridge of 0 fails the exact test too */
-        pf->ridge_min = (uint8_t)(f->ridge_min < 1u     ? 1u
-                                  : f->ridge_min < 255u ? f->ridge_min
-                                                        : 255u);
-        pf->side_max = (uint8_t)(f->side_max < 255u ? f->side_max : 255u);
+        const uint32_t rm = f->ridge_min < 1u ? 1u : f->ridge_min < 255u ? f->ridge_min : 255u;
+        pf->ridge_min = (uint8_t)rm;
+        /* c <= 255 stands rm above the side only where the side is at most
+         * 255 - rm: brighter sides fail the exact test (and a saturated
+         * area, c = lo = hi = 255, would pass the sum's clamp at every
+         * pixel) */
+        pf->side_max = (uint8_t)(f->side_max < 255u - rm ? f->side_max : 255u - rm);
     }
 }
 

@@ -3,7 +3,7 @@
  * The line filter's byte test over a row (symline_i_line_cand_c(),
  * lib/linefilter.h) against the exact filter: it reports every entry the
  * gray-value test symline_i_linefilter_gray() keeps, in order, and only
- * entries that pass the byte test as stated. Where the build has a SIMD
+ * entries that pass the byte test as stated; a saturated area passes none. Where the build has a SIMD
  * version (SYMLINE_PORT_LINE_CAND, CMake option SYMLINE_SIMD) it is compared
  * with the reference call by call: every start, rows of every length up to
  * 100 at every alignment, both filters, thresholds from 0 to beyond 255,
@@ -111,6 +111,41 @@ static void reference_keeps_line_points(void **state)
     }
 }
 
+/* Every gray value against every brighter side, for ridges from 0 to
+ * beyond a byte: the byte test keeps what the exact test keeps, and for the
+ * contrast filter it keeps c = 255 exactly where the side lies ridge_min
+ * (1 to 255) or more below it, so that a saturated area, where c
+ * and both sides are 255, gives no candidate at all. */
+static void saturated_sides_fail(void **state)
+{
+    static const uint32_t ridges[] = {0u, 1u, 2u, 7u, 40u, 200u, 254u, 255u, 256u, 1000u};
+    static const uint32_t sides[] = {255u, 254u, 250u, 128u, 0u};
+    uint32_t r, m, c, side;
+    (void)state;
+    for (r = 0; r < sizeof ridges / sizeof ridges[0]; r++) {
+        for (m = 0; m < sizeof sides / sizeof sides[0]; m++) {
+            symline_i_linefilter f;
+            symline_i_prefilter pf;
+            /* the ridge as a byte holds it */
+            const uint32_t rm = ridges[r] < 1u ? 1u : ridges[r] > 255u ? 255u : ridges[r];
+            memset(&f, 0, sizeof f);
+            f.kind = SYMLINE_FILTER_CONTRAST;
+            f.ridge_min = ridges[r];
+            f.side_max = sides[m];
+            symline_i_prefilter_setup(&f, &pf);
+            for (side = 0; side < 256u; side++) {
+                const int at_255 = side + rm <= 255u && side <= f.side_max;
+                assert_int_equal(byte_test(&pf, 255u, side, side / 2u), at_255);
+                for (c = 0; c < 256u; c++) {
+                    if (symline_i_linefilter_gray(&f, c, side, side / 2u)) {
+                        assert_true(byte_test(&pf, c, side, side / 2u));
+                    }
+                }
+            }
+        }
+    }
+}
+
 #ifdef SYMLINE_PORT_LINE_CAND
 /* The SIMD version against the reference: the same count, indices and
  * resumption point for every start x of rows of every length and alignment,
@@ -148,6 +183,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(reference_keeps_line_points),
+        cmocka_unit_test(saturated_sides_fail),
 #ifdef SYMLINE_PORT_LINE_CAND
         cmocka_unit_test(simd_is_reference),
 #endif
