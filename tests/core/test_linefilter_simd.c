@@ -3,11 +3,11 @@
  * The line filter's byte test over a row (symline_i_line_cand_c(),
  * lib/linefilter.h) against the exact filter: it reports every entry the
  * gray-value test symline_i_linefilter_gray() keeps, in order, and only
- * entries that pass the byte test as stated; a saturated area passes none. Where the build has a SIMD
- * version (SYMLINE_PORT_LINE_CAND, CMake option SYMLINE_SIMD) it is compared
- * with the reference call by call: every start, rows of every length up to
- * 100 at every alignment, both filters, thresholds from 0 to beyond 255,
- * candidates dense to absent, full outputs.
+ * entries that pass the byte test as stated; a saturated area passes none.
+ * Where the build has a SIMD version (SYMLINE_PORT_LINE_CAND, CMake option
+ * SYMLINE_SIMD) it is compared with the reference call by call: every start,
+ * rows of every length up to 100 at every alignment, both filters,
+ * thresholds from 0 to beyond 255, candidates dense to absent, full outputs.
  */
 #include <setjmp.h>
 #include <stdarg.h>
