@@ -61,8 +61,9 @@ void symline_field_config_default(symline_field_config *fc)
 bool symline_i_field_config_ok(const symline_field_config *fc)
 {
     const uint32_t c = fc->cell;
+    /* (two tolerances of at most 255 each: their OR is, in one compare) */
     return (c == 0u || (c >= 2u && c <= 64u && (c & (c - 1u)) == 0u)) && fc->band_pct >= 1u &&
-           fc->band_pct <= 100u && fc->mean_tol <= 255u && fc->local_tol <= 255u &&
+           fc->band_pct <= 100u && (fc->mean_tol | fc->local_tol) <= 255u &&
            fc->tex_lo_pct <= 100u && fc->tex_hi_pct >= 100u && fc->tex_hi_pct <= 10000u &&
            fc->miss_cost >= 1u && fc->miss_cost <= 16u && fc->gap_pct <= 100u &&
            fc->support >= 1u && fc->support <= SL_FIELD_MAX_SUPPORT && fc->restore_cells <= 64u &&
@@ -208,15 +209,19 @@ SL_NOINLINE static void carpet_model(symline_i_fstate *f, symline_field_boundary
         row_cells(f, r, NULL, 0u, f->band + 2u * (size_t)r * f->nc); /* kept for the scan */
     }
     for (i = 0; i < f->nb * f->nc; i++) {
-        const uint32_t m = f->band[2u * (size_t)i], t = f->band[2u * (size_t)i + 1u];
+        const uint8_t *b = f->band + 2u * (size_t)i;
+        const uint32_t m = b[0], t = b[1];
         if (m >= SL_FIELD_BLACK) {
             f->hm[m >> 2]++;
             f->ht[t < 2u * SL_FIELD_BINS ? t >> 1 : SL_FIELD_BINS - 1u]++;
             total++;
         }
     }
-    /* Only black at the bottom (total 0): both medians are bin 0, the
-     * carpet is taken to be that dark. */
+    /* Black cells are left out while they are the lesser part of the band's
+     * i cells (a lens's corners or rim). A band mostly black (a dim hall, an
+     * under-exposed frame clipped to black) is the carpet: total 0 makes
+     * both medians bin 0, the carpet that dark. */
+    total = total > i / 2u ? total : 0u;
     tb = 2u * hist_median(f->ht, total) + 1u;
     f->mid = 4u * hist_median(f->hm, total) + 2u;
     f->lo = f->mid > fc->mean_tol ? f->mid - fc->mean_tol : 0u;

@@ -75,7 +75,9 @@ typedef struct symline_field_config {
     uint32_t band_pct;       /* the carpet model (median gray value and median
                             texture of the cells) comes from the lowest band_pct %
                             of the rows; cells darker than 12 (a lens's black
-                            corners) are left out, 1..100; default 40 */
+                            corners) are left out unless they are half the band
+                            or more (a carpet clipped to black: the model is
+                            black), 1..100; default 40 */
     uint32_t mean_tol;       /* a carpet cell's mean lies within this many gray
                             levels of the model, 0..255; default 16 */
     uint32_t local_tol;      /* ... or within this many of the running mean of the

@@ -3,8 +3,8 @@
  * The field boundary (symline/field.h) on hand-made frames with known
  * answers: a boundary at a known row, at a known slant, bent once by a field
  * corner, with legs and a robot cutting into the carpet, with shadow stripes
- * and a thick line on it; degenerate frames; argument errors and workspace
- * bounds.
+ * and a thick line on it; a carpet clipped to black; degenerate frames;
+ * argument errors and workspace bounds.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -219,6 +219,31 @@ static void test_all_carpet(void **state)
     free(px);
 }
 
+/* A carpet clipped to black (a dim hall, an under-exposed frame) with white
+ * lines on it, a bright wall above: black cells, which the carpet model
+ * leaves out as a lens's corners while they are a minority of its band, are
+ * most of it here and are the carpet. The boundary lies no lower than the
+ * carpet's top (at the frame's bottom it would drop every line); it may lie
+ * higher: a black carpet has no grain that tells a smooth wall from it. */
+static void test_black_carpet(void **state)
+{
+    symline_field_boundary b;
+    uint8_t *px = make_field(top_row);
+    uint32_t x, y;
+    (void)state;
+    for (y = (uint32_t)top_row(0); y < H; y++) {
+        for (x = 0; x < W; x++) {
+            const bool line = (y >= 150u && y < 158u) || x % 80u < 6u;
+            px[y * W + x] = line ? 230u : 0u;
+        }
+    }
+    assert_int_equal(find(px, W, H, &b), SYMLINE_OK);
+    check_form(&b, W, H);
+    check_near(&b, top_row, 8, (int32_t)H);
+    assert_true(b.carpet_mean < 12u);
+    free(px);
+}
+
 /* Uniform frames (all white, all black) and tiny ones must not fail; a
  * uniform frame is one carpet-like region, so nothing lies above it. */
 static void test_degenerate(void **state)
@@ -423,15 +448,11 @@ static void test_detector_config(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_known_row),
-        cmocka_unit_test(test_known_slant),
-        cmocka_unit_test(test_corner),
-        cmocka_unit_test(test_occluders_and_light),
-        cmocka_unit_test(test_all_carpet),
-        cmocka_unit_test(test_degenerate),
-        cmocka_unit_test(test_query),
-        cmocka_unit_test(test_errors),
-        cmocka_unit_test(test_detector_drops_above),
+        cmocka_unit_test(test_known_row),       cmocka_unit_test(test_known_slant),
+        cmocka_unit_test(test_corner),          cmocka_unit_test(test_occluders_and_light),
+        cmocka_unit_test(test_all_carpet),      cmocka_unit_test(test_black_carpet),
+        cmocka_unit_test(test_degenerate),      cmocka_unit_test(test_query),
+        cmocka_unit_test(test_errors),          cmocka_unit_test(test_detector_drops_above),
         cmocka_unit_test(test_detector_config),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
