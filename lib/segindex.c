@@ -449,7 +449,8 @@ static SL_ALWAYS_INLINE bool near_hit(const symline_i_segindex *ix, const symlin
 
 /* symline_i_segindex_near(), inline in both its callers. */
 static SL_ALWAYS_INLINE bool near_at(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
-                                     int32_t x, int32_t y, int32_t tol_q8, hit_prep *hp)
+                                     int32_t x, int32_t y, int32_t tol_q8, hit_prep *hp,
+                                     bool hit_tried)
 {
     symline_i_near q;
     uint32_t i = 0u;
@@ -458,7 +459,7 @@ static SL_ALWAYS_INLINE bool near_at(symline_i_segindex *ix, const symline_resul
     q.tol = tol_q8;
     if (ix != NULL && ix->cols != 0u) {
         uint32_t c, k;
-        if (SL_FOR_SPEED && ix->hit != SL_NO_HIT && near_hit(ix, r, &q, hp)) {
+        if (SL_FOR_SPEED && !hit_tried && ix->hit != SL_NO_HIT && near_hit(ix, r, &q, hp)) {
             return true; /* (most points of a chain along an earlier segment: no cell needed) */
         }
         c = symline_i_cell_at(ix->cols, ix->rows, x, y);
@@ -491,7 +492,7 @@ static SL_ALWAYS_INLINE bool near_at(symline_i_segindex *ix, const symline_resul
 bool symline_i_segindex_near(symline_i_segindex *ix, const symline_result *r, uint32_t nseg,
                              int32_t x, int32_t y, int32_t tol_q8)
 {
-    return near_at(ix, r, nseg, x, y, tol_q8, NULL);
+    return near_at(ix, r, nseg, x, y, tol_q8, NULL, false);
 }
 
 #if SL_FOR_SPEED /* (chain() in pass.c asks in speed builds only) */
@@ -509,14 +510,32 @@ const symline_point *symline_i_segindex_scan(symline_i_segindex *ix, const symli
     hit_prep *const hp = NULL;
 #endif
     for (; q < e; q++) {
-        const uint32_t at = ((uint32_t)q->y >> sh) * ix->cols + ((uint32_t)q->x >> sh);
+        const int32_t x = symline_i_q8(q->x, level), y = symline_i_q8(q->y, level);
+        uint32_t at;
+        bool tried = false;
+        if (SL_FOR_SPEED_DEEP && ix->hit != SL_NO_HIT) {
+            /* The entry the last point was near, before the point's cell:
+             * a point near it lies in a cell that lists it. */
+            symline_i_near qn;
+            qn.x = x;
+            qn.y = y;
+            qn.tol = tol_q8;
+            if (near_hit(ix, r, &qn, hp)) {
+                if (near) {
+                    break;
+                }
+                continue;
+            }
+            tried = true;
+        }
+        at = ((uint32_t)q->y >> sh) * ix->cols + ((uint32_t)q->x >> sh);
         if (at == cell || symline_i_segindex_cell_empty(ix, at)) {
             cell = at;
+            ix->hit = tried ? SL_NO_HIT : ix->hit; /* left behind */
             if (!near) {
                 break;
             }
-        } else if (near_at(ix, r, nseg, symline_i_q8(q->x, level), symline_i_q8(q->y, level),
-                           tol_q8, hp) == near) {
+        } else if (near_at(ix, r, nseg, x, y, tol_q8, hp, tried) == near) {
             break;
         }
     }

@@ -2,8 +2,8 @@
 /*
  * From chains to segments (lib/segments.c): corner cuts, the least-squares
  * fit and the line/curve decision, the bend of flat arcs, distances to
- * chords and nearness to earlier segments (one by one and through the grid
- * of earlier segments, lib/segindex.c).
+ * chords and nearness to earlier segments (one by one, and point by point
+ * and chain by chain through the grid of earlier segments, lib/segindex.c).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -377,31 +377,28 @@ static void prepared_chord_is_chord(void **state)
  * points along paths (its entry found last is tried first), and a cell it
  * lists nothing in holds no point near any segment (what the pass's chain
  * search relies on to skip the test). */
-static void grid_near_equals_every_segment(void **state)
+/* The frame and the earlier segments of the grid tests: NSEG random chains
+ * of PER full-resolution points, every third one a curve. */
+enum {
+    W = 320,
+    H = 240,
+    NSEG = 12,
+    PER = 24
+};
+
+static void earlier_segments(symline_result *r, symline_segment *segs, symline_point *pts,
+                             uint32_t *seed)
 {
-    enum {
-        W = 320,
-        H = 240,
-        NSEG = 12,
-        PER = 24
-    };
-    static uint32_t mem[4096];
-    static symline_point pts[NSEG * PER];
-    symline_segment segs[NSEG];
-    symline_result r;
-    symline_i_segindex ix;
-    uint32_t seed = 11u, k, t;
-    (void)state;
-    assert_true(symline_i_segindex_ws_size(W, H) <= sizeof mem);
-    memset(&r, 0, sizeof r);
-    memset(segs, 0, sizeof segs);
-    r.points = pts;
-    r.segments = segs;
+    uint32_t k;
+    memset(r, 0, sizeof *r);
+    memset(segs, 0, NSEG * sizeof *segs);
+    r->points = pts;
+    r->segments = segs;
     for (k = 0; k < NSEG; k++) {
         symline_segment *s = &segs[k];
         symline_point *q = &pts[k * PER];
         uint32_t i;
-        random_chain(q, PER, 20u + rnd(&seed) % (W - 40u), 20u + rnd(&seed) % (H - 40u), &seed);
+        random_chain(q, PER, 20u + rnd(seed) % (W - 40u), 20u + rnd(seed) % (H - 40u), seed);
         for (i = 0; i < PER; i++) {
             q[i].fx = 0; /* full-resolution points, as the pass keeps them */
             q[i].fy = 0;
@@ -414,6 +411,35 @@ static void grid_near_equals_every_segment(void **state)
         s->x1 = symline_i_pt_q8x(&q[PER - 1u], 0u);
         s->y1 = symline_i_pt_q8y(&q[PER - 1u], 0u);
     }
+}
+
+/* Whether any of the segments is near the full-resolution point (Q8). */
+static bool near_any(const symline_result *r, int32_t x, int32_t y, int32_t tol)
+{
+    symline_i_near q;
+    uint32_t k;
+    q.x = x;
+    q.y = y;
+    q.tol = tol;
+    for (k = 0; k < NSEG; k++) {
+        if (symline_i_near_segment(&r->segments[k], r->points, &q)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+static void grid_near_equals_every_segment(void **state)
+{
+    static uint32_t mem[4096];
+    static symline_point pts[NSEG * PER];
+    symline_segment segs[NSEG];
+    symline_result r;
+    symline_i_segindex ix;
+    uint32_t seed = 11u, t;
+    (void)state;
+    assert_true(symline_i_segindex_ws_size(W, H) <= sizeof mem);
+    earlier_segments(&r, segs, pts, &seed);
     for (t = 0; t < 16u; t++) {
         /* Levels 0..3, and id areas from roomy to too small for every
          * segment (the speed builds keep the count's cells at its far end
@@ -429,14 +455,7 @@ static void grid_near_equals_every_segment(void **state)
         ix.hit = SL_NO_HIT;
         for (i = 0; i < 4000u; i++) {
             const int32_t qx = (int32_t)(x << 8), qy = (int32_t)(y << 8);
-            symline_i_near q;
-            bool any = false;
-            q.x = qx;
-            q.y = qy;
-            q.tol = tol;
-            for (k = 0; k < NSEG; k++) {
-                any = any || symline_i_near_segment(&segs[k], pts, &q);
-            }
+            const bool any = near_any(&r, qx, qy, tol);
             assert_int_equal(symline_i_segindex_near(&ix, &r, NSEG, qx, qy, tol), any);
             if (ix.indexed == NSEG &&
                 symline_i_segindex_cell_empty(&ix, symline_i_cell_at(ix.cols, ix.rows, qx, qy))) {
@@ -469,6 +488,69 @@ static void grid_near_equals_every_segment(void **state)
     }
 }
 
+#if SL_FOR_SPEED
+/* A chain's scan through the grid (symline_i_segindex_scan(), speed builds)
+ * stops at the first of its points whose nearness to any segment is the one
+ * asked for, as testing every point against every segment finds it: chains
+ * at levels 0..3 that run along a segment and then wander off, scanned from
+ * several points on, with the entry the last point was near kept from scan
+ * to scan as a chain's pass keeps it. */
+static void grid_scan_equals_every_point(void **state)
+{
+    static uint32_t mem[4096];
+    static symline_point pts[NSEG * PER];
+    symline_segment segs[NSEG];
+    symline_result r;
+    symline_i_segindex ix;
+    uint32_t seed = 23u, level, t;
+    (void)state;
+    earlier_segments(&r, segs, pts, &seed);
+    for (level = 0; level <= 3u; level++) {
+        const int32_t tol = (int32_t)(512u + 256u * ((1u << level) - 1u));
+        const uint32_t gw = W >> level, gh = H >> level;
+        symline_i_segindex_build(&ix, mem, sizeof mem, NULL, 0u, W, H, &r, NSEG, tol);
+        assert_int_equal(ix.indexed, NSEG);
+        for (t = 0; t < 400u; t++) {
+            symline_point c[64];
+            bool cov[64];
+            const uint32_t n = 1u + rnd(&seed) % 64u, k = rnd(&seed) % NSEG;
+            const uint32_t along = rnd(&seed) % (PER + 1u);
+            uint32_t i, from, x = 0u, y = 0u;
+            memset(c, 0, sizeof c);
+            for (i = 0; i < n; i++) {
+                if (i < along) { /* along segment k, in grid pixels */
+                    x = pts[k * PER + i % PER].x >> level;
+                    y = pts[k * PER + i % PER].y >> level;
+                } else { /* then a walk of single steps */
+                    x = x + rnd(&seed) % 3u - 1u;
+                    y = y + rnd(&seed) % 3u - 1u;
+                    x = x >= gw ? (x > gw ? 0u : gw - 1u) : x;
+                    y = y >= gh ? (y > gh ? 0u : gh - 1u) : y;
+                }
+                c[i].x = (uint16_t)x;
+                c[i].y = (uint16_t)y;
+                cov[i] = near_any(&r, symline_i_q8(x, level), symline_i_q8(y, level), tol);
+            }
+            ix.hit = SL_NO_HIT;
+            for (from = 0; from < n; from += 1u + rnd(&seed) % 5u) {
+                uint32_t want[2] = {from, from}, b;
+                while (want[0] < n && cov[want[0]]) {
+                    want[0]++;
+                }
+                while (want[1] < n && !cov[want[1]]) {
+                    want[1]++;
+                }
+                for (b = 0; b < 2u; b++) {
+                    const symline_point *got = symline_i_segindex_scan(&ix, &r, NSEG, c + from,
+                                                                       c + n, level, tol, b != 0u);
+                    assert_int_equal(got - c, want[b]);
+                }
+            }
+        }
+    }
+}
+#endif
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -480,6 +562,9 @@ int main(void)
         cmocka_unit_test(chord_dev_every_window),
         cmocka_unit_test(prepared_chord_is_chord),
         cmocka_unit_test(grid_near_equals_every_segment),
+#if SL_FOR_SPEED
+        cmocka_unit_test(grid_scan_equals_every_point),
+#endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
