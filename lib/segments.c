@@ -126,7 +126,8 @@ static void lin_form(uint32_t level, const int32_t g[4], int64_t f[3])
 /* Where the build optimises for speed on a 64-bit core (SL_FOR_SPEED_DEEP),
  * a chord with a direction is swept by window_ring(): the crosses of the
  * last SL_RING points are kept (a power of two), so that a window of up to
- * that many points drops its oldest cross without computing it again. A
+ * that many points drops its oldest cross without computing it again (the
+ * window of five of every fit in locals, window_five()). A
  * 32-bit core would hold them on the stack, on the fit's path, the deepest
  * of the detection: it computes that cross again. */
 #define SL_RING 8u
@@ -163,6 +164,69 @@ static void window_ring(const symline_point *p, uint32_t n, const int64_t f[3], 
     best[1] = win == 1u ? best[0] : (uint64_t)(shi > -slo ? shi : -slo);
 }
 
+/* window_ring() for win = SL_SMOOTH_WIN, the window of every fit and every
+ * merge, with n >= win: the window's crosses in locals that take turns (the
+ * sweep unrolled by the window), none in memory and no ring index. The same
+ * sums, so the same answer. */
+#if SL_FOR_SPEED_DEEP
+typedef char symline_i_window_is_five[SL_SMOOTH_WIN == 5u ? 1 : -1];
+
+typedef struct five_state {
+    int64_t hi, lo, shi, slo, sum;
+} five_state;
+
+/* One point: its cross c replaces the window's oldest, *r. */
+static SL_ALWAYS_INLINE void five_step(five_state *w, const symline_point *q, const int64_t f[3],
+                                       int64_t *r)
+{
+    const int64_t c = (int64_t)(((int32_t)q->x << 7) + q->fx) * f[0] +
+                      (int64_t)(((int32_t)q->y << 7) + q->fy) * f[1] + f[2];
+    w->hi = c > w->hi ? c : w->hi;
+    w->lo = c < w->lo ? c : w->lo;
+    w->sum += c - *r;
+    *r = c;
+    w->shi = w->sum > w->shi ? w->sum : w->shi;
+    w->slo = w->sum < w->slo ? w->sum : w->slo;
+}
+
+static void window_five(const symline_point *p, uint32_t n, const int64_t f[3], uint64_t best[2])
+{
+    five_state w = {0, 0, 0, 0, 0};
+    int64_t r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    uint32_t i;
+    /* The first window: no sum before it counts (shi, slo stay 0 until it
+     * is complete, as in window_ring()). */
+    five_step(&w, p, f, &r0);
+    five_step(&w, p + 1, f, &r1);
+    five_step(&w, p + 2, f, &r2);
+    five_step(&w, p + 3, f, &r3);
+    w.shi = 0;
+    w.slo = 0;
+    five_step(&w, p + 4, f, &r4);
+    for (i = 5u; i + 5u <= n; i += 5u) {
+        five_step(&w, p + i, f, &r0);
+        five_step(&w, p + i + 1u, f, &r1);
+        five_step(&w, p + i + 2u, f, &r2);
+        five_step(&w, p + i + 3u, f, &r3);
+        five_step(&w, p + i + 4u, f, &r4);
+    }
+    if (i < n) {
+        five_step(&w, p + i, f, &r0);
+    }
+    if (i + 1u < n) {
+        five_step(&w, p + i + 1u, f, &r1);
+    }
+    if (i + 2u < n) {
+        five_step(&w, p + i + 2u, f, &r2);
+    }
+    if (i + 3u < n) {
+        five_step(&w, p + i + 3u, f, &r3);
+    }
+    best[0] = (uint64_t)(w.hi > -w.lo ? w.hi : -w.lo);
+    best[1] = (uint64_t)(w.shi > -w.slo ? w.shi : -w.slo);
+}
+#endif
+
 /* The largest |sum| of the crosses of `win` consecutive points of p[0..n-1]
  * (best[1]) and, where the build optimises for speed, in the same sweep the
  * largest |cross| of a point (best[0]). */
@@ -177,6 +241,12 @@ static void window_max(const symline_point *p, uint32_t n, uint32_t level, const
         lin_form(level, g, f);
     }
     if (SL_FOR_SPEED_DEEP && (g[2] | g[3]) != 0 && win <= SL_RING) {
+#if SL_FOR_SPEED_DEEP
+        if (win == SL_SMOOTH_WIN && n >= win) {
+            window_five(p, n, f, best);
+            return;
+        }
+#endif
         window_ring(p, n, f, win, best);
         return;
     }

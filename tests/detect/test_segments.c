@@ -289,6 +289,25 @@ static void chord_dev_every_window(void **state)
         assert_int_equal(dev[0], chord_dev_ref(p, n, level, &c, 1u));
         assert_int_equal(dev[1], chord_dev_ref(p, n, level, &c, SL_SMOOTH_WIN));
     }
+    /* Four points 8 px off one side, then one 24 px off the other: the
+     * first four alone sum to more than any window of five (the first
+     * window is counted only once it is complete), for every length from
+     * one window to three (every tail of a sweep taken by whole windows). */
+    for (t = SL_SMOOTH_WIN; t <= 3u * SL_SMOOTH_WIN; t++) {
+        uint32_t i, dev[2];
+        memset(p, 0, sizeof p);
+        for (i = 0; i < t; i++) {
+            p[i].x = (uint16_t)(100u + 4u * i);
+            p[i].y = (uint16_t)(i < 4u ? 108u : i == 4u ? 76u : 100u);
+        }
+        c.x0 = symline_i_pt_q8x(&p[0], 0u);
+        c.y0 = 100 << 8;
+        c.x1 = symline_i_pt_q8x(&p[t - 1u], 0u);
+        c.y1 = 100 << 8;
+        symline_i_chord_devs(p, t, 0u, &c, SL_SMOOTH_WIN, dev);
+        assert_int_equal(dev[1], chord_dev_ref(p, t, 0u, &c, SL_SMOOTH_WIN));
+        assert_int_equal(symline_i_chord_dev(p, t, 0u, &c, SL_SMOOTH_WIN), dev[1]);
+    }
 }
 
 /* A chord prepared once answers as the chord's own test for every point
