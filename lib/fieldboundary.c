@@ -10,7 +10,8 @@
  * 2. Carpet model: the median cell mean and the median texture over the
  *    lowest band of rows. Medians ignore what stands on the carpet there
  *    (lines, feet, the robot's own body) as long as the carpet is most of the
- *    band; a lens's black corners are left out.
+ *    band; a lens's black corners are left out, unless black is half the
+ *    band or more: then the carpet itself is clipped to black.
  * 3. Column scan, bottom to top: a cell with carpet texture whose brightness
  *    fits the model or continues the column's carpet (a running mean follows
  *    the drift with distance) scores +1; a brighter cell (a line) 0; a
