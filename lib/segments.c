@@ -84,6 +84,14 @@ uint32_t symline_i_line_dist_q8(int32_t ax, int32_t ay, int32_t dx, int32_t dy, 
 #define SL_PER_POINT SL_NOINLINE
 #endif
 
+/* u f[0] + v f[1] + f[2] for point q's grid coordinates in 1/128, u = 128 x
+ * + fx, v = 128 y + fy: the cross of a linear form (lin_form()). */
+static SL_ALWAYS_INLINE int64_t lin_cross(const symline_point *q, const int64_t f[3])
+{
+    return (int64_t)(((int32_t)q->x << 7) + q->fx) * f[0] +
+           (int64_t)(((int32_t)q->y << 7) + q->fy) * f[1] + f[2];
+}
+
 /* Cross product of point q's offset from (x0, y0) with the chord direction
  * (dx, dy), all Q8: |.| / len is its distance to the chord's line. With no
  * direction, its squared distance to (x0, y0). Differences of Q8 coordinates
@@ -97,8 +105,7 @@ static SL_PER_POINT int64_t chord_cross(const symline_point *q, uint32_t level, 
     const int32_t dx = g[2], dy = g[3];
     int32_t wx, wy;
     if (SL_FOR_SPEED && (dx | dy) != 0) {
-        return (int64_t)(((int32_t)q->x << 7) + q->fx) * f[0] +
-               (int64_t)(((int32_t)q->y << 7) + q->fy) * f[1] + f[2];
+        return lin_cross(q, f);
     }
     if (SL_FOR_SPEED) {
         wx = symline_i_pt_q8x(q, level) - g[0];
@@ -146,8 +153,7 @@ static void window_ring(const symline_point *p, uint32_t n, const int64_t f[3], 
         ring[i] = 0;
     }
     for (i = 0; i < n; i++) {
-        const int64_t c = (int64_t)(((int32_t)p[i].x << 7) + p[i].fx) * f[0] +
-                          (int64_t)(((int32_t)p[i].y << 7) + p[i].fy) * f[1] + f[2];
+        const int64_t c = lin_cross(&p[i], f);
         hi = c > hi ? c : hi;
         lo = c < lo ? c : lo;
         if (win == 1u) {
@@ -179,8 +185,7 @@ typedef struct five_state {
 static SL_ALWAYS_INLINE void five_step(five_state *w, const symline_point *q, const int64_t f[3],
                                        int64_t *r)
 {
-    const int64_t c = (int64_t)(((int32_t)q->x << 7) + q->fx) * f[0] +
-                      (int64_t)(((int32_t)q->y << 7) + q->fy) * f[1] + f[2];
+    const int64_t c = lin_cross(q, f);
     w->hi = c > w->hi ? c : w->hi;
     w->lo = c < w->lo ? c : w->lo;
     w->sum += c - *r;
