@@ -14,6 +14,7 @@
 
 #include <cmocka.h>
 
+#include "pass.h"
 #include "segindex.h"
 #include "segments.h"
 
@@ -463,7 +464,7 @@ static void grid_near_equals_every_segment(void **state)
         /* Levels 0..3, and id areas from roomy to too small for every
          * segment (the speed builds keep the count's cells at its far end
          * while they fit). */
-        const int32_t tol = (int32_t)(512u + 256u * ((1u << (t % 4u)) - 1u));
+        const int32_t tol = symline_i_cover_tol_q8(t % 4u);
         const size_t ends = 10u * 8u * 4u + 16u; /* the 10 x 8 cells, aligned */
         const size_t room[4] = {sizeof mem, ends + 4u * 90u, ends + 4u * 60u, ends + 4u * 45u};
         uint32_t x = rnd(&seed) % W, y = rnd(&seed) % H, i;
@@ -489,7 +490,7 @@ static void grid_near_equals_every_segment(void **state)
      * count's cells the speed builds keep for the fill at its far end. */
     for (t = 0; t < 4u; t++) {
         static uint32_t ref[4096];
-        const int32_t tol = (int32_t)(512u + 256u * ((1u << t) - 1u));
+        const int32_t tol = symline_i_cover_tol_q8(t);
         const size_t ends = 10u * 8u * 4u + 16u;
         symline_i_segindex big;
         uint32_t cells, sum, extra;
@@ -525,7 +526,7 @@ static void grid_scan_equals_every_point(void **state)
     (void)state;
     earlier_segments(&r, segs, pts, &seed);
     for (level = 0; level <= 3u; level++) {
-        const int32_t tol = (int32_t)(512u + 256u * ((1u << level) - 1u));
+        const int32_t tol = symline_i_cover_tol_q8(level);
         const uint32_t gw = W >> level, gh = H >> level;
         symline_i_segindex_build(&ix, mem, sizeof mem, NULL, 0u, W, H, &r, NSEG, tol);
         assert_int_equal(ix.indexed, NSEG);
