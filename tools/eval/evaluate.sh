@@ -428,6 +428,48 @@ if [ -n "$FRAMES" ]; then
     done
     echo "$row"
     echo
+    if [ -n "$ANNOTATED" ]; then
+        echo "### The brightness changes against ground truth"
+        echo
+        echo "The annotated frames with lines, scored against their hand ground truth as above:"
+        echo "F1 on the frame and on the frame with each brightness change. A change to the"
+        echo "detector that finds more on the frame and as much as before on the changed frames"
+        echo "lowers the stability F1 above, not these."
+        echo
+        hdr="| frame |"
+        sep="|---|"
+        for f in $FILTERS; do
+            hdr="$hdr $f | x0.5 | +40 | -40 |"
+            sep="$sep---:|---:|---:|---:|"
+        done
+        echo "$hdr"
+        echo "$sep"
+        : > "$OUT/stabgt.tmp"
+        for name in $ANNOTATED; do
+            [ -s "$FIELD/$name.lines.txt" ] || [ -s "$FIELD/$name.arcs.txt" ] || continue
+            row=
+            for f in $FILTERS; do
+                d=$OUT/det/$f/field
+                for v in frame x0.5 p40 m40; do
+                    json=$d/$name.$v.json
+                    [ "$v" = frame ] && json=$d/$name.json
+                    f1=$(kv f1 "$("$BIN/symline-score" gt "$FIELD/$name" "$json" | head -n 1)")
+                    echo "$f $v $f1 $name" >> "$OUT/stabgt.tmp"
+                    row="$row $(printf '%.3f' "$f1") |"
+                done
+            done
+            echo "| $name |$row"
+        done
+        row="| mean |"
+        for f in $FILTERS; do
+            for v in frame x0.5 p40 m40; do
+                row="$row $(awk -v f="$f" -v v="$v" '$1 == f && $2 == v { n++; s += $3 }
+                                                END { if (n) printf "%.3f", s / n; else printf "-" }' "$OUT/stabgt.tmp") |"
+            done
+        done
+        echo "$row"
+        echo
+    fi
 fi
 
 # Wrong detections by rendered surface (the rendered sets carry label images).
