@@ -1,0 +1,54 @@
+#!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# Accuracy on the bundled real frames with hand ground truth (tests/data: NAME.pgm
+# with NAME.lines.txt, .arcs.txt, .dontcare.txt): `symline lines` with the
+# defaults, scored by `symline-score gt` against the ground truth, on each frame
+# and on its copy at half the brightness, must keep F1 at or above the floors
+# below. The golden tests pin the output byte for byte; this test says whether a
+# deliberate change of the output kept the accuracy: lower a floor only with the
+# accuracy re-measured over the whole evaluation (tools/eval/evaluate.sh).
+# usage: real_check.sh SYMLINE SYMLINE-SCORE SYMLINE-BRIGHT DATA_DIR WORKDIR
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/{/SPDX-License-Identifier/d;s/^# \{0,1\}//p;}' "$0"; exit 0 ;; esac
+set -eu
+symline=$1
+score=$2
+bright=$3
+data=$4
+work=$5
+rm -rf "$work"
+mkdir -p "$work"
+fail=0
+
+# NAME, F1 floor on the frame, F1 floor at half brightness (measured with the
+# code of 04b688c: 0.913 / 0.887 and 0.817 / 0.470; floors 0.02 below).
+floors="msl_20190606_r2_cam0_20190606_204340 0.893 0.867
+msl_20250403_r4_cam3_20250403_221433 0.797 0.450"
+
+# f1 NAME DET.json: the F1 of a detection against NAME's ground truth.
+f1() { "$score" gt "$data/$1" "$2" | head -n 1 | tr ' ' '\n' | sed -n 's/^f1=//p'; }
+# at_least A B: A >= B (decimal fractions).
+at_least() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a + 0 >= b + 0) }'; }
+
+n=0
+echo "$floors" | while read -r name floor half_floor; do
+    [ -f "$data/$name.lines.txt" ] || { echo "FAIL: $data/$name.lines.txt missing" >&2; exit 1; }
+    "$symline" lines "$data/$name.pgm" > "$work/$name.json"
+    "$bright" --mul 0.5 "$data/$name.pgm" "$work/$name.half.pgm"
+    "$symline" lines "$work/$name.half.pgm" > "$work/$name.half.json"
+    a=$(f1 "$name" "$work/$name.json")
+    b=$(f1 "$name" "$work/$name.half.json")
+    [ -n "$a" ] && [ -n "$b" ] || { echo "FAIL: $name: no score" >&2; exit 1; }
+    echo "$name: F1 $a (floor $floor), at half brightness $b (floor $half_floor)"
+    at_least "$a" "$floor" || { echo "FAIL: $name: F1 $a < $floor" >&2; exit 1; }
+    at_least "$b" "$half_floor" || { echo "FAIL: $name: F1 at half brightness $b < $half_floor" >&2; exit 1; }
+done || fail=1
+
+# Every frame with ground truth here has a floor above.
+for gt in "$data"/*.lines.txt; do
+    name=$(basename "$gt" .lines.txt)
+    n=$((n + 1))
+    echo "$floors" | grep -q "^$name " || { echo "FAIL: $name has ground truth but no floor" >&2; fail=1; }
+done
+[ "$n" -ge 2 ] || { echo "FAIL: expected ground truth for at least 2 frames in $data, found $n" >&2; fail=1; }
+[ "$fail" -eq 0 ] && echo "real_check: every floor held"
+exit "$fail"
