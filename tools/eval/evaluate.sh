@@ -446,7 +446,9 @@ if [ -n "$FRAMES" ]; then
         echo "$sep"
         : > "$OUT/stabgt.tmp"
         for name in $ANNOTATED; do
-            [ -s "$FIELD/$name.lines.txt" ] || [ -s "$FIELD/$name.arcs.txt" ] || continue
+            # the line-free frames (three empty files) as in the table of the annotated frames
+            [ -s "$FIELD/$name.lines.txt" ] || [ -s "$FIELD/$name.arcs.txt" ] ||
+                [ -s "$FIELD/$name.dontcare.txt" ] || continue
             row=
             for f in $FILTERS; do
                 d=$OUT/det/$f/field
