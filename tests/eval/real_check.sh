@@ -29,7 +29,6 @@ f1() { "$score" gt "$data/$1" "$2" | head -n 1 | tr ' ' '\n' | sed -n 's/^f1=//p
 # at_least A B: A >= B (decimal fractions).
 at_least() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a + 0 >= b + 0) }'; }
 
-n=0
 echo "$floors" | while read -r name floor half_floor; do
     [ -f "$data/$name.lines.txt" ] || { echo "FAIL: $data/$name.lines.txt missing" >&2; exit 1; }
     "$symline" lines "$data/$name.pgm" > "$work/$name.json"
@@ -44,6 +43,7 @@ echo "$floors" | while read -r name floor half_floor; do
 done || fail=1
 
 # Every frame with ground truth here has a floor above.
+n=0
 for gt in "$data"/*.lines.txt; do
     name=$(basename "$gt" .lines.txt)
     n=$((n + 1))
