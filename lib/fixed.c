@@ -7,9 +7,11 @@
 uint64_t symline_i_isqrt64(uint64_t v)
 {
     uint64_t r = 0u, bit = (uint64_t)1u << 62;
-#if SL_FOR_SPEED && defined(__GNUC__)
-    /* The loop below starts at the largest power of 4 not above v: found
-     * at once from v's highest bit where the build optimises for speed. */
+    /* While bit > v the loop below only shifts bit (r stays 0): where the
+     * build optimises for speed it starts at the largest power of 4 not
+     * above v, found at once from v's highest bit. */
+#if SL_FOR_SPEED
+#if defined(__GNUC__)
     if (v != 0u) {
         bit = (uint64_t)1u << ((63u - (uint32_t)__builtin_clzll(v)) & ~1u);
     }
@@ -17,6 +19,7 @@ uint64_t symline_i_isqrt64(uint64_t v)
     while (bit > v) {
         bit >>= 2;
     }
+#endif
     while (bit != 0u) {
         if (v >= r + bit) {
             v -= r + bit;
