@@ -288,11 +288,12 @@ SL_NOINLINE static void trace(symline_i_run *d, const symline_i_pass *p, const u
     const uint32_t first_seg = d->nseg;
     uint32_t tail = base + n, cnt;
     bool cut = false;
-    /* Chains go to the storage's free tail after the raster list. */
+    /* Chains go to the storage's free tail after the raster list (storage
+     * with room is not NULL). */
     symline_i_tracer_init(t, point_at(r, base), n, row_start, p->h);
     SL_STAGE(TRACE);
     while (tail < r->point_cap &&
-           symline_i_tracer_next(t, point_at(r, tail), r->point_cap - tail, &cnt, &cut)) {
+           symline_i_tracer_next(t, r->points + tail, r->point_cap - tail, &cnt, &cut)) {
         SL_STAGE(SEGMENTS);
         chain(d, p, ix, tail, cnt);
         tail += cnt;
@@ -300,16 +301,18 @@ SL_NOINLINE static void trace(symline_i_run *d, const symline_i_pass *p, const u
     }
     SL_STAGE(SEGMENTS);
     if (cut || (tail >= r->point_cap && n > 0u)) {
+        cut = true; /* or the storage ran out */
         d->truncated = true;
     }
     /* Storage this pass needed: the raster list and the chains after the kept
-     * points, plus one free entry that shows the tracer nothing is left. When
-     * it ran out, at most every line point is in a chain: base + 2 * all. */
-    if (row_start[p->h + 1u] != 0u || cut || (tail >= r->point_cap && n > 0u)) {
+     * points, plus one free entry that shows the tracer nothing is left
+     * (tail < point_cap then). When it ran out, at most every line point is
+     * in a chain: base + 2 * all. */
+    if (row_start[p->h + 1u] != 0u || cut) {
         const uint32_t all = sat_add(n, row_start[p->h + 1u]);
         note_need(r, sat_add(sat_add(base, sat_add(all, all)), 1u));
     } else {
-        note_need(r, n == 0u ? base : sat_add(tail, 1u));
+        note_need(r, n == 0u ? base : tail + 1u);
     }
     d->npts = keep_points(r, first_seg, d->nseg, base, p->level);
     d->prev_seg = d->nseg;
