@@ -171,7 +171,8 @@ static inline int32_t vertex(const uint32_t e[3])
         return 0; /* not a minimum of E (not an S point) */
     }
     /* Parabola vertex: (E(i-1) - E(i+1)) / (2 (E(i-1) - 2 E(i) + E(i+1))) px,
-     * |num| < den; both halved until num * 64 fits 32 bits. */
+     * |num| < den; both halved until num * 64 fits 32 bits. den >= 2^23 or
+     * unhalved, and then at least 2: neither neighbour equals E(i). */
     {
         uint32_t de = e[0] + e[2] - 2u * e[1];
         uint32_t dn = e[0] > e[2] ? e[0] - e[2] : e[2] - e[0];
@@ -182,7 +183,7 @@ static inline int32_t vertex(const uint32_t e[3])
         den = (int32_t)de;
         num = e[0] > e[2] ? (int32_t)dn : -(int32_t)dn;
     }
-    return den > 0 ? num * 64 / den : 0;
+    return num * 64 / den;
 }
 
 /* Offset (1/128 grid px) of the ridge's middle from index i across the line. */
