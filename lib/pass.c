@@ -258,16 +258,16 @@ SL_NOINLINE static uint32_t keep_points(symline_result *r, uint32_t first_seg, u
                 o->fy = (int8_t)((int32_t)(vy & 127u) - 64);
             }
         } else {
+            symline_point *const q = r->points + s->first, *const o = r->points + w;
             uint32_t i;
             for (i = 0; i < s->count; i++) {
                 /* Converted in place (read only once), then copied field by
                  * field: a struct copy may become a libc memcpy call. */
-                symline_point *q = &r->points[s->first + i];
-                symline_i_pt_to_full(q, level);
-                r->points[w + i].x = q->x;
-                r->points[w + i].y = q->y;
-                r->points[w + i].fx = q->fx;
-                r->points[w + i].fy = q->fy;
+                symline_i_pt_to_full(&q[i], level);
+                o[i].x = q[i].x;
+                o[i].y = q[i].y;
+                o[i].fx = q[i].fx;
+                o[i].fy = q[i].fy;
             }
         }
         s->first = w;
@@ -381,6 +381,7 @@ static uint32_t cache_plan(symline_i_run *d, const symline_i_pass *p)
 SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, uint8_t *ws,
                                           const uint8_t *end, uint32_t *row_start, uint32_t *n)
 {
+    symline_point *const pts = point_at(d->r, d->npts);
     symline_status st;
     if (d->field_rows != NULL) {
         /* Above the field: nothing to trace, and in each row only the
@@ -401,8 +402,8 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, u
     if (SL_FOR_SPEED_DEEP) {
         p->cache = cache_plan(d, p);
     }
-    st = symline_i_collect(d->img, p, ws, (size_t)(end - ws), point_at(d->r, d->npts),
-                           d->r->point_cap - d->npts, n, row_start, &row_start[p->h + 1u]);
+    st = symline_i_collect(d->img, p, ws, (size_t)(end - ws), pts, d->r->point_cap - d->npts, n,
+                           row_start, &row_start[p->h + 1u]);
     if (row_start[p->h + 1u] != 0u) {
         d->truncated = true;
     }
@@ -411,7 +412,7 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, u
     note_listed(d, *n, row_start[p->h + 1u]);
     if (st == SYMLINE_OK && d->field_rows != NULL) {
         SL_STAGE(FIELD);
-        *n = symline_i_field_drop(d->field_rows, p->w, point_at(d->r, d->npts), row_start, p->h);
+        *n = symline_i_field_drop(d->field_rows, p->w, pts, row_start, p->h);
     }
     return st;
 }
