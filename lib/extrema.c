@@ -239,8 +239,9 @@ void symline_i_extrema_down(const symline_i_coldown *cd, const uint32_t *E, uint
     /* Row t-2 is row t-1 itself at t = 1: row 0 has no row above, so it is
      * never marked, and every run starts there without a side. */
     const uint32_t w = cd->width;
-    const uint32_t *mid = cd->E3 + (size_t)((t + 2u) % 3u) * w;
-    const uint32_t *up = (t >= 2u) ? cd->E3 + (size_t)((t + 1u) % 3u) * w : mid;
+    const uint32_t *up = cd->E3 + (size_t)((t + 1u) % 3u) * w; /* row t-2's slot */
+    const uint32_t *mid = up == cd->E3 + 2u * (size_t)w ? cd->E3 : up + w;
+    up = (t >= 2u) ? up : mid;
     uint8_t *mr = cd->map + (size_t)((t - 1u) % cd->ring) * cd->stride;
     uint32_t i, nb;
     if (t == 1u) {
