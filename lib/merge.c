@@ -78,7 +78,9 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     const bool a_longer = al >= bl;
     const int32_t dx = a_longer ? adx : bdx;
     const int32_t dy = a_longer ? ady : bdy;
-    int64_t lo = 0, hi = 0;
+    /* Ends within 2^25 Q8 of the frame keep |proj| far below both limits:
+     * the first end sets lo and hi. */
+    int64_t lo = INT64_MAX, hi = INT64_MIN;
     uint64_t g = ~(uint64_t)0;
     uint32_t i;
     /* The gap first: the closest pair of ends (no square root, and most
@@ -109,12 +111,12 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
         int64_t proj;
         end_of(a, b, i, &x, &y);
         proj = (int64_t)x * dx + (int64_t)y * dy;
-        if (i == 0u || proj < lo) {
+        if (proj < lo) {
             lo = proj;
             j->x0 = x;
             j->y0 = y;
         }
-        if (i == 0u || proj > hi) {
+        if (proj > hi) {
             hi = proj;
             j->x1 = x;
             j->y1 = y;
