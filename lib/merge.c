@@ -65,7 +65,8 @@ static bool off_line(int32_t ax, int32_t ay, int32_t dx, int32_t dy, int32_t px,
 }
 
 /* Whether line b may join line a: close ends, each piece on the other's line.
- * Sets the joined ends (the extreme ends along the longer piece) as j's. */
+ * Sets the joined ends (the extreme ends along the longer piece) as j's
+ * (left partly set when false). */
 SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segment *b,
                                   uint32_t gap_q8, uint32_t dev_q8, symline_segment *j)
 {
@@ -97,19 +98,16 @@ SL_NOINLINE static bool mergeable(const symline_segment *a, const symline_segmen
     if (g > (uint64_t)gap_q8 * gap_q8) {
         return false;
     }
+    /* Each end on the other piece's line; the new ends (j's, written as the
+     * ends pass): the extreme end points along the longer piece. */
     for (i = 0; i < 4u; i++) {
         const symline_segment *o = i < 2u ? b : a;
         int32_t x, y;
+        int64_t proj;
         end_of(a, b, i, &x, &y);
         if (off_line(o->x0, o->y0, o->x1 - o->x0, o->y1 - o->y0, x, y, dev_q8)) {
             return false;
         }
-    }
-    /* New ends: the extreme end points along the longer piece. */
-    for (i = 0; i < 4u; i++) {
-        int32_t x, y;
-        int64_t proj;
-        end_of(a, b, i, &x, &y);
         proj = (int64_t)x * dx + (int64_t)y * dy;
         if (proj < lo) {
             lo = proj;
