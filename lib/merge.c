@@ -24,9 +24,10 @@ static uint64_t dist2(int32_t ax, int32_t ay, int32_t bx, int32_t by)
     return (uint64_t)((int64_t)dx * dx + (int64_t)dy * dy);
 }
 
-/* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. */
-static void end_of(const symline_segment *a, const symline_segment *b, uint32_t i, int32_t *x,
-                   int32_t *y)
+/* End i (0..3: a's two, then b's two) of the pair; x in *x, y in *y. In
+ * its callers, where the ends stay in registers. */
+static SL_ALWAYS_INLINE void end_of(const symline_segment *a, const symline_segment *b, uint32_t i,
+                                    int32_t *x, int32_t *y)
 {
     const symline_segment *s = i < 2u ? a : b;
     *x = (i & 1u) ? s->x1 : s->x0;
