@@ -292,7 +292,7 @@ static uint64_t chord_sweep(const symline_point *p, uint32_t n, uint32_t level,
      * itself, point by point. */
     *win = (dx | dy) == 0 || *win < 1u ? 1u : (*win > n ? n : *win);
     window_max(p, n, level, g, *win, best);
-    return (dx | dy) == 0 ? 0u : hypot_q(dx, dy);
+    return hypot_q(dx, dy); /* 0 for no direction */
 }
 
 /* The distance (Q8) a sweep's best stands for: best / (win len), or its
