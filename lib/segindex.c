@@ -403,13 +403,8 @@ static SL_NEAR_INLINE bool near_entry(const symline_i_segindex *ix, const symlin
         }
         return false;
     }
-    for (a = e - SL_PIECE; a < ix->ids[k + 1u]; a += SL_POLY_STEP) {
-        const uint32_t b = a + SL_POLY_STEP < ix->ids[k + 1u] ? a + SL_POLY_STEP : ix->ids[k + 1u];
-        if (symline_i_near_piece(&r->points[a], &r->points[b], q)) {
-            return true;
-        }
-    }
-    return false;
+    a = e - SL_PIECE; /* the run's first point, before its last (visit_segment()) */
+    return symline_i_near_run(r->points + a, ix->ids[k + 1u] - a, q);
 }
 
 /* The line entry a chain's scan tried first, prepared (SL_FOR_SPEED_DEEP):

@@ -549,28 +549,40 @@ void symline_i_fit(const symline_point *p, uint32_t n, uint32_t level, uint32_t 
     s->merged = false;
 }
 
-bool symline_i_near_piece(const symline_point *a, const symline_point *b, const symline_i_near *q)
+/* symline_i_near_run(); where the build optimises for speed, also inline in
+ * symline_i_near_segment(), whose frame then stays the only one a chain's
+ * test of an earlier curve adds (no call per curve either). */
+#if SL_FOR_SPEED
+#define SL_RUN_INLINE SL_ALWAYS_INLINE
+#else
+#define SL_RUN_INLINE
+#endif
+static SL_RUN_INLINE bool near_run(const symline_point *p, uint32_t last, const symline_i_near *q)
 {
-    /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
-    return symline_i_near_chord((int32_t)a->x << SL_Q8_SHIFT, (int32_t)a->y << SL_Q8_SHIFT,
-                                (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, q);
+    uint32_t i;
+    for (i = 0; i < last; i += SL_POLY_STEP) {
+        const symline_point *a = &p[i], *b = &p[i + SL_POLY_STEP < last ? i + SL_POLY_STEP : last];
+        /* Whole pixels: the tolerance is 2 px and more, the offsets would only cost. */
+        if (symline_i_near_chord((int32_t)a->x << SL_Q8_SHIFT, (int32_t)a->y << SL_Q8_SHIFT,
+                                 (int32_t)b->x << SL_Q8_SHIFT, (int32_t)b->y << SL_Q8_SHIFT, q)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+bool symline_i_near_run(const symline_point *p, uint32_t last, const symline_i_near *q)
+{
+    return near_run(p, last, q);
 }
 
 bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
                             const symline_i_near *q)
 {
-    uint32_t i;
-    const symline_point *p = pts + s->first;
     if (s->kind == SYMLINE_KIND_LINE || s->count < 2u) {
         return symline_i_near_chord(s->x0, s->y0, s->x1, s->y1, q);
     }
-    for (i = 0; i + 1u < s->count; i += SL_POLY_STEP) {
-        const uint32_t j = (i + SL_POLY_STEP < s->count) ? i + SL_POLY_STEP : s->count - 1u;
-        if (symline_i_near_piece(&p[i], &p[j], q)) {
-            return true;
-        }
-    }
-    return false;
+    return near_run(pts + s->first, s->count - 1u, q);
 }
 
 void symline_i_bend_check(const symline_point *p, uint32_t n, uint32_t level, uint32_t bend_thr,

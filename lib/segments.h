@@ -88,7 +88,7 @@ typedef struct symline_i_near {
 } symline_i_near;
 
 /* True when q's point lies within q's tolerance of the segment a-b (all Q8):
- * the test of symline_i_near_piece() and symline_i_near_segment(), inline
+ * the test of symline_i_near_run() and symline_i_near_segment(), inline
  * here for the grid of earlier segments (segindex.c, SL_FOR_SPEED_DEEP). */
 static inline bool symline_i_near_chord(int32_t ax, int32_t ay, int32_t bx, int32_t by,
                                         const symline_i_near *q)
@@ -208,9 +208,10 @@ static inline bool symline_i_near_prepared(const symline_i_chord_prep *c, const 
 }
 #endif
 
-/* True when q's point lies within q's tolerance of the curve piece a-b
- * (whole pixels): one step of symline_i_near_segment()'s polyline. */
-bool symline_i_near_piece(const symline_point *a, const symline_point *b, const symline_i_near *q);
+/* True when q's point lies within q's tolerance of the polyline through
+ * p[0], p[SL_POLY_STEP], p[2 SL_POLY_STEP], ... and p[last] (whole pixels):
+ * symline_i_near_segment()'s test of a curve, or of a run of it. */
+bool symline_i_near_run(const symline_point *p, uint32_t last, const symline_i_near *q);
 /* True when q's point lies within q's tolerance of segment s (its chord for
  * lines, its points for curves). */
 bool symline_i_near_segment(const symline_segment *s, const symline_point *pts,
