@@ -92,7 +92,7 @@ static void cell_span(int32_t p, int32_t q, int32_t margin, uint32_t n, uint32_t
 }
 
 /* a + d k / 2^sh, d's magnitude rounded down, in 32 bits: |d| < 2^26 and
- * k <= 2^sh <= 2^13 keep both products below 2^26. */
+ * k <= 2^sh <= 2^13 keep both products below 2^26. k = 2^sh: exactly a + d. */
 SL_NOINLINE static int32_t split_at(int32_t a, int32_t d, uint32_t k, uint32_t sh)
 {
     const uint32_t u = (uint32_t)(d < 0 ? -d : d);
@@ -115,10 +115,8 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     }
     /* 2^sh pieces of at most a cell; any split of the chord covers it. */
     for (k = 1u; k <= (1u << sh); k++) {
-        /* The last piece ends at b (a short chord is one piece). */
-        const bool last = k == 1u << sh;
-        const int32_t qx = last ? bx : split_at(ax, dx, k, sh);
-        const int32_t qy = last ? by : split_at(ay, dy, k, sh);
+        /* The last piece ends at b (split_at(); a short chord is one piece). */
+        const int32_t qx = split_at(ax, dx, k, sh), qy = split_at(ay, dy, k, sh);
         uint32_t cx[2], cy[2], x, y;
         cell_span(px, qx, margin, w->cols, cx);
         cell_span(py, qy, margin, w->rows, cy);
