@@ -33,7 +33,8 @@ uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
     /* The sharpest point of the first run of turning points; n if none (and
      * for chains too short for the test: the loop does not run). */
     uint32_t i, best = n;
-    int32_t bnum = 0, bden = 1;
+    /* The threshold itself: the first turning point is sharper. */
+    int32_t bnum = SL_COS2_NUM, bden = SL_COS2_DEN;
     for (i = SL_CORNER_SPAN; i + SL_CORNER_SPAN < n; i++) {
         int32_t num, den;
         turn_at(p, i, &num, &den);
@@ -44,7 +45,7 @@ uint32_t symline_i_corner_cut(const symline_point *p, uint32_t n)
             continue;
         }
         /* num/den < bnum/bden, denominators positive (chords of K steps are never empty). */
-        if (best == n || num * bden < bnum * den) {
+        if (num * bden < bnum * den) {
             best = i;
             bnum = num;
             bden = den;
