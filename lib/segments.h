@@ -95,7 +95,8 @@ static inline bool symline_i_near_chord(int32_t ax, int32_t ay, int32_t bx, int3
 {
     const int32_t px = q->x, py = q->y, tol = q->tol;
     /* Differences of Q8 coordinates fit 32 bits; only products need 64. */
-    int32_t dx, dy, wx, wy, t2, c;
+    int32_t dx, dy, wx, wy, c;
+    uint32_t t2; /* the tolerance (never negative), halved with the rest */
     int64_t t, dd;
     if ((px < ax - tol && px < bx - tol) || (px > ax + tol && px > bx + tol) ||
         (py < ay - tol && py < by - tol) || (py > ay + tol && py > by + tol)) {
@@ -115,19 +116,18 @@ static inline bool symline_i_near_chord(int32_t ax, int32_t ay, int32_t bx, int3
     /* Inside the chord: |w x d| <= tol |d|, squared. Coarsen all lengths alike
      * until the squares fit 64 bits (a 640 px frame loses 1/32 px at most);
      * no square root and no division, so this stays cheap and shallow. */
-    t2 = tol;
+    t2 = (uint32_t)tol;
     while (SL_OUTSIDE(dx, 32767) || SL_OUTSIDE(dy, 32767) || SL_OUTSIDE(wx, 32767) ||
-           SL_OUTSIDE(wy, 32767) || t2 > 32767) {
+           SL_OUTSIDE(wy, 32767) || t2 > 32767u) {
         dx /= 2;
         dy /= 2;
         wx /= 2;
         wy /= 2;
-        t2 /= 2;
+        t2 /= 2u;
     }
     /* All within +-32767 now: the cross and the squares fit 32 bits. */
     c = wx * dy - wy * dx;
-    return (int64_t)c * c <=
-           (int64_t)((uint64_t)(uint32_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
+    return (int64_t)c * c <= (int64_t)((uint64_t)(t2 * t2) * (uint32_t)(dx * dx + dy * dy));
 }
 
 #if SL_FOR_SPEED_DEEP
