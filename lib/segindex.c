@@ -115,8 +115,11 @@ void symline_i_cellwalk_chord(symline_i_cellwalk *w, int32_t ax, int32_t ay, int
     }
     /* 2^sh pieces of at most a cell; any split of the chord covers it. */
     for (k = 1u; k <= (1u << sh); k++) {
-        /* The last piece ends at b (split_at(); a short chord is one piece). */
-        const int32_t qx = split_at(ax, dx, k, sh), qy = split_at(ay, dy, k, sh);
+        /* The last piece ends at b (a short chord is one piece): split_at()
+         * puts it there, where speed counts without the calls. */
+        const bool last = SL_FOR_SPEED && k == 1u << sh;
+        const int32_t qx = last ? bx : split_at(ax, dx, k, sh);
+        const int32_t qy = last ? by : split_at(ay, dy, k, sh);
         uint32_t cx[2], cy[2], x, y;
         cell_span(px, qx, margin, w->cols, cx);
         cell_span(py, qy, margin, w->rows, cy);
