@@ -231,11 +231,14 @@ SL_NOINLINE static void field_stats(const symline_image *img, const symline_fiel
     }
     if (top != NULL) {
         symline_i_field_rows(field, 0u, img->width, img->width, 0u, top);
+        symline_i_frame_stats_measure(img, top, hist, st);
+        st->ridge_q4 =
+            (uint16_t)symline_i_ridge_q4(st->sigma_q4, field->carpet_tex, field->carpet_mean);
+        if (st->mean != 0u || st->sigma_q4 != 0u) {
+            return;
+        }
     }
-    symline_i_frame_stats_measure(img, top, hist, st);
-    if (st->mean == 0u && st->sigma_q4 == 0u && top != NULL) {
-        symline_i_frame_stats_measure(img, NULL, hist, st); /* no field in view */
-    }
+    symline_i_frame_stats_measure(img, NULL, hist, st); /* no field, or none in view */
 }
 
 /* Every pass, fine scale first, horizontal before vertical. Kept apart from
@@ -321,6 +324,7 @@ static symline_status detect(const symline_image *img, const symline_config *cfg
     }
     d->stats.mean = 0u;
     d->stats.sigma_q4 = 0u;
+    d->stats.ridge_q4 = 0u;
     out->field.count = 0u;
     if (cfg->field_boundary != SYMLINE_FIELD_OFF) {
         SL_STAGE(FIELD);

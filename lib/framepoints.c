@@ -107,6 +107,7 @@ symline_status symline_line_points(const symline_image *img, const symline_confi
     *truncated = false;
     stats.mean = 0u;
     stats.sigma_q4 = 0u;
+    stats.ridge_q4 = 0u;
     if (cfg->adaptive) {
         /* The whole frame's statistics (the detector's are the field's when
          * it finds a boundary); the histograms at the workspace's start, free

@@ -127,9 +127,10 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
             acc += hist[++hi];
         }
     }
-    st->mean = med;
+    st->mean = (uint16_t)med;
     /* sigma = 1.4826 MAD for normal noise, Q4: MAD * 23.7. */
-    st->sigma_q4 = (mad * 2372u + 50u) / 100u;
+    st->sigma_q4 = (uint16_t)((mad * 2372u + 50u) / 100u); /* <= 255 x 23.72 */
+    st->ridge_q4 = st->sigma_q4;
 }
 
 /* A sigma10 / 10 * sigma_q4 / 16 multiple of sigma: the divisor 160. */
@@ -157,7 +158,7 @@ void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *c
     const uint32_t mean = st->mean, sigma_q4 = st->sigma_q4;
     /* ridge_sigma10 <= 100 (a checked config): 32 bits hold the product. */
     const uint32_t ridge =
-        (cfg->ridge_sigma10 * sigma_q4 + SL_SIGMA10_Q4_DIV / 2u) / SL_SIGMA10_Q4_DIV;
+        (cfg->ridge_sigma10 * st->ridge_q4 + SL_SIGMA10_Q4_DIV / 2u) / SL_SIGMA10_Q4_DIV;
     const uint32_t bright = sigma_gray(mean, cfg->bright_sigma10, sigma_q4);
     if (bright > f->min_gray) {
         f->min_gray = bright;

@@ -25,10 +25,29 @@ typedef struct symline_i_linefilter {
 /* Level and spread of the gray values the thresholds adapt to, robust to the
  * lines, robots and lights among them. */
 typedef struct symline_i_frame_stats {
-    uint32_t mean;     /* the median, gray levels */
-    uint32_t sigma_q4; /* 1.4826 x the median absolute deviation (the standard
+    /* 16 bits each: gray levels up to 255, sigmas up to 255 x 23.72 in Q4. */
+    uint16_t mean;     /* the median, gray levels */
+    uint16_t sigma_q4; /* 1.4826 x the median absolute deviation (the standard
                           deviation of normal noise), gray levels, Q4 */
+    uint16_t ridge_q4; /* the sigma the ridge threshold scales: sigma_q4, or
+                          less on a carpet whose spread is not its grain
+                          (detect.c), gray levels, Q4 */
 } symline_i_frame_stats;
+
+/* The ridge's sigma (Q4) on a carpet of texture tex_q8 (symline_field_boundary's
+ * carpet_tex) and gray value mean, whose spread is sigma_q4. Sun and shadow
+ * split a carpet into two gray levels, and then their spread, not the carpet's
+ * grain, sets sigma: lines in the brighter part stand less than the ridge
+ * threshold above it. The ridge's sigma comes down towards five grains (the
+ * texture times the gray value), never below 0.8 sigma. tex_q8, mean <= 255:
+ * every product fits 32 bits. */
+static inline uint32_t symline_i_ridge_q4(uint32_t sigma_q4, uint32_t tex_q8, uint32_t mean)
+{
+    const uint32_t grains = 5u * tex_q8 * mean / 16u; /* 5 x tex / 256 x mean x 16 */
+    const uint32_t low = sigma_q4 * 4u / 5u;
+    const uint32_t r = grains > low ? grains : low;
+    return r < sigma_q4 ? r : sigma_q4;
+}
 
 /* The thresholds as configured (no range checks). */
 void symline_i_linefilter_setup(symline_i_linefilter *f, const symline_config *cfg);

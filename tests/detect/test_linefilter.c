@@ -99,6 +99,7 @@ static void statistics_and_adaptive_thresholds(void **state)
     symline_i_frame_stats_measure(&img, top, hist, &st);
     assert_int_equal(st.mean, 100);
     assert_int_equal(st.sigma_q4, 237);
+    assert_int_equal(st.ridge_q4, 237); /* the ridge's sigma: sigma until the carpet lowers it */
     /* No field in the frame: nothing measured. */
     for (i = 0; i < 20u; i++) {
         top[i] = 20u;
@@ -109,6 +110,7 @@ static void statistics_and_adaptive_thresholds(void **state)
     /* Thresholds from a spread of 40 about a level of 100. */
     st.mean = 100u;
     st.sigma_q4 = 640u;
+    st.ridge_q4 = 640u;
     symline_config_default(&cfg);
     symline_i_linefilter_setup(&f, &cfg);
     symline_i_linefilter_adapt(&f, &cfg, &st, 1u);
@@ -118,6 +120,7 @@ static void statistics_and_adaptive_thresholds(void **state)
     /* Full resolution: the sides one sigma higher (they lie in a bright
      * line's blur); the other thresholds as at coarser scales. */
     st.sigma_q4 = 320u;
+    st.ridge_q4 = 320u;
     symline_i_linefilter_setup(&f, &cfg);
     symline_i_linefilter_adapt(&f, &cfg, &st, 1u);
     assert_int_equal(f.side_max, 160); /* mean + 3.0 sigma */
@@ -125,7 +128,15 @@ static void statistics_and_adaptive_thresholds(void **state)
     symline_i_linefilter_adapt(&f, &cfg, &st, 0u);
     assert_int_equal(f.side_max, 180); /* mean + 4.0 sigma */
     assert_int_equal(f.ridge_min, 18); /* 0.9 sigma */
+    /* The ridge scales its own sigma; the sides and the brightness keep sigma. */
+    st.ridge_q4 = 256u;
+    symline_i_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_adapt(&f, &cfg, &st, 0u);
+    assert_int_equal(f.ridge_min, 14); /* 0.9 x 16 = 14.4 */
+    assert_int_equal(f.side_max, 180);
+    assert_int_equal(f.min_gray, 100);
     st.sigma_q4 = 640u;
+    st.ridge_q4 = 640u;
     /* Configured thresholds above the adaptive ones stay; side_sigma10 100 is off. */
     cfg.illumination = 150u;
     cfg.contrast_min = 120u;
@@ -143,6 +154,32 @@ static void statistics_and_adaptive_thresholds(void **state)
     symline_i_linefilter_adapt(&f, &cfg, &st, 0u);
     assert_int_equal(f.min_gray, 0);
     assert_int_equal(f.side_max, 255);
+}
+
+/* The ridge's sigma on a carpet: five grains (texture x gray value) between
+ * 0.8 sigma and sigma. */
+static void ridge_sigma_from_grain(void **state)
+{
+    uint32_t s, t, m;
+    (void)state;
+    /* Grain 32 / 256 x 128 = 16 gray levels (Q4 256), five grains Q4 1280. */
+    assert_int_equal(symline_i_ridge_q4(1400u, 32u, 128u), 1280u); /* between the bounds */
+    assert_int_equal(symline_i_ridge_q4(1000u, 32u, 128u), 1000u); /* never above sigma */
+    assert_int_equal(symline_i_ridge_q4(4000u, 32u, 128u), 3200u); /* never below 0.8 sigma */
+    assert_int_equal(symline_i_ridge_q4(0u, 255u, 255u), 0u);
+    assert_int_equal(symline_i_ridge_q4(6048u, 0u, 0u), 4838u); /* the largest sigma, no grain */
+    /* Over every sigma a frame can have and a grid of carpets: within the bounds,
+     * and falling towards 0.8 sigma as the grain shrinks. */
+    for (s = 0u; s <= 6048u; s += 7u) {
+        for (m = 0u; m < 256u; m += 15u) {
+            uint32_t prev = s;
+            for (t = 255u; t < 256u; t -= 5u) {
+                const uint32_t r = symline_i_ridge_q4(s, t, m);
+                assert_true(r <= s && r >= s * 4u / 5u && r <= prev);
+                prev = r;
+            }
+        }
+    }
 }
 
 /* A horizontal band of gray `line` on row 20 of a 40x40 frame, `above` and
@@ -267,6 +304,7 @@ int main(void)
         cmocka_unit_test(setup_from_config),
         cmocka_unit_test(gray_test),
         cmocka_unit_test(statistics_and_adaptive_thresholds),
+        cmocka_unit_test(ridge_sigma_from_grain),
         cmocka_unit_test(whole_piece_side_test),
         cmocka_unit_test(whole_piece_side_test_at_borders),
     };
