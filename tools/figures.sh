@@ -189,7 +189,7 @@ awk -v opt="$optional" '{ printf "  %-14s %6d B%s\n", $1, $2, index(opt, " " $1 
 figure "core code (Cortex-M4 -Os, without the optional modules)" "$core" B
 quote README.md '\*\*Small:\*\* \([0-9.]*\) KiB of code' KiB
 quote docs/porting.md '^ *\([0-9,]*\) B measured, the field boundary'
-quote docs/detector.md 'brought it to \([0-9,]*\) B (issue 10'
+quote docs/detector.md '^\([0-9,]*\) B of code (docs.RESULTS.md'
 figure "field boundary code (fieldboundary.c)" "$(module fieldboundary)" B
 quote README.md '(the field boundary \([0-9.]*\) KiB of it' KiB
 quote docs/porting.md 'the field boundary \([0-9.]*\) KiB of it, the index' KiB
