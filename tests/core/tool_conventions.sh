@@ -15,7 +15,7 @@ ok() { pass=$((pass + 1)); }
 bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
 version=$("$bin/symline" --version | sed 's/^symline //')
 
-for t in symline-score symline-render symline-bright symline-ixscore symline-bench symline-bench-methods \
+for t in symline-score symline-render symline-bright symline-resize symline-ixscore symline-bench symline-bench-methods \
     symline-bench-operator symline-advframes symline-peers; do
     p=$bin/$t
     [ -x "$p" ] || [ $t = symline-peers ] || { bad "$t not built"; continue; }
