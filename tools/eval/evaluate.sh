@@ -6,8 +6,9 @@
 #     640x480 (symline-render, fixed seeds),
 #   - the real frames DATA_DIR/field: against hand ground truth where NAME.lines.txt
 #     exists (P, R, F1, segments, fragmentation, centre error; line-free frames: their
-#     segment count), F1 against a line mask where one exists, and stability F1 against
-#     the same frame with brightness x0.5, +40 and -40.
+#     segment count), F1 against a line mask where one exists, stability F1 against
+#     the same frame with brightness x0.5, +40 and -40, and the annotated frames' F1
+#     against ground truth at those brightnesses and at half and twice the size.
 # Every set is run with each filter side by side (default: the paper's A1-S filter
 # and the shipped default). Scoring: see docs/evaluation.md.
 #
@@ -70,9 +71,9 @@ fi
 if [ ! -f "$BUILD/CMakeCache.txt" ]; then
     cmake -S "$REPO" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >&2
 fi
-cmake --build "$BUILD" -j2 --target symline_cli symline-render symline-score symline-bright >&2
+cmake --build "$BUILD" -j2 --target symline_cli symline-render symline-score symline-bright symline-resize >&2
 BIN=$BUILD/bin
-for b in symline symline-render symline-score symline-bright; do
+for b in symline symline-render symline-score symline-bright symline-resize; do
     [ -x "$BIN/$b" ] || { echo "evaluate.sh: $BIN/$b missing after the build" >&2; exit 1; }
 done
 "$BIN/symline" lines --help >/dev/null 2>&1 || { echo "evaluate.sh: this symline has no 'lines' command" >&2; exit 1; }
@@ -144,6 +145,17 @@ if [ -d "$FIELD" ]; then
             continue
         fi
         FRAMES="$FRAMES $name"
+        if [ -f "$FIELD/$name.lines.txt" ]; then
+            # The same scene through a camera of half and of twice the pixels,
+            # with the ground truth moved along (the scale table).
+            "$BIN/symline-resize" --half --gt "$img" "$TR/$name.half.pgm"
+            "$BIN/symline-resize" --double --gt "$img" "$TR/$name.double.pgm"
+            for f in $FILTERS; do
+                for v in half double; do
+                    add_job "$TR/$name.$v.pgm" "$OUT/det/$f/field/$name.$v.json" "$f"
+                done
+            done
+        fi
         "$BIN/symline-bright" --mul 0.5 "$img" "$TR/$name.x0.5.pgm"
         "$BIN/symline-bright" --report --clipped "$TR/$name.p40.sat.pgm" --add 40 "$img" "$TR/$name.p40.pgm" > "$TR/$name.p40.clip"
         "$BIN/symline-bright" --report --clipped "$TR/$name.m40.sat.pgm" --add -40 "$img" "$TR/$name.m40.pgm" > "$TR/$name.m40.clip"
@@ -467,6 +479,46 @@ if [ -n "$FRAMES" ]; then
             for v in frame x0.5 p40 m40; do
                 row="$row $(awk -v f="$f" -v v="$v" '$1 == f && $2 == v { n++; s += $3 }
                                                 END { if (n) printf "%.3f", s / n; else printf "-" }' "$OUT/stabgt.tmp") |"
+            done
+        done
+        echo "$row"
+        echo
+        echo "### The scale changes against ground truth"
+        echo
+        echo "The same frames at half and at twice their size (\`symline-resize --half\` and"
+        echo "\`--double\`: 2x2 means, bilinear), the ground truth moved along; the scorer's"
+        echo "tolerance follows the width. The defaults were chosen on frames 608-800 px wide."
+        echo
+        hdr="| frame |"
+        sep="|---|"
+        for f in $FILTERS; do
+            hdr="$hdr $f | half | double |"
+            sep="$sep---:|---:|---:|"
+        done
+        echo "$hdr"
+        echo "$sep"
+        : > "$OUT/scalegt.tmp"
+        for name in $ANNOTATED; do
+            [ -s "$FIELD/$name.lines.txt" ] || [ -s "$FIELD/$name.arcs.txt" ] ||
+                [ -s "$FIELD/$name.dontcare.txt" ] || continue
+            row=
+            for f in $FILTERS; do
+                d=$OUT/det/$f/field
+                for v in frame half double; do
+                    json=$d/$name.$v.json gt=$TR/$name.$v
+                    [ "$v" = frame ] && json=$d/$name.json gt=$FIELD/$name
+                    f1=$(kv f1 "$("$BIN/symline-score" gt "$gt" "$json" | head -n 1)")
+                    echo "$f $v $f1 $name" >> "$OUT/scalegt.tmp"
+                    row="$row $(printf '%.3f' "$f1") |"
+                done
+            done
+            echo "| $name |$row"
+        done
+        row="| mean |"
+        for f in $FILTERS; do
+            for v in frame half double; do
+                row="$row $(awk -v f="$f" -v v="$v" '$1 == f && $2 == v { n++; s += $3 }
+                                                END { if (n) printf "%.3f", s / n; else printf "-" }' "$OUT/scalegt.tmp") |"
             done
         done
         echo "$row"
