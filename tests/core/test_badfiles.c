@@ -170,14 +170,20 @@ static void test_devices_and_folders(void **state)
 {
     imgio_gray img;
     char err[256];
-    const long before = peak_kb();
+    long before;
     (void)state;
+    /* The error paths once before the peak is taken: the first error text
+     * and, under an emulator (qemu-user: the AArch64 tests), the first
+     * translation of this code may take memory of their own. */
+    assert_int_equal(imgio_read_gray("/", &img, err, sizeof err), -1);
+    assert_non_null(strstr(err, "/: read error"));
+    before = peak_kb();
     assert_int_equal(imgio_read_gray("/dev/zero", &img, err, sizeof err), -1);
     assert_non_null(strstr(err, "/dev/zero: not a PGM, PNG or JPEG file"));
     assert_int_equal(imgio_read_gray("/dev/urandom", &img, err, sizeof err), -1);
-    assert_int_equal(imgio_read_gray("/", &img, err, sizeof err), -1);
-    assert_non_null(strstr(err, "/: read error"));
-    assert_true(peak_kb() - before < 4 * 1024);
+    if (peak_kb() - before >= 4 * 1024) {
+        fail_msg("peak memory grew by %ld KB", peak_kb() - before);
+    }
 }
 
 /* The point storage both tools give the detector: its byte size fits a
