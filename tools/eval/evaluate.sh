@@ -203,6 +203,48 @@ FAILS=$(find "$OUT/det" -name '*.err' -exec grep -l '^failed$' {} + 2>/dev/null 
 # ---- scoring and tables ----
 # kv KEY LINE: value of KEY=... in a symline-score line
 kv() { printf '%s\n' "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"; }
+
+# copies_table VARIANTS TITLES ALIGNS: per annotated frame with lines and filter, F1
+# against ground truth on the frame and on each copy ($TR/NAME.VARIANT.pgm; scored
+# against the copy's own ground truth where symline-resize moved it there, else
+# the frame's), then the means; TITLES and ALIGNS are the copies' header cells.
+copies_table() {
+    hdr="| frame |"
+    sep="|---|"
+    for f in $FILTERS; do
+        hdr="$hdr $f | $2"
+        sep="$sep---:|$3"
+    done
+    echo "$hdr"
+    echo "$sep"
+    : > "$OUT/copiesgt.tmp"
+    for name in $ANNOTATED; do
+        # the line-free frames (three empty files) as in the table of the annotated frames
+        [ -s "$FIELD/$name.lines.txt" ] || [ -s "$FIELD/$name.arcs.txt" ] ||
+            [ -s "$FIELD/$name.dontcare.txt" ] || continue
+        row=
+        for f in $FILTERS; do
+            for v in frame $1; do
+                json=$OUT/det/$f/field/$name.$v.json gt=$FIELD/$name
+                [ "$v" = frame ] && json=$OUT/det/$f/field/$name.json
+                [ -f "$TR/$name.$v.lines.txt" ] && gt=$TR/$name.$v
+                f1=$(kv f1 "$("$BIN/symline-score" gt "$gt" "$json" | head -n 1)")
+                echo "$f $v $f1" >> "$OUT/copiesgt.tmp"
+                row="$row $(printf '%.3f' "$f1") |"
+            done
+        done
+        echo "| $name |$row"
+    done
+    row="| mean |"
+    for f in $FILTERS; do
+        for v in frame $1; do
+            row="$row $(awk -v f="$f" -v v="$v" '$1 == f && $2 == v { n++; s += $3 }
+                                            END { if (n) printf "%.3f", s / n; else printf "-" }' "$OUT/copiesgt.tmp") |"
+        done
+    done
+    echo "$row"
+    echo
+}
 PER=$OUT/per-image.txt
 : > "$PER"
 
@@ -448,81 +490,14 @@ if [ -n "$FRAMES" ]; then
         echo "detector that finds more on the frame and as much as before on the changed frames"
         echo "lowers the stability F1 above, not these."
         echo
-        hdr="| frame |"
-        sep="|---|"
-        for f in $FILTERS; do
-            hdr="$hdr $f | x0.5 | +40 | -40 |"
-            sep="$sep---:|---:|---:|---:|"
-        done
-        echo "$hdr"
-        echo "$sep"
-        : > "$OUT/stabgt.tmp"
-        for name in $ANNOTATED; do
-            # the line-free frames (three empty files) as in the table of the annotated frames
-            [ -s "$FIELD/$name.lines.txt" ] || [ -s "$FIELD/$name.arcs.txt" ] ||
-                [ -s "$FIELD/$name.dontcare.txt" ] || continue
-            row=
-            for f in $FILTERS; do
-                d=$OUT/det/$f/field
-                for v in frame x0.5 p40 m40; do
-                    json=$d/$name.$v.json
-                    [ "$v" = frame ] && json=$d/$name.json
-                    f1=$(kv f1 "$("$BIN/symline-score" gt "$FIELD/$name" "$json" | head -n 1)")
-                    echo "$f $v $f1 $name" >> "$OUT/stabgt.tmp"
-                    row="$row $(printf '%.3f' "$f1") |"
-                done
-            done
-            echo "| $name |$row"
-        done
-        row="| mean |"
-        for f in $FILTERS; do
-            for v in frame x0.5 p40 m40; do
-                row="$row $(awk -v f="$f" -v v="$v" '$1 == f && $2 == v { n++; s += $3 }
-                                                END { if (n) printf "%.3f", s / n; else printf "-" }' "$OUT/stabgt.tmp") |"
-            done
-        done
-        echo "$row"
-        echo
+        copies_table "x0.5 p40 m40" "x0.5 | +40 | -40 |" "---:|---:|---:|"
         echo "### The scale changes against ground truth"
         echo
         echo "The same frames at half and at twice their size (\`symline-resize --half\` and"
         echo "\`--double\`: 2x2 means, bilinear), the ground truth moved along; the scorer's"
         echo "tolerance follows the width. The defaults were chosen on frames 608-800 px wide."
         echo
-        hdr="| frame |"
-        sep="|---|"
-        for f in $FILTERS; do
-            hdr="$hdr $f | half | double |"
-            sep="$sep---:|---:|---:|"
-        done
-        echo "$hdr"
-        echo "$sep"
-        : > "$OUT/scalegt.tmp"
-        for name in $ANNOTATED; do
-            [ -s "$FIELD/$name.lines.txt" ] || [ -s "$FIELD/$name.arcs.txt" ] ||
-                [ -s "$FIELD/$name.dontcare.txt" ] || continue
-            row=
-            for f in $FILTERS; do
-                d=$OUT/det/$f/field
-                for v in frame half double; do
-                    json=$d/$name.$v.json gt=$TR/$name.$v
-                    [ "$v" = frame ] && json=$d/$name.json gt=$FIELD/$name
-                    f1=$(kv f1 "$("$BIN/symline-score" gt "$gt" "$json" | head -n 1)")
-                    echo "$f $v $f1 $name" >> "$OUT/scalegt.tmp"
-                    row="$row $(printf '%.3f' "$f1") |"
-                done
-            done
-            echo "| $name |$row"
-        done
-        row="| mean |"
-        for f in $FILTERS; do
-            for v in frame half double; do
-                row="$row $(awk -v f="$f" -v v="$v" '$1 == f && $2 == v { n++; s += $3 }
-                                                END { if (n) printf "%.3f", s / n; else printf "-" }' "$OUT/scalegt.tmp") |"
-            done
-        done
-        echo "$row"
-        echo
+        copies_table "half double" "half | double |" "---:|---:|"
     fi
 fi
 
