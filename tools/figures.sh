@@ -72,7 +72,8 @@ cross m0plus-os MinSizeRel symline -DSYMLINE_CPU=cortex-m0plus -DSYMLINE_BUILD_F
 cross m4 Release symline_fw_bench -DSYMLINE_CPU=cortex-m4 -DSYMLINE_BUILD_FIRMWARE=ON
 
 # ---- measurements ----
-optional=" colrun features histogram framepoints muff muff_vote muff_extent muff_detect intersections "
+# The optional modules, as the firmware check lists them (not in the core's budget).
+optional=" $(sed -n 's/^optional="\(.*\)"$/\1/p' "$REPO/tools/firmware/check.sh") "
 for o in $(find "$FW-m4-os/lib" -name '*.obj' | sort); do
     arm-none-eabi-size -A "$o" | awk -v f="$(basename "$o" .c.obj)" '$1 ~ /^\.(text|rodata)/ { s += $2 } END { print f, s }'
 done >"$TMP/size"
