@@ -11,7 +11,7 @@
 #   5. 64-bit Arm Linux: cross build, the cmocka tests (golden ones included) under
 #      qemu-user (tools/aarch64/check.sh).
 #   6. fuzzing: every libFuzzer target of tests/fuzz for FUZZ_SECONDS each
-#      (default 20 s; eleven targets, about 4 minutes plus the build).
+#      (default 20 s; twelve targets, about 4 minutes plus the build).
 # Installs what it needs (apt-get, as root) when missing. Every step runs even
 # when an earlier one failed; the exit status is non-zero if any failed. A step
 # that cannot run here (exit status 77) is reported as SKIPPED, not as passed.

@@ -15,7 +15,7 @@ set -u
 cd "$(dirname "$0")/../.." || exit 1
 secs=${1:-20}
 [ $# -gt 0 ] && shift
-targets=${*:-fuzz_pgm fuzz_png fuzz_jpeg fuzz_y4m fuzz_operator fuzz_detect fuzz_field fuzz_muff fuzz_features fuzz_histogram fuzz_intersections}
+targets=${*:-fuzz_pgm fuzz_png fuzz_jpeg fuzz_y4m fuzz_operator fuzz_detect fuzz_field fuzz_muff fuzz_features fuzz_histogram fuzz_intersections fuzz_binning}
 
 have_fuzzer() {
     command -v clang >/dev/null 2>&1 &&
