@@ -16,12 +16,15 @@
 #include "overlay.h"
 #include "segjson.h"
 #include "stageprof.h"
+#include "symline/binning.h"
 #include "symline/intersections.h"
 #include "symline/version.h"
 
 /* Detector memory, sized for the current frame size (sources may change it: replay). */
 typedef struct detector {
     uint32_t width, height;
+    int binned;    /* frames of this size are binned 2x2 (--bin) */
+    uint8_t *half; /* the binned frame */
     void *ws;
     size_t ws_size;
     symline_segment *segs;
@@ -31,14 +34,16 @@ typedef struct detector {
     symline_intersection_result ix;
 } detector;
 
-static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint32_t h)
+static int detector_fit(detector *d, const symline_config *cfg, int bin, uint32_t w, uint32_t h)
 {
     size_t need;
     uint32_t point_cap;
+    const int binned = detopts_bins((detopts_bin)bin, w, h);
     if (d->ws != NULL && d->width == w && d->height == h) {
         return 0;
     }
-    need = symline_detect_workspace_size(w, h, cfg);
+    need = binned ? symline_detect_workspace_size(w / 2u, h / 2u, cfg)
+                  : symline_detect_workspace_size(w, h, cfg);
     if (need == 0) {
         fprintf(stderr, "symline-capture: the detector rejects a %ux%u frame with these settings\n",
                 w, h);
@@ -50,16 +55,19 @@ static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint
     point_cap = detopts_point_cap(w, h);
     free(d->ws);
     free(d->pts);
+    free(d->half);
     d->ws = malloc(need);
     d->pts = malloc((size_t)point_cap * sizeof *d->pts);
+    d->half = binned ? malloc(symline_bin2_size(w, h)) : NULL;
     if (d->segs == NULL) {
         d->segs = malloc(8192u * sizeof *d->segs);
     }
-    if (d->ws == NULL || d->pts == NULL || d->segs == NULL) {
+    if (d->ws == NULL || d->pts == NULL || d->segs == NULL || (binned && d->half == NULL)) {
         fprintf(stderr, "symline-capture: out of memory for the detector\n");
         return -1;
     }
     d->ws_size = need;
+    d->binned = binned;
     d->width = w;
     d->height = h;
     d->res.segments = d->segs;
@@ -71,11 +79,26 @@ static int detector_fit(detector *d, const symline_config *cfg, uint32_t w, uint
     return 0;
 }
 
+/* One detection of img, binned 2x2 first when the detector was fitted so
+ * (the result then in the binned frame's coordinates). */
+static symline_status detect_frame(const detector *d, const symline_config *cfg,
+                                   const symline_image *img, symline_result *res)
+{
+    symline_image half;
+    symline_status st;
+    if (!d->binned) {
+        return symline_detect(img, cfg, d->ws, d->ws_size, res);
+    }
+    st = symline_bin2(img, d->half, symline_bin2_size(img->width, img->height), &half);
+    return st != SYMLINE_OK ? st : symline_detect(&half, cfg, d->ws, d->ws_size, res);
+}
+
 static void detector_free(detector *d)
 {
     free(d->ws);
     free(d->pts);
     free(d->segs);
+    free(d->half);
     memset(d, 0, sizeof *d);
 }
 
@@ -284,7 +307,7 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
             break;
         }
         t_got = capsrc_now_ns();
-        if (detector_fit(&det, o->cfg, frame.width, frame.height) != 0) {
+        if (detector_fit(&det, o->cfg, o->bin, frame.width, frame.height) != 0) {
             stop_reason = "detector setup";
             status = -1;
             break;
@@ -297,9 +320,12 @@ int caploop_run(capsrc *src, const caploop_options *o, const volatile sig_atomic
         if (o->profile) {
             stageprof_begin();
         }
-        st = symline_detect(&img, o->cfg, det.ws, det.ws_size, &det.res);
+        st = detect_frame(&det, o->cfg, &img, &det.res);
         for (rep = 1u; rep < o->repeat && st == SYMLINE_OK; rep++) {
-            st = symline_detect(&img, o->cfg, det.ws, det.ws_size, &det.res);
+            st = detect_frame(&det, o->cfg, &img, &det.res);
+        }
+        if (st == SYMLINE_OK && det.binned) {
+            st = symline_result_unbin2(&det.res, img.width, img.height);
         }
         if (o->profile) {
             stageprof_end(stage_ns);

@@ -28,6 +28,8 @@ typedef struct caploop_options {
     uint32_t repeat;           /* detections per frame, >= 1 (a load test: the records hold
                                   one detection's output and the time of all of them) */
     const symline_config *cfg; /* detector settings */
+    int bin;                   /* detopts_bin (hostio/detopts.h): 2x2 binning before the
+                                  detection, results in the frame's coordinates */
 } caploop_options;
 
 /*

@@ -4,6 +4,8 @@
  */
 #include "detopts.h"
 
+#include "symline/binning.h"
+
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -146,6 +148,16 @@ void detopts_init(detopts *d)
 {
     symline_config_default(&d->cfg);
     d->seen = 0;
+    d->bin = DETOPTS_BIN_AUTO;
+}
+
+int detopts_bins(detopts_bin bin, uint32_t width, uint32_t height)
+{
+    if (symline_bin2_size(width, height) == 0u) {
+        return 0; /* a side below 2 px: nothing to bin */
+    }
+    return bin == DETOPTS_BIN_ON ||
+           (bin == DETOPTS_BIN_AUTO && symline_bin2_advised(width, height));
 }
 
 /* One detector option by name ("--radius") and value; 1 done, 0 not one, -1 bad value. */
@@ -183,6 +195,17 @@ static int apply_named(detopts *d, const char *name, const char *value, char *er
             snprintf(err, errlen, "--field needs drop, keep or off");
             return -1;
         }
+    } else if (strcmp(name, "--bin") == 0) {
+        if (value != NULL && strcmp(value, "auto") == 0) {
+            d->bin = DETOPTS_BIN_AUTO;
+        } else if (value != NULL && strcmp(value, "off") == 0) {
+            d->bin = DETOPTS_BIN_OFF;
+        } else if (value != NULL && strcmp(value, "on") == 0) {
+            d->bin = DETOPTS_BIN_ON;
+        } else {
+            snprintf(err, errlen, "--bin needs auto, off or on");
+            return -1;
+        }
     } else if ((k = opt_index(name)) >= 0) {
         const num_opt *o = &num_opts[k];
         char *field = (char *)&d->cfg + o->offset;
@@ -217,17 +240,19 @@ static int apply_named(detopts *d, const char *name, const char *value, char *er
     return 1;
 }
 
-/* The option names getopt_long sees, without "--": the two word options, then the numeric table. */
+/* The option names getopt_long sees, without "--": the word options, then the numeric table. */
+static const char *const words[] = {"--axis", "--filter", "--field", "--bin"};
+#define NUM_WORDS (sizeof words / sizeof words[0])
+
 static const char *long_name(size_t k)
 {
-    static const char *const words[] = {"--axis", "--filter", "--field"};
-    return (k < 3u ? words[k] : num_opts[k - 3u].name) + 2;
+    return (k < NUM_WORDS ? words[k] : num_opts[k - NUM_WORDS].name) + 2;
 }
 
 size_t detopts_longopts(struct option *out, size_t cap)
 {
     size_t k, n = 0;
-    for (k = 0; k < 3u + NUM_OPTS && n < cap; k++, n++) {
+    for (k = 0; k < NUM_WORDS + NUM_OPTS && n < cap; k++, n++) {
         out[n].name = long_name(k);
         out[n].has_arg = required_argument;
         out[n].flag = NULL;
@@ -239,7 +264,7 @@ size_t detopts_longopts(struct option *out, size_t cap)
 int detopts_apply(detopts *d, int code, const char *arg, char *err, size_t errlen)
 {
     char name[32];
-    if (code < DETOPTS_VAL || code >= DETOPTS_VAL + 3 + (int)NUM_OPTS) {
+    if (code < DETOPTS_VAL || code >= DETOPTS_VAL + (int)(NUM_WORDS + NUM_OPTS)) {
         return 0;
     }
     snprintf(name, sizeof name, "--%s", long_name((size_t)(code - DETOPTS_VAL)));
@@ -317,6 +342,10 @@ void detopts_help(FILE *f)
             "                      field_boundary; drop: line points above it are not\n"
             "                      traced (default); keep: nothing dropped; off: not\n"
             "                      computed\n"
-            "  --field-margin PX   drop keeps points up to PX above the boundary (%u)\n",
-            c.field_margin);
+            "  --field-margin PX   drop keeps points up to PX above the boundary (%u)\n"
+            "  --bin auto|off|on   detect at half size, each pixel the mean of a 2x2 block,\n"
+            "                      coordinates reported in the frame's pixels; auto: frames\n"
+            "                      of %u pixels (1024x768) or more (default). The options\n"
+            "                      in px then count pixels of the half-size frame\n",
+            c.field_margin, SYMLINE_BIN2_ADVISED_PIXELS);
 }

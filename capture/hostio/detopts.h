@@ -14,9 +14,17 @@
 
 #include "symline/detect.h"
 
+/* --bin: 2x2 binning before the detection (symline/binning.h). */
+typedef enum detopts_bin {
+    DETOPTS_BIN_AUTO = 0, /* where symline_bin2_advised() says so (default) */
+    DETOPTS_BIN_OFF = 1,
+    DETOPTS_BIN_ON = 2
+} detopts_bin;
+
 typedef struct detopts {
     symline_config cfg; /* starts at symline_config_default() */
     uint32_t seen;      /* which table options were given (for implied defaults) */
+    detopts_bin bin;    /* --bin */
 } detopts;
 
 /*
@@ -52,6 +60,9 @@ void detopts_finish(detopts *d);
  * for the same frame.
  */
 uint32_t detopts_point_cap(uint32_t width, uint32_t height);
+
+/* Whether a width x height frame is detected binned 2x2 under `bin`. */
+int detopts_bins(detopts_bin bin, uint32_t width, uint32_t height);
 
 /* The option lines of a --help text, with the defaults of this build. */
 void detopts_help(FILE *f);

@@ -148,11 +148,12 @@ check exposure-not-offered no_exposure
 
 # Freshest-frame mode when detection is slower than the camera: vivid grants
 # 12.5 fps at 1280x720 (80 ms a frame); the default detection takes a fraction
-# of that under emulation, so each frame is detected 40 times (--repeat), and
-# frames queue up. Older frames are re-queued unprocessed, frames keep
-# rising, none is handed out twice.
+# of that under emulation, so each frame is detected 40 times (--repeat), at
+# full size (--bin off; binned it costs about half), and frames queue up.
+# Older frames are re-queued unprocessed, frames keep rising, none is handed
+# out twice.
 freshest() {
-    cap --device /dev/video0 --format NV12 --width 1280 --height 720 --fps 30 --buffers 4 --frames 10 --repeat 40 \
+    cap --device /dev/video0 --format NV12 --width 1280 --height 720 --fps 30 --buffers 4 --frames 10 --repeat 40 --bin off \
         >/tmp/f.json 2>/tmp/f.err
     rc=$?; cat /tmp/f.err; [ $rc -eq 0 ] || return 1
     ! grep -q "skipped_stale=0 " /tmp/f.err && grep -q '"skipped": [1-9]' /tmp/f.json && capture-check json /tmp/f.json 10
@@ -160,7 +161,7 @@ freshest() {
 check freshest-frames freshest
 # The same with --all-frames: every frame in order, none skipped.
 all_frames() {
-    cap --device /dev/video0 --format NV12 --width 1280 --height 720 --fps 30 --buffers 4 --frames 10 --repeat 40 --all-frames \
+    cap --device /dev/video0 --format NV12 --width 1280 --height 720 --fps 30 --buffers 4 --frames 10 --repeat 40 --all-frames --bin off \
         >/tmp/a.json 2>/tmp/a.err
     rc=$?; cat /tmp/a.err; [ $rc -eq 0 ] && grep -q "skipped_stale=0 " /tmp/a.err && capture-check json /tmp/a.json 10
 }

@@ -34,6 +34,10 @@ done
 for f in "$data"/cases/*.pgm; do
     vg 0 "$cli" lines --radius 1 "$f"
 done
+# 2x2 binning (--bin on: the default from 1024x768 on), one frame and a folder
+# of frames of different sizes.
+vg 0 "$cli" overlay --bin on "$data/msl_20190606_r2_cam0_20190606_204340.pgm" "$tmp/b.png"
+vg 0 "$cli" lines --bin on "$data"/cases
 # Damaged input takes the error paths (the PNG one leaked).
 echo iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAAAAAA6fptVAAAACklEQVR4nA== | base64 -d >"$tmp/damaged.png"
 printf 'P5\n8 8\n255\nabc' >"$tmp/short.pgm"
@@ -42,6 +46,7 @@ vg 2 "$cli" lines "$tmp/short.pgm"
 vg 2 "$cli" lines /dev/zero
 if [ "$app" != "-" ]; then
     vg 0 "$app" --replay "$data" --summary-every 0 --record 2 "$tmp/rec"
+    vg 0 "$app" --replay "$data" --summary-every 0 --bin on
 fi
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -290,6 +290,7 @@ int app_parse_args(int argc, char **argv, app_options *o)
     }
     detopts_finish(&det);
     o->cfg = det.cfg;
+    o->bin = (int)det.bin;
     if (o->list_devices) {
         return 0;
     }

@@ -36,6 +36,7 @@ typedef struct app_options {
     int profile;        /* --profile: time per detector stage */
     uint32_t repeat;    /* --repeat: detections per frame */
     symline_config cfg; /* detector settings, options as in `symline lines` */
+    int bin;            /* --bin, as in `symline lines` (detopts_bin) */
 } app_options;
 
 #define APP_EXIT_OK 0

@@ -149,6 +149,7 @@ int main(int argc, char **argv)
     lo.profile = o.profile;
     lo.repeat = o.repeat;
     lo.cfg = &o.cfg;
+    lo.bin = o.bin;
     rc = caploop_run(src, &lo, &stop_signal);
     capsrc_close(src);
     return rc == 0 ? APP_EXIT_OK : APP_EXIT_FAIL;

@@ -14,11 +14,13 @@
 #include "segjson.h"
 #include "cli.h"
 #include "muffopts.h"
+#include "symline/binning.h"
 #include "symline/detect.h"
 #include "symline/intersections.h"
 
 typedef struct lines_args {
     symline_config cfg;
+    detopts_bin bin;   /* --bin */
     muffopts method;   /* the tracer (default) or the Muff-space finder */
     cli_inputs in;     /* lines: every input; overlay: exactly one */
     const char *out;   /* overlay: the image */
@@ -150,6 +152,7 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
     }
     detopts_finish(&d);
     a->cfg = d.cfg;
+    a->bin = d.bin;
     if (overlay) {
         if (cli_output_name(argv[0], optind + 1 < argc ? argv[optind + 1] : NULL, out_opt, &a->out) != 0 ||
             cli_inputs_add(&a->in, argv[0], argv[optind]) != 0) {
@@ -176,6 +179,8 @@ static int parse_lines_args(int argc, char **argv, lines_args *a, int overlay)
 typedef struct det_buffers {
     void *ws;
     size_t ws_size;
+    uint8_t *half; /* the binned frame (--bin) */
+    size_t half_size;
     symline_result res;
     symline_intersection items[256];
     symline_intersection_result ix; /* where the lines meet, unless left out */
@@ -201,17 +206,22 @@ static symline_status run_method(const symline_config *cfg, const muffopts *meth
     return st;
 }
 
-/* The detection of one frame, then (icfg not NULL) its intersections. */
-static int detect_one(const char *cmd, const imgio_gray *in, const symline_config *cfg, muffopts *method,
-                      uint32_t repeat, const symline_intersection_config *icfg, det_buffers *b)
+/* The detection of one frame (binned 2x2 first where `bin` says so, the
+ * result moved back to the frame's coordinates), then (icfg not NULL) its
+ * intersections. */
+static int detect_one(const char *cmd, const imgio_gray *in, const symline_config *cfg, detopts_bin bin,
+                      muffopts *method, uint32_t repeat, const symline_intersection_config *icfg,
+                      det_buffers *b)
 {
     uint32_t r;
-    symline_image view;
+    symline_image frame, view;
     symline_status st;
     size_t need;
+    const int binned = detopts_bins(bin, in->width, in->height);
+    const uint32_t vw = binned ? in->width / 2u : in->width, vh = binned ? in->height / 2u : in->height;
     method->mc.min_length = cfg->min_length;
-    need = method->muff ? symline_detect_muff_workspace_size(in->width, in->height, cfg, &method->mc)
-                        : symline_detect_workspace_size(in->width, in->height, cfg);
+    need = method->muff ? symline_detect_muff_workspace_size(vw, vh, cfg, &method->mc)
+                        : symline_detect_workspace_size(vw, vh, cfg);
     const uint64_t pts = 2u * (uint64_t)in->width * in->height + 1024u;
     if (need == 0u) {
         return cli_error("%s: image size or configuration not supported", cmd);
@@ -233,17 +243,31 @@ static int detect_one(const char *cmd, const imgio_gray *in, const symline_confi
         b->res.segment_cap = 8192u;
         b->res.segments = (symline_segment *)malloc(b->res.segment_cap * sizeof(symline_segment));
     }
-    if (b->ws == NULL || b->res.points == NULL || b->res.segments == NULL) {
+    if (binned && symline_bin2_size(in->width, in->height) > b->half_size) {
+        free(b->half);
+        b->half_size = symline_bin2_size(in->width, in->height);
+        b->half = (uint8_t *)malloc(b->half_size);
+    }
+    if (b->ws == NULL || b->res.points == NULL || b->res.segments == NULL || (binned && b->half == NULL)) {
         cli_error("out of memory");
         return CLI_FAIL;
     }
-    view.width = in->width;
-    view.height = in->height;
-    view.stride = in->width;
-    view.data = in->px;
+    frame.width = in->width;
+    frame.height = in->height;
+    frame.stride = in->width;
+    frame.data = in->px;
+    view = frame;
     st = SYMLINE_OK;
     for (r = 0u; r < repeat && st == SYMLINE_OK; r++) {
-        st = run_method(cfg, method, &view, b->ws, b->ws_size, &b->res);
+        if (binned) {
+            st = symline_bin2(&frame, b->half, b->half_size, &view);
+        }
+        if (st == SYMLINE_OK) {
+            st = run_method(cfg, method, &view, b->ws, b->ws_size, &b->res);
+        }
+    }
+    if (st == SYMLINE_OK && binned) {
+        st = symline_result_unbin2(&b->res, in->width, in->height);
     }
     if (st == SYMLINE_OK && icfg != NULL) {
         b->ix.items = b->items;
@@ -307,8 +331,8 @@ static int run_lines(int argc, char **argv, int overlay)
             rc = cli_error("%s", err);
             break;
         }
-        rc = detect_one(argv[0], &in, &a.cfg, &a.method, a.repeat, a.intersections ? &a.icfg : NULL,
-                        &b);
+        rc = detect_one(argv[0], &in, &a.cfg, a.bin, &a.method, a.repeat,
+                        a.intersections ? &a.icfg : NULL, &b);
         if (rc == CLI_OK && json != NULL) {
             rc = write_json(json, json_name, file, &in, &b.res, a.intersections ? &b.ix : NULL);
             if (rc == CLI_OK && errno == EPIPE) {
@@ -328,6 +352,7 @@ static int run_lines(int argc, char **argv, int overlay)
         rc = cli_write_failed(json_name);
     }
     free(b.ws);
+    free(b.half);
     free(b.res.segments);
     free(b.res.points);
     cli_inputs_free(&a.in);

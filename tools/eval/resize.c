@@ -10,6 +10,7 @@
 
 #include "hostopts.h"
 #include "imgio.h"
+#include "symline/binning.h"
 
 static void usage(FILE *f)
 {
@@ -37,20 +38,6 @@ static const struct option longopts[] = {{"help", no_argument, NULL, HOSTOPTS_HE
                                          {"double", no_argument, NULL, OPT_DOUBLE},
                                          {"gt", no_argument, NULL, OPT_GT},
                                          {NULL, 0, NULL, 0}};
-
-/* out: (w / 2) x (h / 2). */
-static void half(const uint8_t *in, uint32_t w, uint32_t h, uint8_t *out)
-{
-    const uint32_t ow = w / 2u, oh = h / 2u;
-    uint32_t x, y;
-    for (y = 0; y < oh; y++) {
-        const uint8_t *a = in + (size_t)2u * y * w, *b = a + w;
-        for (x = 0; x < ow; x++) {
-            out[(size_t)y * ow + x] =
-                (uint8_t)((a[2u * x] + a[2u * x + 1u] + b[2u * x] + b[2u * x + 1u] + 2u) / 4u);
-        }
-    }
-}
 
 /* Input index and weights (of 4) of output index o along an axis of n:
  * o = 2i samples 3/4 of i and 1/4 of i - 1, o = 2i + 1 3/4 of i and 1/4
@@ -199,7 +186,16 @@ int main(int argc, char **argv)
         return 1;
     }
     if (mode == OPT_HALF) {
-        half(img.px, img.width, img.height, out);
+        /* The library's 2x2 binning (symline/binning.h), as `symline lines --bin`. */
+        const symline_image in = {img.width, img.height, img.width, img.px};
+        symline_image half;
+        const symline_status st = symline_bin2(&in, out, (size_t)ow * oh, &half);
+        if (st != SYMLINE_OK) {
+            fprintf(stderr, "%s: %s\n", PROG, symline_status_str(st));
+            imgio_free(&img);
+            free(out);
+            return 1;
+        }
     } else {
         twice(img.px, img.width, img.height, out);
     }
