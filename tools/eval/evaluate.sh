@@ -107,8 +107,8 @@ fi
 # ---- detection: one JSON per image and filter (pairs "IMAGE JSON" per filter) ----
 rm -rf "$OUT/det"
 for f in $FILTERS; do : > "$OUT/detect.$f.todo"; done
-add_job() { # IMAGE JSON FILTER
-    echo "$1 $2" >> "$OUT/detect.$3.todo"
+add_job() { # IMAGE JSON FILTER [BINNING]: BINNING --bin=off, else the default
+    echo "$1 $2 ${4:---bin=auto}" >> "$OUT/detect.$3.todo"
 }
 GIVEN=$DATA/synth
 set_dirs=
@@ -150,10 +150,15 @@ if [ -d "$FIELD" ]; then
             # with the ground truth moved along (the scale table).
             "$BIN/symline-resize" --half --gt "$img" "$TR/$name.half.pgm"
             "$BIN/symline-resize" --double --gt "$img" "$TR/$name.double.pgm"
+            # The double size also without the 2x2 binning that is its default.
+            for k in lines arcs dontcare; do
+                [ -f "$TR/$name.double.$k.txt" ] && cp "$TR/$name.double.$k.txt" "$TR/$name.double-nobin.$k.txt"
+            done
             for f in $FILTERS; do
                 for v in half double; do
                     add_job "$TR/$name.$v.pgm" "$OUT/det/$f/field/$name.$v.json" "$f"
                 done
+                add_job "$TR/$name.double.pgm" "$OUT/det/$f/field/$name.double-nobin.json" "$f" --bin=off
             done
         fi
         "$BIN/symline-bright" --mul 0.5 "$img" "$TR/$name.x0.5.pgm"
@@ -174,10 +179,10 @@ for f in $FILTERS; do
     [ "$f" = default ] || fo="--filter $f"
     # A failed run is scored as "no detections" and counted below.
     # shellcheck disable=SC2016
-    SYMLINE="$BIN/symline" LINES_OPTS="$fo $OPTS" xargs -P "$JOBS" -n 2 sh -c '
+    SYMLINE="$BIN/symline" LINES_OPTS="$fo $OPTS" xargs -P "$JOBS" -n 3 sh -c '
         mkdir -p "$(dirname "$1")"
         # shellcheck disable=SC2086
-        if "$SYMLINE" lines $LINES_OPTS "$0" > "$1.tmp" 2> "$1.err"; then
+        if "$SYMLINE" lines "$2" $LINES_OPTS "$0" > "$1.tmp" 2> "$1.err"; then
             mv "$1.tmp" "$1"
         else
             echo "{\"segments\": []}" > "$1"
@@ -495,9 +500,11 @@ if [ -n "$FRAMES" ]; then
         echo
         echo "The same frames at half and at twice their size (\`symline-resize --half\` and"
         echo "\`--double\`: 2x2 means, bilinear), the ground truth moved along; the scorer's"
-        echo "tolerance follows the width. The defaults were chosen on frames 608-800 px wide."
+        echo "tolerance follows the width. The defaults were chosen on frames 608-800 px wide;"
+        echo "frames of 1024x768 pixels and more are detected binned 2x2 by default (\`--bin\`),"
+        echo "the last column without."
         echo
-        copies_table "half double" "half | double |" "---:|---:|"
+        copies_table "half double double-nobin" "half | double | double, --bin off |" "---:|---:|---:|"
     fi
 fi
 
