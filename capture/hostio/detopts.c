@@ -346,6 +346,6 @@ void detopts_help(FILE *f)
             "  --bin auto|off|on   detect at half size, each pixel the mean of a 2x2 block,\n"
             "                      coordinates reported in the frame's pixels; auto: frames\n"
             "                      of %u pixels (1024x768) or more (default). The options\n"
-            "                      in px then count pixels of the half-size frame\n",
+            "                      in px then count pixels of the half-size frame.\n",
             c.field_margin, SYMLINE_BIN2_ADVISED_PIXELS);
 }
