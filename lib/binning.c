@@ -5,8 +5,8 @@
  */
 #include "symline/binning.h"
 
-/* Segment coordinates (Q8) that double without overflow: +-2^29, far beyond
- * any frame (SYMLINE_MAX_DIM px is below 2^24 in Q8). */
+/* Segment coordinates (Q8) small enough to be multiplied by two in 32 bits:
+ * +-2^29, far beyond any frame (SYMLINE_MAX_DIM px is below 2^24 in Q8). */
 #define SL_BIN_Q8_LIMIT (INT32_C(1) << 29)
 
 bool symline_bin2_advised(uint32_t width, uint32_t height)
