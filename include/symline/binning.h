@@ -6,8 +6,9 @@
  * scales, min_length, the field boundary's cells) suit frames of about
  * 320..800 px across. A frame of a million pixels or more shows the same
  * field lines twice as wide and the carpet's grain twice as coarse: it is
- * detected better, and in a quarter of the time, at half size. These three
- * steps do that around symline_detect():
+ * detected better, and in about half the time (the binning included;
+ * docs/RESULTS.md, "Large frames"), at half size. These three steps do that
+ * around symline_detect():
  *
  *     if (symline_bin2_advised(w, h)) {
  *         symline_image half;
