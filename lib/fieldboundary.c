@@ -17,8 +17,12 @@
  *    the drift with distance) scores +1; a brighter cell (a line) 0; a
  *    carpet-textured cell of another brightness (a shadow's or a sunlit
  *    patch's edge; the running mean follows the step), or one of the
- *    carpet's brightness without its grain, -1; any other -miss_cost. The top
- *    of the best-scoring run is the column's top. A long run of cells that
+ *    carpet's brightness without its grain, -1; any other -miss_cost (10 by
+ *    default: one such cell outweighs ten of carpet, so a column stops at
+ *    the boards or a wall band instead of climbing on into a ceiling whose
+ *    gray and grain pass for carpet; a robot on the field stops it too low,
+ *    which step 4's hull bridges). The top of the best-scoring run is the
+ *    column's top. A long run of cells that
  *    are neither carpet nor bright (the boards' dark foot, people, a wall
  *    band) ends the column's scan for good, so a ceiling that looks like
  *    carpet is never reached.
@@ -50,7 +54,7 @@ void symline_field_config_default(symline_field_config *fc)
     fc->mean_tol = 16u;
     fc->tex_lo_pct = 25u;
     fc->tex_hi_pct = 150u;
-    fc->miss_cost = 2u;
+    fc->miss_cost = 10u;
     fc->local_tol = 16u;
     fc->gap_pct = 12u;
     fc->support = 3u;

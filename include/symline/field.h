@@ -98,7 +98,12 @@ typedef struct symline_field_config {
                             the running mean follows the step) or of the
                             carpet's brightness without its grain -1, and any
                             other cell -miss_cost. The top of the best-scoring
-                            run is the column's top, 1..16; default 2 */
+                            run is the column's top. A high cost stops a column
+                            at the first band that is not field (the boards, a
+                            wall) rather than let it climb on to a ceiling that
+                            looks like carpet: the hull bridges a column that
+                            stops too low, never one that climbs too high,
+                            1..16; default 10 */
     uint32_t gap_pct;        /* a column's scan ends for good after this % of the
                             grid rows in a row that are neither carpet nor
                             bright (a barrier: the boards, a wall band; what lies
