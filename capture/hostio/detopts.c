@@ -160,6 +160,20 @@ int detopts_bins(detopts_bin bin, uint32_t width, uint32_t height)
            (bin == DETOPTS_BIN_AUTO && symline_bin2_advised(width, height));
 }
 
+int detopts_bin_parse(const char *value, detopts_bin *bin)
+{
+    if (value != NULL && strcmp(value, "auto") == 0) {
+        *bin = DETOPTS_BIN_AUTO;
+    } else if (value != NULL && strcmp(value, "off") == 0) {
+        *bin = DETOPTS_BIN_OFF;
+    } else if (value != NULL && strcmp(value, "on") == 0) {
+        *bin = DETOPTS_BIN_ON;
+    } else {
+        return -1;
+    }
+    return 0;
+}
+
 /* One detector option by name ("--radius") and value; 1 done, 0 not one, -1 bad value. */
 static int apply_named(detopts *d, const char *name, const char *value, char *err, size_t errlen)
 {
@@ -196,13 +210,7 @@ static int apply_named(detopts *d, const char *name, const char *value, char *er
             return -1;
         }
     } else if (strcmp(name, "--bin") == 0) {
-        if (value != NULL && strcmp(value, "auto") == 0) {
-            d->bin = DETOPTS_BIN_AUTO;
-        } else if (value != NULL && strcmp(value, "off") == 0) {
-            d->bin = DETOPTS_BIN_OFF;
-        } else if (value != NULL && strcmp(value, "on") == 0) {
-            d->bin = DETOPTS_BIN_ON;
-        } else {
+        if (detopts_bin_parse(value, &d->bin) != 0) {
             snprintf(err, errlen, "--bin needs auto, off or on");
             return -1;
         }

@@ -64,6 +64,10 @@ uint32_t detopts_point_cap(uint32_t width, uint32_t height);
 /* Whether a width x height frame is detected binned 2x2 under `bin`. */
 int detopts_bins(detopts_bin bin, uint32_t width, uint32_t height);
 
+/* --bin's value ("auto", "off", "on") into *bin; 0, or -1 (NULL or another
+ * word: *bin unchanged). */
+int detopts_bin_parse(const char *value, detopts_bin *bin);
+
 /* The option lines of a --help text, with the defaults of this build. */
 void detopts_help(FILE *f);
 

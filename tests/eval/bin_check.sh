@@ -6,7 +6,8 @@
 # their binned detections lie on the doubled ground truth; below the advised
 # size the default output is the unbinned one, byte for byte; the capture
 # loop (CAPTURE: symline-capture, or - where it is not built) bins as the
-# CLI does: the same segments, boundary and intersections.
+# CLI does: the same segments, boundary and intersections; `symline
+# boundary` bins as `symline lines` does and reports the same boundary.
 #   bin_check.sh SYMLINE SYMLINE_RESIZE SYMLINE_SCORE DATA WORKDIR [CAPTURE]
 set -eu
 case ${1:-} in
@@ -24,6 +25,8 @@ f1() { "$score" gt "$1" "$2" | head -n 1 | tr ' ' '\n' | sed -n 's/^f1=//p'; }
 # detection JSON: from the first "segments" key on, without blanks (the
 # capture records fold the same writer's output onto one line).
 detection() { tr -d ' \n' < "$1" | awk '{ i = index($0, "\"segments\":"); print substr($0, i) }'; }
+# the field boundary's vertices of either command's JSON.
+boundary() { tr -d ' \n' < "$1" | sed -n 's/.*"field_boundary":\(\[[][0-9,-]*\]\).*/\1/p'; }
 
 n=0
 for gt in "$data"/*.lines.txt; do
@@ -38,6 +41,15 @@ for gt in "$data"/*.lines.txt; do
     "$symline" lines --bin on "$d/$name.pgm" > "$d/$name.x2on.json"
     cmp -s "$d/$name.x2.json" "$d/$name.x2on.json" || fail "$name: the default does not bin a 1216x1600 frame"
     "$symline" lines --bin off "$d/$name.pgm" > "$d/$name.x2off.json"
+    for b in auto off; do
+        "$symline" boundary --bin "$b" "$d/$name.pgm" > "$d/$name.b$b.json"
+        json=$d/$name.x2.json
+        [ "$b" = auto ] || json=$d/$name.x2off.json
+        v=$(boundary "$d/$name.b$b.json")
+        [ -n "$v" ] || fail "$name: no field_boundary from symline boundary --bin $b"
+        [ "$v" = "$(boundary "$json")" ] ||
+            fail "$name: symline boundary --bin $b and symline lines differ on the 1216x1600 frame"
+    done
     on=$(f1 "$d/$name" "$d/$name.x2.json")
     off=$(f1 "$d/$name" "$d/$name.x2off.json")
     echo "$name at twice its size: F1 binned $on, unbinned $off"
@@ -51,4 +63,5 @@ for gt in "$data"/*.lines.txt; do
 done
 [ "$n" -ge 2 ] || fail "only $n annotated frames in $data"
 if "$symline" lines --bin sometimes "$data/$name.pgm" >/dev/null 2>&1; then fail "--bin took a bad value"; fi
+if "$symline" boundary --bin sometimes "$data/$name.pgm" >/dev/null 2>&1; then fail "boundary --bin took a bad value"; fi
 echo "bin_check: ok"

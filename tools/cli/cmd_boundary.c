@@ -11,6 +11,7 @@
 #include "imgio.h"
 #include "overlay.h"
 #include "cli.h"
+#include "symline/binning.h"
 #include "symline/detect.h"
 #include "symline/field.h"
 
@@ -55,7 +56,11 @@ static void boundary_usage(FILE *f)
         fprintf(f, "  %-14s N  %s (default %u)\n", FB_OPTS[i].name, FB_OPTS[i].help,
                 *fb_field(&fc, FB_OPTS[i].off));
     }
-    fprintf(f, "  IN                binary PGM or PNG (colour is converted to luma)\n"
+    fprintf(f, "  --bin auto|off|on  find it at half size, each pixel the mean of a 2x2\n"
+               "                    block, vertices in the frame's pixels; auto: frames of\n"
+               "                    786432 pixels (1024x768) or more, as symline lines does\n"
+               "                    (default)\n"
+               "  IN                binary PGM or PNG (colour is converted to luma)\n"
                "  OUT.png           the frame with the boundary drawn in yellow\n"
                "Prints {\"width\": W, \"height\": H, \"cell\": N, \"carpet_mean\": G,\n"
                "\"field_boundary\": [[x, y], ...]} (docs/format.md): rows at and below the\n"
@@ -72,13 +77,15 @@ int cmd_boundary(int argc, char **argv)
     symline_image view;
     symline_result res;
     char err[512];
-    size_t need;
+    size_t need, half = 0u;
     void *ws;
-    symline_status st;
+    uint8_t *buf = NULL;
+    symline_status st = SYMLINE_OK;
+    detopts_bin bin = DETOPTS_BIN_AUTO;
     symline_field_config_default(&fc);
     {
         /* getopt_long over the table: --opt N and --opt=N, -- ends the options. */
-        struct option longopts[FB_NOPTS + 2];
+        struct option longopts[FB_NOPTS + 3];
         int c;
         size_t k;
         for (k = 0; k < FB_NOPTS; k++) {
@@ -88,12 +95,19 @@ int cmd_boundary(int argc, char **argv)
             longopts[k].val = 0x100 + (int)k;
         }
         longopts[FB_NOPTS] = (struct option){"help", no_argument, NULL, 'h'};
-        longopts[FB_NOPTS + 1] = (struct option){NULL, 0, NULL, 0};
+        longopts[FB_NOPTS + 1] = (struct option){"bin", required_argument, NULL, 'b'};
+        longopts[FB_NOPTS + 2] = (struct option){NULL, 0, NULL, 0};
         optind = 1;
         while ((c = cli_getopt(argc, argv, ":h", longopts)) != -1) {
             if (c == 'h') {
                 boundary_usage(stdout);
                 return CLI_OK;
+            }
+            if (c == 'b') {
+                if (detopts_bin_parse(optarg, &bin) != 0) {
+                    return cli_error("%s: --bin needs auto, off or on", argv[0]);
+                }
+                continue;
             }
             if (c < 0x100 || c >= 0x100 + (int)FB_NOPTS) {
                 return CLI_USAGE;
@@ -122,18 +136,37 @@ int cmd_boundary(int argc, char **argv)
     view.height = in.height;
     view.stride = in.width;
     view.data = in.px;
-    need = symline_field_workspace_size(in.width, in.height, &fc);
+    if (detopts_bins(bin, in.width, in.height)) {
+        /* As `symline lines`: found on the binned frame, moved back into the
+         * frame's pixels, so both report the same boundary. */
+        const symline_image frame = view;
+        half = symline_bin2_size(in.width, in.height);
+        buf = malloc(half);
+        if (buf == NULL) {
+            imgio_free(&in);
+            return cli_error("out of memory");
+        }
+        st = symline_bin2(&frame, buf, half, &view);
+    }
+    need = st == SYMLINE_OK ? symline_field_workspace_size(view.width, view.height, &fc) : 1u;
     if (need == 0u) {
+        free(buf);
         imgio_free(&in);
         return cli_error("%s: --cell must be a power of two", argv[0]);
     }
     memset(&res, 0, sizeof res);
     ws = malloc(need);
     if (ws == NULL) {
+        free(buf);
         imgio_free(&in);
         return cli_error("out of memory");
     }
-    st = symline_field_find(&view, &fc, ws, need, &res.field);
+    if (st == SYMLINE_OK) {
+        st = symline_field_find(&view, &fc, ws, need, &res.field);
+    }
+    if (st == SYMLINE_OK && buf != NULL) {
+        st = symline_result_unbin2(&res, in.width, in.height);
+    }
     if (st != SYMLINE_OK) {
         cli_error("%s: %s", argv[0], symline_status_str(st));
         rc = CLI_FAIL;
@@ -156,6 +189,7 @@ int cmd_boundary(int argc, char **argv)
         }
     }
     free(ws);
+    free(buf);
     imgio_free(&in);
     return rc;
 }
