@@ -77,10 +77,10 @@ int cmd_boundary(int argc, char **argv)
     symline_image view;
     symline_result res;
     char err[512];
-    size_t need, half = 0u;
+    size_t need;
     void *ws;
     uint8_t *buf = NULL;
-    symline_status st = SYMLINE_OK;
+    symline_status st;
     detopts_bin bin = DETOPTS_BIN_AUTO;
     symline_field_config_default(&fc);
     {
@@ -140,15 +140,21 @@ int cmd_boundary(int argc, char **argv)
         /* As `symline lines`: found on the binned frame, moved back into the
          * frame's pixels, so both report the same boundary. */
         const symline_image frame = view;
-        half = symline_bin2_size(in.width, in.height);
+        const size_t half = symline_bin2_size(in.width, in.height);
         buf = malloc(half);
         if (buf == NULL) {
             imgio_free(&in);
             return cli_error("out of memory");
         }
         st = symline_bin2(&frame, buf, half, &view);
+        if (st != SYMLINE_OK) {
+            cli_error("%s: %s", argv[0], symline_status_str(st));
+            free(buf);
+            imgio_free(&in);
+            return CLI_FAIL;
+        }
     }
-    need = st == SYMLINE_OK ? symline_field_workspace_size(view.width, view.height, &fc) : 1u;
+    need = symline_field_workspace_size(view.width, view.height, &fc);
     if (need == 0u) {
         free(buf);
         imgio_free(&in);
@@ -161,9 +167,7 @@ int cmd_boundary(int argc, char **argv)
         imgio_free(&in);
         return cli_error("out of memory");
     }
-    if (st == SYMLINE_OK) {
-        st = symline_field_find(&view, &fc, ws, need, &res.field);
-    }
+    st = symline_field_find(&view, &fc, ws, need, &res.field);
     if (st == SYMLINE_OK && buf != NULL) {
         st = symline_result_unbin2(&res, in.width, in.height);
     }
