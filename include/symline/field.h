@@ -108,7 +108,12 @@ typedef struct symline_field_config {
                             grid rows in a row that are neither carpet nor
                             bright (a barrier: the boards, a wall band; what lies
                             above it is not field even where it looks like
-                            carpet); 0 = never, 0..100; default 12 */
+                            carpet). When that leaves fewer than half the
+                            columns with any carpet (a darkened fisheye frame,
+                            its black rim taller than a barrier), the scan runs
+                            again with black cells free in the lowest
+                            gap_pct / 2 % of the rows below a column's first
+                            carpet; 0 = never, 0..100; default 12 */
     uint32_t support;        /* a column's top counts as high as the support-th
                             highest top within `support` columns either side, so
                             narrower patches that look like carpet (a net, a

@@ -3,8 +3,8 @@
  * The field boundary (symline/field.h) on hand-made frames with known
  * answers: a boundary at a known row, at a known slant, bent once by a field
  * corner, with legs and a robot cutting into the carpet, with shadow stripes
- * and a thick line on it; a carpet clipped to black; degenerate frames;
- * argument errors and workspace bounds.
+ * and a thick line on it; a carpet clipped to black; a lens's black rim;
+ * degenerate frames; argument errors and workspace bounds.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -244,6 +244,23 @@ static void test_black_carpet(void **state)
     free(px);
 }
 
+/* A darkened frame through a fisheye lens: its black rim and the dimmed
+ * carpet beside it fill the lowest four grid rows, more than a barrier (three
+ * of the frame's 30 rows), so every column's scan ends in them. The rim is
+ * taken as free below the carpet (the lowest half barrier's rows) and the
+ * scan runs again: the boundary lies at the known row, not at the bottom. */
+static void test_black_rim(void **state)
+{
+    symline_field_boundary b;
+    uint8_t *px = make_field(top_row);
+    (void)state;
+    memset(px + (size_t)(H - 32u) * W, 0, (size_t)32u * W);
+    assert_int_equal(find(px, W, H, &b), SYMLINE_OK);
+    check_form(&b, W, H);
+    check_near(&b, top_row, 8, 8);
+    free(px);
+}
+
 /* Uniform frames (all white, all black) and tiny ones must not fail; a
  * uniform frame is one carpet-like region, so nothing lies above it. */
 static void test_degenerate(void **state)
@@ -451,6 +468,7 @@ int main(void)
         cmocka_unit_test(test_known_row),       cmocka_unit_test(test_known_slant),
         cmocka_unit_test(test_corner),          cmocka_unit_test(test_occluders_and_light),
         cmocka_unit_test(test_all_carpet),      cmocka_unit_test(test_black_carpet),
+        cmocka_unit_test(test_black_rim),
         cmocka_unit_test(test_degenerate),      cmocka_unit_test(test_query),
         cmocka_unit_test(test_errors),          cmocka_unit_test(test_detector_drops_above),
         cmocka_unit_test(test_detector_config),
