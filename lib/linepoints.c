@@ -258,6 +258,9 @@ typedef struct lp_ctx {
     bool lanes;             /* the lanes decide this pass's interior candidates (m = 3) */
     bool lanes_row;         /* ... and those of the row at hand */
 #endif
+#ifdef SYMLINE_PORT_CAND_DOWN
+    uint64_t plateau; /* symline_i_cand_down()'s plateaus among c->cand */
+#endif
 } lp_ctx;
 
 /* In the speed builds each decision is copied into its callers (one copy per
@@ -379,24 +382,32 @@ static SL_ALWAYS_INLINE uint32_t s_point(lp_ctx *c, uint32_t x, bool along)
     return s;
 }
 
-#ifdef SYMLINE_PORT_S_ALONG3
-/* Of the ks candidates cand[0 ..] along a row that symline_i_s_along3_keep()
- * kept, those of the set bits of plateau lie beside a run of equal
+#if defined(SYMLINE_PORT_S_ALONG3) || defined(SYMLINE_PORT_CAND_DOWN)
+/* Of the ks candidates cand[0 ..] that a port's decision kept
+ * (symline_i_s_along3_keep() along a row, symline_i_cand_down() down the
+ * columns), those of the set bits of plateau lie beside a run of equal
  * energies: the run rule decides them (extremum_at()). Keeps the S points
  * in cand[0 ..], returns how many. Rare: apart from the batch's loop. */
-SL_NOINLINE static uint32_t plateaus_along(lp_ctx *c, uint32_t ks, uint64_t plateau)
+SL_NOINLINE static uint32_t plateaus(lp_ctx *c, uint32_t ks, uint64_t plateau, bool along)
 {
     uint32_t i, kept = 0u;
     for (i = 0; i < ks; i++) {
         const uint32_t x = c->cand[i];
         c->cand[kept] = (uint16_t)x;
-        kept += ((plateau >> i) & 1u) == 0u ? 1u : (uint32_t)extremum_at(&c->l, x, true);
+        if (((plateau >> i) & 1u) == 0u) {
+            kept++;
+            continue;
+        }
+        if (!along) {
+            c->l.c0 = c->c + x; /* down column x from row y */
+        }
+        kept += (uint32_t)extremum_at(&c->l, along ? x : c->y, true);
     }
     return kept;
 }
 #endif
 
-#if SL_LP_LANES
+#if SL_LP_LANES && !defined(SYMLINE_PORT_CAND_DOWN)
 /* s_point() down the columns, for the few candidates decided one at a time:
  * apart, so that the blocks' loop keeps its state in registers. */
 SL_NOINLINE static uint32_t s_point_down(lp_ctx *c, uint32_t x)
@@ -423,13 +434,8 @@ SL_NOINLINE static uint32_t s3_down(const uint8_t *p, ptrdiff_t st)
 
 /* Candidates within one block of lanes that make it worth its cost, about
  * that of this many candidates decided one at a time (callgrind, ex01 and
- * field frames down the columns): 2 for a port's block of 8, 4 for the
- * portable block of 16. */
-#ifdef SYMLINE_PORT_LANES_DOWN
-#define SL_LP_BLOCK_MIN 2u
-#else
+ * field frames down the columns, the portable block of 16). */
 #define SL_LP_BLOCK_MIN 4u
-#endif
 
 /* The exact gray test and the S decision of candidates cand[0..k-1] of a
  * row down the columns (x = cand[i]): the S points' x to cand[0 ..],
@@ -465,6 +471,13 @@ static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
         ks += s;
     }
     return ks;
+}
+#elif SL_LP_LANES
+/* The S points among the kept entries cand[0..k-1] of symline_i_cand_down()
+ * (decide_row()), to cand[0 ..]: returns how many. */
+static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
+{
+    return c->plateau != 0u ? plateaus(c, k, c->plateau, false) : k;
 }
 #endif
 
@@ -515,7 +528,7 @@ static SL_ALWAYS_INLINE void decide_batch(lp_ctx *c, uint32_t k, bool along)
             uint64_t plateau;
             ks = symline_i_s_along3_keep(c->c, cand, kg, &plateau);
             if (plateau != 0u) {
-                ks = plateaus_along(c, ks, plateau);
+                ks = plateaus(c, ks, plateau, true);
             }
         } else
 #endif
@@ -586,6 +599,16 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         c->lanes_row = c->lanes && !along && c->y >= 4u && c->y + 4u < c->l.n;
 #endif
         while (at < len) {
+#ifdef SYMLINE_PORT_CAND_DOWN
+            if (c->lanes_row) {
+                /* the byte test and the decision in one pass */
+                decide_batch(c,
+                             symline_i_cand_down(pf, &c->lg, ic, ilo, ihi, c->l.step, at, len,
+                                                 c->cand, &c->plateau, &at),
+                             along);
+                continue;
+            }
+#endif
             decide_batch(c, symline_i_line_cand(pf, ic, ilo, ihi, at, len, c->cand, &at), along);
         }
         if (along) { /* the right border */

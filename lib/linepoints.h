@@ -110,15 +110,10 @@ symline_status symline_i_collect(const symline_image *img, const symline_i_pass 
  * row down the columns at radius m = 3 (k = 4), for the candidates of the
  * byte test (linefilter.h) among them: the rest of the exact gray test, the
  * energies E(y-1), E(y), E(y+1) and the S decision (linepoints.c, speed
- * builds with vector lanes). Eight with a port's version (one step of
- * x86/linepoints_sse2.c; the candidates of a block are few), else sixteen:
- * the compiler vectorises the byte lanes of the portable loop at 16.
+ * builds with vector lanes): sixteen, the compiler vectorises the byte
+ * lanes of the portable loop at 16.
  */
-#ifdef SYMLINE_PORT_LANES_DOWN
-#define SL_LANES_DOWN 8u
-#else
 #define SL_LANES_DOWN 16u
-#endif
 
 /* What symline_i_linefilter_gray() asks beyond the byte test, for 16-bit
  * lanes. The byte test is exact on min_gray <= 255 and side_max; of the
@@ -182,10 +177,8 @@ static inline uint8_t symline_i_lane_code(int32_t up, int32_t e, int32_t dn, uin
  * The codes (symline_i_lane_code()) of the SL_LANES_DOWN entries r[0 ..]
  * of a row whose columns run down r[i + j st], j = -4 .. 4, to code[0 ..]:
  * three energies per entry in a loop over the entries that the compiler
- * vectorises. symline_i_lanes_down_c() is the portable reference;
- * symline_i_lanes_down() the build's choice: a version from port/
- * (SYMLINE_PORT_LANES_DOWN, CMake option SYMLINE_SIMD) with the same
- * codes, or the reference.
+ * vectorises: the detector's speed builds with vector lanes and no
+ * symline_i_cand_down() of a port use it (linepoints.c).
  */
 static inline void symline_i_lanes_down_c(const uint8_t *r, ptrdiff_t st,
                                           const symline_i_lane_gray *g, uint8_t *restrict code)
@@ -208,11 +201,63 @@ static inline void symline_i_lanes_down_c(const uint8_t *r, ptrdiff_t st,
         code[i] = symline_i_lane_code(up, e, dn, p0[i], m4[i], p4[i], &gl);
     }
 }
-#ifdef SYMLINE_PORT_LANES_DOWN
-void symline_i_lanes_down(const uint8_t *r, ptrdiff_t st, const symline_i_lane_gray *g,
-                          uint8_t *code);
-#else
 #define symline_i_lanes_down symline_i_lanes_down_c
+
+/* The code (symline_i_lane_code()) of entry r[0] of a row whose column runs
+ * down r[j st], j = -4 .. 4: one entry of symline_i_lanes_down_c(). */
+static inline uint8_t symline_i_lane_code_down(const uint8_t *r, ptrdiff_t st,
+                                               const symline_i_lane_gray *g)
+{
+    const int32_t up = (int32_t)symline_i_lane_energy(
+        symline_i_lane_absdiff(r[-2 * st], r[0]), symline_i_lane_absdiff(r[-3 * st], r[st]),
+        symline_i_lane_absdiff(r[-4 * st], r[2 * st]));
+    const int32_t e = (int32_t)symline_i_lane_energy(symline_i_lane_absdiff(r[-st], r[st]),
+                                                     symline_i_lane_absdiff(r[-2 * st], r[2 * st]),
+                                                     symline_i_lane_absdiff(r[-3 * st], r[3 * st]));
+    const int32_t dn = (int32_t)symline_i_lane_energy(
+        symline_i_lane_absdiff(r[0], r[2 * st]), symline_i_lane_absdiff(r[-st], r[3 * st]),
+        symline_i_lane_absdiff(r[-2 * st], r[4 * st]));
+    return symline_i_lane_code(up, e, dn, r[0], r[-4 * st], r[4 * st], g);
+}
+
+/*
+ * The byte test (symline_i_line_cand_c(), linefilter.h) and the codes of
+ * the entries that pass it, in one call, for a row whose columns run down
+ * c[x + j st], j = -4 .. 4 (each entry that passes the byte test, rows
+ * y - 4 .. y + 4 in the frame), sides lo[], hi[] as for the byte test: of
+ * entries x .. n-1, those that pass and whose code (symline_i_lane_code())
+ * is not 0 go to out[0 ..] in order (at most SL_LINE_CAND_MAX), returns
+ * how many; bit i of *plateau set where kept entry i has code 2; *next:
+ * where to go on (n: the row is done; the call stops early when out may
+ * fill). symline_i_cand_down_c() is the portable reference (test only);
+ * a port's version (SYMLINE_PORT_CAND_DOWN, CMake option SYMLINE_SIMD)
+ * decides the byte test's entries in groups from its masks, with no list
+ * of candidates in between, and the detector's speed builds with it use it
+ * down the columns (linepoints.c).
+ */
+static inline uint32_t symline_i_cand_down_c(const symline_i_prefilter *pf,
+                                             const symline_i_lane_gray *g, const uint8_t *c,
+                                             const uint8_t *lo, const uint8_t *hi, ptrdiff_t st,
+                                             uint32_t x, uint32_t n, uint16_t *out,
+                                             uint64_t *plateau, uint32_t *next)
+{
+    const uint32_t k = symline_i_line_cand_c(pf, c, lo, hi, x, n, out, next);
+    uint32_t i, kept = 0u;
+    uint64_t pl = 0u;
+    for (i = 0; i < k; i++) {
+        const uint32_t code = symline_i_lane_code_down(c + out[i], st, g);
+        out[kept] = out[i];
+        pl |= (uint64_t)(code >> 1) << kept;
+        kept += code != 0u ? 1u : 0u;
+    }
+    *plateau = pl;
+    return kept;
+}
+#ifdef SYMLINE_PORT_CAND_DOWN
+uint32_t symline_i_cand_down(const symline_i_prefilter *pf, const symline_i_lane_gray *g,
+                             const uint8_t *c, const uint8_t *lo, const uint8_t *hi, ptrdiff_t st,
+                             uint32_t x, uint32_t n, uint16_t *out, uint64_t *plateau,
+                             uint32_t *next);
 #endif
 
 /*

@@ -1,19 +1,22 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /*
- * The line points' decision of a block of entries down the columns
- * (lib/linepoints.h) with SSE2 intrinsics (x86-64 baseline), selected at
- * build time (CMake option SYMLINE_SIMD, port/CMakeLists.txt) in place of
- * the portable lane loop, with the same codes
+ * The line points' decision of a row's candidates down the columns and
+ * along a row (lib/linepoints.h) with SSE2 intrinsics (x86-64 baseline),
+ * selected at build time (CMake option SYMLINE_SIMD, port/CMakeLists.txt)
+ * in place of the portable references, with the same result
  * (tests/core/test_linepoints_simd.c compares them):
  *
- * symline_i_lanes_down() for symline_i_lanes_down_c(): the block's eight
- * entries (SL_LANES_DOWN with this port) in 16-bit lanes. The energy
- * 3 d1^2 + 2 d2^2 + d3^2 is two pmaddwd per four entries, squares of
- * (d1, d2) and (d1, d3) summed in pairs: the compiler's version of
- * the lane loop widens every product to 32 bits on its own (pmullw,
- * pmulhuw, two unpacks) and, with sixteen entries in 32-bit lanes, spills
- * registers; with eight it does not vectorise the byte loads. Blocks of
- * eight waste fewer lanes on entries that are no candidates.
+ * symline_i_cand_down() for symline_i_cand_down_c(): the byte test 64
+ * entries a step (x86/bytetest_sse2.h), then for each group of eight
+ * entries with candidates the rest of the gray test and the S decision in
+ * 16-bit lanes, and the kept entries from the two masks, with no list of
+ * candidates in between. The energy 3 d1^2 + 2 d2^2 + d3^2 is two pmaddwd
+ * per four entries, squares of (d1, d2) and (d1, d3) summed in pairs: the
+ * compiler's version of the portable lane loop widens every product to 32
+ * bits on its own (pmullw, pmulhuw, two unpacks) and, with sixteen entries
+ * in 32-bit lanes, spills registers. Groups of eight waste few lanes on
+ * entries that are no candidates: a line across the columns gives a run of
+ * them, an isolated one costs a group.
  *
  * symline_i_s_along3_keep() for symline_i_s_along3_keep_c(): the nine
  * differences of E(i-1), E(i), E(i+1) of a candidate along a row from five
@@ -27,6 +30,7 @@
 #include <emmintrin.h>
 #include <string.h>
 
+#include "bytetest_sse2.h"
 #include "linepoints.h"
 
 /* Eight gray values from p, in 16-bit lanes. */
@@ -47,15 +51,17 @@ static inline void energy8(__m128i d1, __m128i d2, __m128i d3, __m128i *lo, __m1
     *hi = _mm_add_epi32(_mm_slli_epi32(_mm_madd_epi16(a1, a1), 1), _mm_madd_epi16(b1, b1));
 }
 
-/* The codes of eight entries r[0 .. 7], in 16-bit lanes. */
-static inline __m128i codes8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m128i rp, __m128i ap,
-                             __m128i paper)
+/* The decision of eight entries r[0 .. 7] in 16-bit lanes: *g all ones
+ * where the entry passes the rest of the gray test and neither E(y-1) nor
+ * E(y+1) is below E(y) (maybe S), *s where both are above (S, where g). */
+static inline void decide8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m128i rp, __m128i ap,
+                           __m128i paper, __m128i *g, __m128i *s)
 {
     const __m128i m4 = load8(r - 4 * st), m3 = load8(r - 3 * st), m2 = load8(r - 2 * st);
     const __m128i m1 = load8(r - st), p0 = load8(r), p1 = load8(r + st);
     const __m128i p2 = load8(r + 2 * st), p3 = load8(r + 3 * st), p4 = load8(r + 4 * st);
     const __m128i z = _mm_setzero_si128();
-    __m128i up0, up1, e0, e1, dn0, dn1, low, not_maybe, s, side, t, t100, ok, g;
+    __m128i up0, up1, e0, e1, dn0, dn1, low, not_maybe, side, t, t100, ok;
     energy8(_mm_sub_epi16(m2, p0), _mm_sub_epi16(m3, p1), _mm_sub_epi16(m4, p2), &up0, &up1);
     energy8(_mm_sub_epi16(m1, p1), _mm_sub_epi16(m2, p2), _mm_sub_epi16(m3, p3), &e0, &e1);
     energy8(_mm_sub_epi16(p0, p2), _mm_sub_epi16(m1, p3), _mm_sub_epi16(m2, p4), &dn0, &dn1);
@@ -64,7 +70,7 @@ static inline __m128i codes8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m1
     low = _mm_min_epi16(_mm_packs_epi32(_mm_sub_epi32(up0, e0), _mm_sub_epi32(up1, e1)),
                         _mm_packs_epi32(_mm_sub_epi32(dn0, e0), _mm_sub_epi32(dn1, e1)));
     not_maybe = _mm_srai_epi16(low, 15);
-    s = _mm_cmpgt_epi16(low, z);
+    *s = _mm_cmpgt_epi16(low, z);
     /* the rest of the gray test; t100 >= x (unsigned) as x -sat t100 == 0 */
     side = _mm_max_epi16(m4, p4);
     t = _mm_sub_epi16(p0, side);
@@ -77,20 +83,62 @@ static inline __m128i codes8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m1
                 _mm_subs_epu16(_mm_mullo_epi16(_mm_sub_epi16(side, _mm_min_epi16(m4, p4)), ap),
                                t100),
                 z)));
-    g = _mm_andnot_si128(not_maybe, _mm_or_si128(paper, ok));
-    /* 2 where g, less 1 where also S */
-    return _mm_sub_epi16(_mm_and_si128(g, _mm_set1_epi16(2)),
-                         _mm_and_si128(_mm_and_si128(s, g), _mm_set1_epi16(1)));
+    *g = _mm_andnot_si128(not_maybe, _mm_or_si128(paper, ok));
 }
 
-void symline_i_lanes_down(const uint8_t *r, ptrdiff_t st, const symline_i_lane_gray *g,
-                          uint8_t *code)
+uint32_t symline_i_cand_down(const symline_i_prefilter *pf, const symline_i_lane_gray *g,
+                             const uint8_t *c, const uint8_t *lo, const uint8_t *hi, ptrdiff_t st,
+                             uint32_t x, uint32_t n, uint16_t *out, uint64_t *plateau,
+                             uint32_t *next)
 {
     const __m128i rmin1 = _mm_set1_epi16((short)(g->ridge_min - 1));
     const __m128i rp = _mm_set1_epi16((short)g->ridge_pct), ap = _mm_set1_epi16((short)g->asym_pct);
     const __m128i paper = _mm_set1_epi16((short)(g->paper != 0u ? -1 : 0));
-    _mm_storel_epi64((__m128i *)(void *)code,
-                     _mm_packus_epi16(codes8(r, st, rmin1, rp, ap, paper), _mm_setzero_si128()));
+    uint16_t *o = out; /* the next kept entry goes here */
+    uint64_t pl = 0u, bits;
+    sl_bytetest t;
+    size_t base;
+    if (n < 16u) {
+        return symline_i_cand_down_c(pf, g, c, lo, hi, st, x, n, out, plateau, next);
+    }
+    sl_bytetest_init(&t, pf, c, lo, hi, x, n);
+    while ((bits = sl_bytetest_next(&t, &base)) != 0u) {
+        do {
+            /* the eight entries from the first candidate's, on a multiple of
+             * 8 from base (inside the step's entries) */
+            const uint32_t j = (uint32_t)__builtin_ctzll(bits) & ~7u;
+            const uint32_t want = (uint32_t)(bits >> j) & 0xffu;
+            const uint32_t at = (uint32_t)base + j;
+            __m128i gm, sm;
+            uint32_t both, keep;
+            if (o + 8 > out + SL_LINE_CAND_MAX) {
+                /* no room for eight more: on from the group's first
+                 * candidate (a row's last step may start before x) */
+                *next = at + (uint32_t)__builtin_ctz(want);
+                *plateau = pl;
+                return (uint32_t)(o - out);
+            }
+            bits &= ~((uint64_t)0xffu << j);
+            decide8(c + at, st, rmin1, rp, ap, paper, &gm, &sm);
+            /* bits 0-7: S (and g), 8-15: g */
+            both = (uint32_t)_mm_movemask_epi8(_mm_packs_epi16(_mm_and_si128(sm, gm), gm));
+            keep = (both >> 8) & want;
+            if ((keep & ~both) != 0u) { /* rare: plateaus among them */
+                for (; keep != 0u; keep &= keep - 1u) {
+                    const uint32_t i = (uint32_t)__builtin_ctz(keep);
+                    pl |= (uint64_t)(((both >> i) & 1u) ^ 1u) << (o - out);
+                    *o++ = (uint16_t)(at + i);
+                }
+                continue;
+            }
+            for (; keep != 0u; keep &= keep - 1u) {
+                *o++ = (uint16_t)(at + (uint32_t)__builtin_ctz(keep));
+            }
+        } while (bits != 0u);
+    }
+    *next = n;
+    *plateau = pl;
+    return (uint32_t)(o - out);
 }
 
 /* The four bytes from p in the low lane. */

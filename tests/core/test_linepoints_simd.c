@@ -4,13 +4,16 @@
  * (symline_i_lanes_down_c(), lib/linepoints.h) against its definition: for
  * every entry that passes the line filter's byte test, the code says what
  * the exact gray test (symline_i_linefilter_gray()) and the energies
- * E(y-1), E(y), E(y+1) of docs/algorithm.md at m = 3 say. Where the build
- * has a SIMD version (SYMLINE_PORT_LANES_DOWN, CMake option SYMLINE_SIMD)
- * it is compared with the reference on every entry: columns of random,
- * nearly equal (ties, plateaus), mirrored (equal energies) and extreme gray
- * values, both filters, thresholds across their ranges.
+ * E(y-1), E(y), E(y+1) of docs/algorithm.md at m = 3 say, and one entry's
+ * code (symline_i_lane_code_down()) is the block's. Where the build has a
+ * SIMD version of the byte test and decision of a row in one pass
+ * (SYMLINE_PORT_CAND_DOWN, CMake option SYMLINE_SIMD) it is compared with
+ * the reference (symline_i_cand_down_c()) over whole rows: columns of
+ * random, nearly equal (ties, plateaus), mirrored (equal energies) and
+ * extreme gray values, both filters, thresholds across their ranges.
  */
 #include <setjmp.h>
+#include <stdbool.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -110,6 +113,7 @@ static void reference_is_definition(void **state)
                    : up > e && dn > e                                            ? 1u
                                                                                  : 2u;
             assert_int_equal(code[i], want);
+            assert_int_equal(symline_i_lane_code_down(r + i, (ptrdiff_t)st, &g), want);
             codes[want]++;
             checked++;
         }
@@ -119,29 +123,99 @@ static void reference_is_definition(void **state)
     assert_true(codes[0] > 1000u && codes[1] > 1000u && codes[2] > 1000u);
 }
 
-#ifdef SYMLINE_PORT_LANES_DOWN
-/* The SIMD version against the reference: the same code for every entry
- * (also those no byte test would pass), at every stride and alignment. */
-static void simd_is_reference(void **state)
+#ifdef SYMLINE_PORT_CAND_DOWN
+#define ROW_MAX 200u /* entries of a row, at most */
+
+/* The entries symline_i_cand_down() (port) or symline_i_cand_down_c()
+ * (reference) keeps of entries x .. n-1 of the row r, call after call as
+ * the detector makes them, to keep[0 ..] with plateau[i] its plateau bit;
+ * returns how many. Each call must keep some entries or stop at the row's
+ * end, and *next must move on. */
+static uint32_t down_all(bool port, const symline_i_prefilter *pf, const symline_i_lane_gray *g,
+                         const uint8_t *r, const uint8_t *lo, const uint8_t *hi, ptrdiff_t st,
+                         uint32_t x, uint32_t n, uint16_t *keep, uint8_t *plateau)
 {
-    uint8_t buf[ROWS * STRIDE_MAX + 16u];
-    uint32_t s = 9u, t;
+    uint32_t total = 0u;
+    while (x < n) {
+        uint16_t out[SL_LINE_CAND_MAX];
+        uint64_t pl = 0x5a5au;
+        uint32_t next = 0u, k, i;
+        memset(out, 0xa5, sizeof out);
+        k = port ? symline_i_cand_down(pf, g, r, lo, hi, st, x, n, out, &pl, &next)
+                 : symline_i_cand_down_c(pf, g, r, lo, hi, st, x, n, out, &pl, &next);
+        assert_true(k <= SL_LINE_CAND_MAX);
+        assert_true(next > x && next <= n);
+        assert_int_equal(k < 64u ? pl >> k : 0u, 0u);
+        for (i = 0; i < k; i++) {
+            assert_true(out[i] >= x && out[i] < next);
+            assert_true(total < ROW_MAX);
+            keep[total] = out[i];
+            plateau[total] = (uint8_t)((pl >> i) & 1u);
+            total++;
+        }
+        x = next;
+    }
+    return total;
+}
+
+/* The SIMD version against the reference over whole rows of 1 to ROW_MAX
+ * entries, from any first entry: the same entries kept in the same order,
+ * the same plateaus; rows with many candidates (a bright band, the paper
+ * filter on a bright carpet) fill the output and go on from where the call
+ * stopped, also in a row's last step, which starts before the first entry.
+ * Rows exactly as wide as read at every alignment (the sanitizer builds
+ * catch a read beyond them). */
+static void down_simd_is_reference(void **state)
+{
+    static uint8_t buf[16u + ROWS * ROW_MAX];
+    uint32_t s = 17u, t, kept = 0u, plateaus = 0u, full = 0u;
     (void)state;
-    for (t = 0; t < 20000u; t++) {
-        const uint32_t st = LANES + tu_rand(&s) % (STRIDE_MAX - LANES + 1u);
-        const uint32_t off = tu_rand(&s) % 16u;
-        const uint8_t *r = buf + off + 4u * st;
+    for (t = 0; t < 6000u; t++) {
+        const uint32_t n = 1u + tu_rand(&s) % ROW_MAX, off = tu_rand(&s) % 16u;
+        const uint32_t x = tu_rand(&s) % 3u == 0u ? 0u : tu_rand(&s) % n;
+        const ptrdiff_t st = (ptrdiff_t)n;
+        uint8_t *const r = buf + off + 4u * n;
         symline_i_linefilter f;
         symline_i_lane_gray g;
-        uint8_t a[LANES + 1u], b[LANES + 1u];
-        fill(buf + off, st, &s);
+        symline_i_prefilter pf;
+        uint16_t ka[ROW_MAX], kb[ROW_MAX];
+        uint8_t pa[ROW_MAX], pb[ROW_MAX];
+        const uint8_t *lo, *hi;
+        uint32_t na, nb, row, i;
+        /* nine rows of n entries: the generator's columns, side by side */
+        for (i = 0; i < n; i += 8u) {
+            uint8_t cols[ROWS * 8u];
+            const uint32_t w = n - i < 8u ? n - i : 8u;
+            fill(cols, 8u, &s);
+            for (row = 0; row < ROWS; row++) {
+                memcpy(buf + off + row * n + i, cols + row * 8u, w);
+            }
+        }
+        if (tu_rand(&s) % 2u == 0u) { /* a bright band across: runs of candidates */
+            const uint32_t a = tu_rand(&s) % n, b = a + tu_rand(&s) % (n - a);
+            for (i = a; i <= b; i++) {
+                r[i] = (uint8_t)(200u + tu_rand(&s) % 56u);
+                r[i - 4 * st] = (uint8_t)(tu_rand(&s) % 64u);
+                r[i + 4 * st] = (uint8_t)(tu_rand(&s) % 64u);
+            }
+        }
         pick(&f, &g, &s);
-        memset(a, 0x5a, sizeof a);
-        memset(b, 0x5a, sizeof b);
-        symline_i_lanes_down(r, (ptrdiff_t)st, &g, a);
-        symline_i_lanes_down_c(r, (ptrdiff_t)st, &g, b);
-        assert_memory_equal(a, b, sizeof a);
+        symline_i_prefilter_setup(&f, &pf);
+        lo = f.kind == SYMLINE_FILTER_PAPER ? r : r - 4 * st;
+        hi = f.kind == SYMLINE_FILTER_PAPER ? r : r + 4 * st;
+        na = down_all(true, &pf, &g, r, lo, hi, st, x, n, ka, pa);
+        nb = down_all(false, &pf, &g, r, lo, hi, st, x, n, kb, pb);
+        assert_int_equal(na, nb);
+        assert_memory_equal(ka, kb, na * sizeof ka[0]);
+        assert_memory_equal(pa, pb, na);
+        kept += na;
+        for (i = 0; i < na; i++) {
+            plateaus += pa[i];
+        }
+        full += na > SL_LINE_CAND_MAX ? 1u : 0u;
     }
+    /* every case was met many times */
+    assert_true(kept > 20000u && plateaus > 500u && full > 50u);
 }
 #endif
 
@@ -249,8 +323,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(reference_is_definition),
         cmocka_unit_test(along_reference_is_definition),
-#ifdef SYMLINE_PORT_LANES_DOWN
-        cmocka_unit_test(simd_is_reference),
+#ifdef SYMLINE_PORT_CAND_DOWN
+        cmocka_unit_test(down_simd_is_reference),
 #endif
 #ifdef SYMLINE_PORT_S_ALONG3
         cmocka_unit_test(along_simd_is_reference),
