@@ -7,18 +7,17 @@
  * (tests/core/test_linepoints_simd.c compares them):
  *
  * symline_i_cand_down() for symline_i_cand_down_c(): the byte test 64
- * entries a step (x86/bytetest_sse2.h), then for each group of eight
- * entries with candidates the rest of the gray test and the S decision in
- * 16-bit lanes, and the kept entries from the two masks, with no list of
- * candidates in between. The energy 3 d1^2 + 2 d2^2 + d3^2 is two pmaddwd
- * per four entries, squares of (d1, d2) and (d1, d3) summed in pairs: the
+ * entries a step (x86/bytetest_sse2.h), then the step's candidates in
+ * groups of the eight entries from a candidate on, straight from its mask,
+ * with no list of candidates in between: a line across the columns gives
+ * runs of them. In a group, the rest of the gray test first (it fails
+ * often, and needs three rows of nine), in 16-bit lanes; then the S
+ * decision of those left, in lanes where two or more are, else in scalar
+ * registers. The energy 3 d1^2 + 2 d2^2 + d3^2 is two pmaddwd per four
+ * entries, squares of (d1, d2) and (d1, d3) summed in pairs: the
  * compiler's version of the portable lane loop widens every product to 32
  * bits on its own (pmullw, pmulhuw, two unpacks) and, with sixteen entries
- * in 32-bit lanes, spills registers. Groups of eight waste few lanes on
- * entries that are no candidates: a line across the columns gives a run of
- * them; a group with one candidate, most groups on ex01, is decided
- * in scalar registers instead (callgrind, ex01: about 90 instructions
- * against 117 for the lanes).
+ * in 32-bit lanes, spills registers.
  *
  * symline_i_s_along3_keep() for symline_i_s_along3_keep_c(): the nine
  * differences of E(i-1), E(i), E(i+1) of a candidate along a row from five
@@ -53,31 +52,18 @@ static inline void energy8(__m128i d1, __m128i d2, __m128i d3, __m128i *lo, __m1
     *hi = _mm_add_epi32(_mm_slli_epi32(_mm_madd_epi16(a1, a1), 1), _mm_madd_epi16(b1, b1));
 }
 
-/* The decision of eight entries r[0 .. 7] in 16-bit lanes: *g all ones
- * where the entry passes the rest of the gray test and neither E(y-1) nor
- * E(y+1) is below E(y) (maybe S), *s where both are above (S, where g). */
-static inline void decide8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m128i rp, __m128i ap,
-                           __m128i paper, __m128i *g, __m128i *s)
+/* The rest of the gray test of eight entries r[0 .. 7], sides r[-4 st],
+ * r[4 st] (symline_i_lane_gray_ok()), in 16-bit lanes: all ones where they
+ * pass. */
+static inline __m128i gray8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m128i rp, __m128i ap,
+                            __m128i paper)
 {
-    const __m128i m4 = load8(r - 4 * st), m3 = load8(r - 3 * st), m2 = load8(r - 2 * st);
-    const __m128i m1 = load8(r - st), p0 = load8(r), p1 = load8(r + st);
-    const __m128i p2 = load8(r + 2 * st), p3 = load8(r + 3 * st), p4 = load8(r + 4 * st);
+    const __m128i m4 = load8(r - 4 * st), p0 = load8(r), p4 = load8(r + 4 * st);
     const __m128i z = _mm_setzero_si128();
-    __m128i up0, up1, e0, e1, dn0, dn1, low, not_maybe, side, t, t100, ok;
-    energy8(_mm_sub_epi16(m2, p0), _mm_sub_epi16(m3, p1), _mm_sub_epi16(m4, p2), &up0, &up1);
-    energy8(_mm_sub_epi16(m1, p1), _mm_sub_epi16(m2, p2), _mm_sub_epi16(m3, p3), &e0, &e1);
-    energy8(_mm_sub_epi16(p0, p2), _mm_sub_epi16(m1, p3), _mm_sub_epi16(m2, p4), &dn0, &dn1);
-    /* the smaller of E(y-1) - E(y), E(y+1) - E(y) in 16-bit lanes (saturated:
-     * the sign and 0 stay); maybe S: it is >= 0; S: > 0 */
-    low = _mm_min_epi16(_mm_packs_epi32(_mm_sub_epi32(up0, e0), _mm_sub_epi32(up1, e1)),
-                        _mm_packs_epi32(_mm_sub_epi32(dn0, e0), _mm_sub_epi32(dn1, e1)));
-    not_maybe = _mm_srai_epi16(low, 15);
-    *s = _mm_cmpgt_epi16(low, z);
-    /* the rest of the gray test; t100 >= x (unsigned) as x -sat t100 == 0 */
-    side = _mm_max_epi16(m4, p4);
-    t = _mm_sub_epi16(p0, side);
-    t100 = _mm_mullo_epi16(t, _mm_set1_epi16(100));
-    ok = _mm_and_si128(
+    const __m128i side = _mm_max_epi16(m4, p4), t = _mm_sub_epi16(p0, side);
+    /* t100 >= x (unsigned) as x -sat t100 == 0 */
+    const __m128i t100 = _mm_mullo_epi16(t, _mm_set1_epi16(100));
+    const __m128i ok = _mm_and_si128(
         _mm_cmpgt_epi16(t, rmin1),
         _mm_and_si128(
             _mm_cmpeq_epi16(_mm_subs_epu16(_mm_mullo_epi16(p0, rp), t100), z),
@@ -85,16 +71,34 @@ static inline void decide8(const uint8_t *r, ptrdiff_t st, __m128i rmin1, __m128
                 _mm_subs_epu16(_mm_mullo_epi16(_mm_sub_epi16(side, _mm_min_epi16(m4, p4)), ap),
                                t100),
                 z)));
-    *g = _mm_andnot_si128(not_maybe, _mm_or_si128(paper, ok));
+    return _mm_or_si128(paper, ok);
 }
 
-/* The code of entry p[0] alone (symline_i_lane_code_down()), in scalar
- * registers: for a group with one candidate, where the lanes would decide
- * seven entries in vain. The energies from the nine values' signed
- * differences, once each. Apart, so that the row's loop keeps its
- * registers. */
-__attribute__((noinline)) static uint32_t code1(const uint8_t *p, ptrdiff_t st,
-                                                const symline_i_lane_gray *g)
+/* The S decision of eight entries r[0 .. 7] in 16-bit lanes: *maybe all
+ * ones where neither E(y-1) nor E(y+1) is below E(y), *s where both are
+ * above. */
+static inline void s8(const uint8_t *r, ptrdiff_t st, __m128i *maybe, __m128i *s)
+{
+    const __m128i m4 = load8(r - 4 * st), m3 = load8(r - 3 * st), m2 = load8(r - 2 * st);
+    const __m128i m1 = load8(r - st), p0 = load8(r), p1 = load8(r + st);
+    const __m128i p2 = load8(r + 2 * st), p3 = load8(r + 3 * st), p4 = load8(r + 4 * st);
+    __m128i up0, up1, e0, e1, dn0, dn1, low;
+    energy8(_mm_sub_epi16(m2, p0), _mm_sub_epi16(m3, p1), _mm_sub_epi16(m4, p2), &up0, &up1);
+    energy8(_mm_sub_epi16(m1, p1), _mm_sub_epi16(m2, p2), _mm_sub_epi16(m3, p3), &e0, &e1);
+    energy8(_mm_sub_epi16(p0, p2), _mm_sub_epi16(m1, p3), _mm_sub_epi16(m2, p4), &dn0, &dn1);
+    /* the smaller of E(y-1) - E(y), E(y+1) - E(y) in 16-bit lanes (saturated:
+     * the sign and 0 stay); maybe S: it is >= 0; S: > 0 */
+    low = _mm_min_epi16(_mm_packs_epi32(_mm_sub_epi32(up0, e0), _mm_sub_epi32(up1, e1)),
+                        _mm_packs_epi32(_mm_sub_epi32(dn0, e0), _mm_sub_epi32(dn1, e1)));
+    *maybe = _mm_cmpgt_epi16(low, _mm_set1_epi16(-1));
+    *s = _mm_cmpgt_epi16(low, _mm_setzero_si128());
+}
+
+/* The S decision of entry p[0] alone (past its gray test), in scalar
+ * registers: 1 an S point, 2 a plateau, 0 neither (symline_i_lane_code()).
+ * The energies from the nine values' signed differences, once each. Apart,
+ * so that the row's loop keeps its registers. */
+__attribute__((noinline)) static uint32_t s1(const uint8_t *p, ptrdiff_t st)
 {
     const int32_t m4 = p[-4 * st], m3 = p[-3 * st], m2 = p[-2 * st], m1 = p[-st], c0 = p[0];
     const int32_t p1 = p[st], p2 = p[2 * st], p3 = p[3 * st], p4 = p[4 * st];
@@ -104,10 +108,7 @@ __attribute__((noinline)) static uint32_t code1(const uint8_t *p, ptrdiff_t st,
     const int32_t up = 3 * u1 * u1 + 2 * u2 * u2 + u3 * u3;
     const int32_t e = 3 * e1 * e1 + 2 * e2 * e2 + e3 * e3;
     const int32_t dn = 3 * d1 * d1 + 2 * d2 * d2 + d3 * d3;
-    if (up < e || dn < e || symline_i_lane_gray_ok(g, (uint8_t)c0, (uint8_t)m4, (uint8_t)p4) == 0u) {
-        return 0u;
-    }
-    return up > e && dn > e ? 1u : 2u;
+    return up < e || dn < e ? 0u : (up > e && dn > e ? 1u : 2u);
 }
 
 uint32_t symline_i_cand_down(const symline_i_prefilter *pf, const symline_i_lane_gray *g,
@@ -119,6 +120,7 @@ uint32_t symline_i_cand_down(const symline_i_prefilter *pf, const symline_i_lane
     const __m128i rp = _mm_set1_epi16((short)g->ridge_pct), ap = _mm_set1_epi16((short)g->asym_pct);
     const __m128i paper = _mm_set1_epi16((short)(g->paper != 0u ? -1 : 0));
     uint16_t *o = out; /* the next kept entry goes here */
+    const uint32_t end = n;
     uint64_t pl = 0u, bits;
     sl_bytetest t;
     size_t base;
@@ -128,42 +130,60 @@ uint32_t symline_i_cand_down(const symline_i_prefilter *pf, const symline_i_lane
     sl_bytetest_init(&t, pf, c, lo, hi, x, n);
     while ((bits = sl_bytetest_next(&t, &base)) != 0u) {
         do {
-            /* the eight entries from the first candidate's, on a multiple of
-             * 8 from base (inside the step's entries) */
-            const uint32_t j = (uint32_t)__builtin_ctzll(bits) & ~7u;
-            const uint32_t want = (uint32_t)(bits >> j) & 0xffu;
-            const uint32_t at = (uint32_t)base + j;
-            __m128i gm, sm;
+            /* the eight entries from the first candidate on, or the row's
+             * last eight (every step starts 16 or more entries before the
+             * row's end; entries before the candidate are done or before x,
+             * their bits clear) */
+            const uint32_t first = (uint32_t)base + (uint32_t)__builtin_ctzll(bits);
+            const uint32_t at = first + 8u <= end ? first : end - 8u, j = at - (uint32_t)base;
+            uint32_t want = (uint32_t)(bits >> j) & 0xffu;
+            __m128i mb, sm;
             uint32_t both, keep;
             if (o + 8 > out + SL_LINE_CAND_MAX) {
-                /* no room for eight more: on from the group's first
-                 * candidate (a row's last step may start before x) */
-                *next = at + (uint32_t)__builtin_ctz(want);
+                /* no room for eight more: on from the candidate */
+                *next = first;
                 *plateau = pl;
                 return (uint32_t)(o - out);
             }
             bits &= ~((uint64_t)0xffu << j);
-            if ((want & (want - 1u)) == 0u) {
-                const uint32_t e = at + (uint32_t)__builtin_ctz(want), code = code1(c + e, st, g);
+            if ((want & (want - 1u)) != 0u) {
+                /* the rest of the gray test in lanes first: it fails often */
+                want &= (uint32_t)_mm_movemask_epi8(
+                    _mm_packs_epi16(gray8(c + at, st, rmin1, rp, ap, paper), _mm_setzero_si128()));
+                if ((want & (want - 1u)) != 0u) {
+                    s8(c + at, st, &mb, &sm);
+                    /* bits 0-7: S, 8-15: maybe S */
+                    both = (uint32_t)_mm_movemask_epi8(_mm_packs_epi16(sm, mb));
+                    keep = (both >> 8) & want;
+                    if ((keep & ~both) != 0u) { /* rare: plateaus among them */
+                        for (; keep != 0u; keep &= keep - 1u) {
+                            const uint32_t i = (uint32_t)__builtin_ctz(keep);
+                            pl |= (uint64_t)(((both >> i) & 1u) ^ 1u) << (o - out);
+                            *o++ = (uint16_t)(at + i);
+                        }
+                        continue;
+                    }
+                    for (; keep != 0u; keep &= keep - 1u) {
+                        *o++ = (uint16_t)(at + (uint32_t)__builtin_ctz(keep));
+                    }
+                    continue;
+                }
+                if (want == 0u) {
+                    continue;
+                }
+            } else {
+                /* one candidate: the rest of its gray test alone */
+                const uint8_t *const q = c + at + __builtin_ctz(want);
+                if (symline_i_lane_gray_ok(g, q[0], q[-4 * st], q[4 * st]) == 0u) {
+                    continue;
+                }
+            }
+            {
+                /* one candidate past the gray test: its energies alone */
+                const uint32_t e = at + (uint32_t)__builtin_ctz(want), code = s1(c + e, st);
                 pl |= (uint64_t)(code >> 1) << (o - out);
                 *o = (uint16_t)e;
                 o += code != 0u ? 1 : 0;
-                continue;
-            }
-            decide8(c + at, st, rmin1, rp, ap, paper, &gm, &sm);
-            /* bits 0-7: S (and g), 8-15: g */
-            both = (uint32_t)_mm_movemask_epi8(_mm_packs_epi16(_mm_and_si128(sm, gm), gm));
-            keep = (both >> 8) & want;
-            if ((keep & ~both) != 0u) { /* rare: plateaus among them */
-                for (; keep != 0u; keep &= keep - 1u) {
-                    const uint32_t i = (uint32_t)__builtin_ctz(keep);
-                    pl |= (uint64_t)(((both >> i) & 1u) ^ 1u) << (o - out);
-                    *o++ = (uint16_t)(at + i);
-                }
-                continue;
-            }
-            for (; keep != 0u; keep &= keep - 1u) {
-                *o++ = (uint16_t)(at + (uint32_t)__builtin_ctz(keep));
             }
         } while (bits != 0u);
     }
