@@ -200,9 +200,10 @@ static bool a_near(const line_view *l, uint32_t i, uint32_t d)
  * columns a line across them gives runs of consecutive candidates in a
  * row, so a block of SL_LP_LANES neighbouring entries gets the rest of the
  * exact gray test, E(y-1), E(y), E(y+1) and the S decision at once
- * (symline_i_lanes_down(), linepoints.h: a loop over the entries the
- * compiler vectorises, or a port's version), instead of one candidate at a
- * time with strided loads. Along the rows the runs are a line's width, a
+ * (symline_i_lanes_down_c(), linepoints.h: a loop over the entries the
+ * compiler vectorises; a port's symline_i_cand_down() decides from the
+ * byte test's masks instead), instead of one candidate at a time with
+ * strided loads. Along the rows the runs are a line's width, a
  * few entries: blocks there saved nothing (callgrind), the candidate-wise
  * batch stays. Scalar cores (Cortex-M) keep it too: there the lanes would
  * be work on entries that are no candidates.
@@ -211,6 +212,13 @@ static bool a_near(const line_view *l, uint32_t i, uint32_t d)
 #define SL_LP_LANES SL_LANES_DOWN
 #else
 #define SL_LP_LANES 0u
+#endif
+/* A port's byte test and decision down the columns in one pass (speed
+ * builds; the size builds have no byte test). */
+#if SL_LP_LANES && defined(SYMLINE_PORT_CAND_DOWN)
+#define SL_LP_CAND_DOWN 1
+#else
+#define SL_LP_CAND_DOWN 0
 #endif
 
 #if SL_LP_LANES
@@ -258,7 +266,7 @@ typedef struct lp_ctx {
     bool lanes;             /* the lanes decide this pass's interior candidates (m = 3) */
     bool lanes_row;         /* ... and those of the row at hand */
 #endif
-#ifdef SYMLINE_PORT_CAND_DOWN
+#if SL_LP_CAND_DOWN
     uint64_t plateau; /* symline_i_cand_down()'s plateaus among c->cand */
 #endif
 } lp_ctx;
@@ -382,7 +390,7 @@ static SL_ALWAYS_INLINE uint32_t s_point(lp_ctx *c, uint32_t x, bool along)
     return s;
 }
 
-#if defined(SYMLINE_PORT_S_ALONG3) || defined(SYMLINE_PORT_CAND_DOWN)
+#if defined(SYMLINE_PORT_S_ALONG3) || SL_LP_CAND_DOWN
 /* Of the ks candidates cand[0 ..] that a port's decision kept
  * (symline_i_s_along3_keep() along a row, symline_i_cand_down() down the
  * columns), those of the set bits of plateau lie beside a run of equal
@@ -407,29 +415,18 @@ SL_NOINLINE static uint32_t plateaus(lp_ctx *c, uint32_t ks, uint64_t plateau, b
 }
 #endif
 
-#if SL_LP_LANES && !defined(SYMLINE_PORT_CAND_DOWN)
+#if SL_LP_LANES && !SL_LP_CAND_DOWN
 /* s_point() down the columns, for the few candidates decided one at a time:
  * apart, so that the blocks' loop keeps its state in registers. */
 SL_NOINLINE static uint32_t s_point_down(lp_ctx *c, uint32_t x)
 {
     return s_point(c, x, false);
 }
-/* The code of symline_i_lanes_down_c() for one candidate down a column at
- * m = 3 (rows y - 4 .. y + 4 held), past its gray test: 1 an S point, 2 a
- * plateau (the run rule decides), 0 neither. The energies from the nine
- * values' signed differences, once each. Apart, so that the blocks' loop
- * keeps its state in registers. */
+/* symline_i_s3_down() (linepoints.h), for the candidates decided one at a
+ * time: apart, so that the blocks' loop keeps its state in registers. */
 SL_NOINLINE static uint32_t s3_down(const uint8_t *p, ptrdiff_t st)
 {
-    const int32_t m4 = p[-4 * st], m3 = p[-3 * st], m2 = p[-2 * st], m1 = p[-st], c0 = p[0];
-    const int32_t p1 = p[st], p2 = p[2 * st], p3 = p[3 * st], p4 = p[4 * st];
-    const int32_t u1 = m2 - c0, u2 = m3 - p1, u3 = m4 - p2;
-    const int32_t e1 = m1 - p1, e2 = m2 - p2, e3 = m3 - p3;
-    const int32_t d1 = c0 - p2, d2 = m1 - p3, d3 = m2 - p4;
-    const int32_t up = 3 * u1 * u1 + 2 * u2 * u2 + u3 * u3;
-    const int32_t e = 3 * e1 * e1 + 2 * e2 * e2 + e3 * e3;
-    const int32_t dn = 3 * d1 * d1 + 2 * d2 * d2 + d3 * d3;
-    return up < e || dn < e ? 0u : (up > e && dn > e ? 1u : 2u);
+    return symline_i_s3_down(p, st);
 }
 
 /* Candidates within one block of lanes that make it worth its cost, about
@@ -456,7 +453,7 @@ static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
         } else if (i + SL_LP_BLOCK_MIN - 1u < k && cand[i + SL_LP_BLOCK_MIN - 1u] < x + lanes) {
             x0 = x < last ? x : last;
             end = x0 + lanes;
-            symline_i_lanes_down(c->c + x0, c->l.step, &c->lg, code);
+            symline_i_lanes_down_c(c->c + x0, c->l.step, &c->lg, code);
             s = code[x - x0];
         } else {
             /* alone */
@@ -599,7 +596,7 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         c->lanes_row = c->lanes && !along && c->y >= 4u && c->y + 4u < c->l.n;
 #endif
         while (at < len) {
-#ifdef SYMLINE_PORT_CAND_DOWN
+#if SL_LP_CAND_DOWN
             if (c->lanes_row) {
                 /* the byte test and the decision in one pass */
                 decide_batch(c,

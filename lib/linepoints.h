@@ -201,23 +201,30 @@ static inline void symline_i_lanes_down_c(const uint8_t *r, ptrdiff_t st,
         code[i] = symline_i_lane_code(up, e, dn, p0[i], m4[i], p4[i], &gl);
     }
 }
-#define symline_i_lanes_down symline_i_lanes_down_c
+/* The S decision of entry p[0] down its column at m = 3 (rows p[j st],
+ * j = -4 .. 4), past its gray test: 1 an S point, 2 a plateau (the run rule
+ * decides), 0 neither. The energies from the nine values' signed
+ * differences, once each: for candidates decided one at a time. */
+static inline uint32_t symline_i_s3_down(const uint8_t *p, ptrdiff_t st)
+{
+    const int32_t m4 = p[-4 * st], m3 = p[-3 * st], m2 = p[-2 * st], m1 = p[-st], c0 = p[0];
+    const int32_t p1 = p[st], p2 = p[2 * st], p3 = p[3 * st], p4 = p[4 * st];
+    const int32_t u1 = m2 - c0, u2 = m3 - p1, u3 = m4 - p2;
+    const int32_t e1 = m1 - p1, e2 = m2 - p2, e3 = m3 - p3;
+    const int32_t d1 = c0 - p2, d2 = m1 - p3, d3 = m2 - p4;
+    const int32_t up = 3 * u1 * u1 + 2 * u2 * u2 + u3 * u3;
+    const int32_t e = 3 * e1 * e1 + 2 * e2 * e2 + e3 * e3;
+    const int32_t dn = 3 * d1 * d1 + 2 * d2 * d2 + d3 * d3;
+    return up < e || dn < e ? 0u : (up > e && dn > e ? 1u : 2u);
+}
 
 /* The code (symline_i_lane_code()) of entry r[0] of a row whose column runs
  * down r[j st], j = -4 .. 4: one entry of symline_i_lanes_down_c(). */
-static inline uint8_t symline_i_lane_code_down(const uint8_t *r, ptrdiff_t st,
-                                               const symline_i_lane_gray *g)
+static inline uint32_t symline_i_lane_code_down(const uint8_t *r, ptrdiff_t st,
+                                                const symline_i_lane_gray *g)
 {
-    const int32_t up = (int32_t)symline_i_lane_energy(
-        symline_i_lane_absdiff(r[-2 * st], r[0]), symline_i_lane_absdiff(r[-3 * st], r[st]),
-        symline_i_lane_absdiff(r[-4 * st], r[2 * st]));
-    const int32_t e = (int32_t)symline_i_lane_energy(symline_i_lane_absdiff(r[-st], r[st]),
-                                                     symline_i_lane_absdiff(r[-2 * st], r[2 * st]),
-                                                     symline_i_lane_absdiff(r[-3 * st], r[3 * st]));
-    const int32_t dn = (int32_t)symline_i_lane_energy(
-        symline_i_lane_absdiff(r[0], r[2 * st]), symline_i_lane_absdiff(r[-st], r[3 * st]),
-        symline_i_lane_absdiff(r[-2 * st], r[4 * st]));
-    return symline_i_lane_code(up, e, dn, r[0], r[-4 * st], r[4 * st], g);
+    return symline_i_lane_gray_ok(g, r[0], r[-4 * st], r[4 * st]) != 0u ? symline_i_s3_down(r, st)
+                                                                        : 0u;
 }
 
 /*

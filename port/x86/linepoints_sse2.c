@@ -94,21 +94,11 @@ static inline void s8(const uint8_t *r, ptrdiff_t st, __m128i *maybe, __m128i *s
     *s = _mm_cmpgt_epi16(low, _mm_setzero_si128());
 }
 
-/* The S decision of entry p[0] alone (past its gray test), in scalar
- * registers: 1 an S point, 2 a plateau, 0 neither (symline_i_lane_code()).
- * The energies from the nine values' signed differences, once each. Apart,
- * so that the row's loop keeps its registers. */
+/* symline_i_s3_down() (linepoints.h) of a lone candidate, in scalar
+ * registers: apart, so that the row's loop keeps its registers. */
 __attribute__((noinline)) static uint32_t s1(const uint8_t *p, ptrdiff_t st)
 {
-    const int32_t m4 = p[-4 * st], m3 = p[-3 * st], m2 = p[-2 * st], m1 = p[-st], c0 = p[0];
-    const int32_t p1 = p[st], p2 = p[2 * st], p3 = p[3 * st], p4 = p[4 * st];
-    const int32_t u1 = m2 - c0, u2 = m3 - p1, u3 = m4 - p2;
-    const int32_t e1 = m1 - p1, e2 = m2 - p2, e3 = m3 - p3;
-    const int32_t d1 = c0 - p2, d2 = m1 - p3, d3 = m2 - p4;
-    const int32_t up = 3 * u1 * u1 + 2 * u2 * u2 + u3 * u3;
-    const int32_t e = 3 * e1 * e1 + 2 * e2 * e2 + e3 * e3;
-    const int32_t dn = 3 * d1 * d1 + 2 * d2 * d2 + d3 * d3;
-    return up < e || dn < e ? 0u : (up > e && dn > e ? 1u : 2u);
+    return symline_i_s3_down(p, st);
 }
 
 uint32_t symline_i_cand_down(const symline_i_prefilter *pf, const symline_i_lane_gray *g,
