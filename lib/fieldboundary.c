@@ -489,6 +489,11 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
             found += col[c].best > 0;
         }
         if (2u * found < f->nc && rim != 0u) {
+            if (SL_FOR_SPEED) {
+                /* the scan read its rows above the band into the band's
+                 * first row, which it reads first */
+                row_cells(f, 0u, NULL, 0u, f->band);
+            }
             scan_columns(f, col, rim);
         }
     }

@@ -258,6 +258,13 @@ static void test_black_rim(void **state)
     assert_int_equal(find(px, W, H, &b), SYMLINE_OK);
     check_form(&b, W, H);
     check_near(&b, top_row, 8, 8);
+    /* The same under a dim ceiling, the frame's top row of cells, which the
+     * first scan reads last: the second scan starts from the frame's own
+     * lowest row again, not from what the first one read. */
+    memset(px, 20, (size_t)8u * W);
+    assert_int_equal(find(px, W, H, &b), SYMLINE_OK);
+    check_form(&b, W, H);
+    check_near(&b, top_row, 8, 8);
     free(px);
 }
 
