@@ -266,9 +266,6 @@ typedef struct lp_ctx {
     bool lanes;             /* the lanes decide this pass's interior candidates (m = 3) */
     bool lanes_row;         /* ... and those of the row at hand */
 #endif
-#if SL_LP_CAND_DOWN
-    uint64_t plateau; /* symline_i_cand_down()'s plateaus among c->cand */
-#endif
 } lp_ctx;
 
 /* In the speed builds each decision is copied into its callers (one copy per
@@ -470,11 +467,12 @@ static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
     return ks;
 }
 #elif SL_LP_LANES
-/* The S points among the kept entries cand[0..k-1] of symline_i_cand_down()
- * (decide_row()), to cand[0 ..]: returns how many. */
+/* With a port's symline_i_cand_down() decide_row() has decided them: the
+ * k S points are cand[0..k-1]. */
 static SL_ALWAYS_INLINE uint32_t decide_batch_lanes(lp_ctx *c, uint32_t k)
 {
-    return c->plateau != 0u ? plateaus(c, k, c->plateau, false) : k;
+    (void)c;
+    return k;
 }
 #endif
 
@@ -598,11 +596,15 @@ static SL_LP_INLINE void decide_row(lp_ctx *c, bool along)
         while (at < len) {
 #if SL_LP_CAND_DOWN
             if (c->lanes_row) {
-                /* the byte test and the decision in one pass */
-                decide_batch(c,
-                             symline_i_cand_down(pf, &c->lg, ic, ilo, ihi, c->l.step, at, len,
-                                                 c->cand, &c->plateau, &at),
-                             along);
+                /* the byte test and the decision in one pass; the rare
+                 * plateaus by the run rule */
+                uint64_t pl;
+                uint32_t k = symline_i_cand_down(pf, &c->lg, ic, ilo, ihi, c->l.step, at, len,
+                                                 c->cand, &pl, &at);
+                if (pl != 0u) {
+                    k = plateaus(c, k, pl, false);
+                }
+                decide_batch(c, k, along);
                 continue;
             }
 #endif
