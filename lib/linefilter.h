@@ -32,6 +32,10 @@ typedef struct symline_i_frame_stats {
     uint16_t ridge_q4; /* the sigma the ridge threshold scales: sigma_q4, or
                           less on a carpet whose spread is not its grain
                           (detect.c), gray levels, Q4 */
+    uint16_t grain_q4; /* the carpet's grain: the mean |difference| of
+                          neighbouring pixels on it (symline_field_boundary's
+                          carpet_tex times carpet_mean), gray levels, Q4; 0
+                          without a carpet model */
 } symline_i_frame_stats;
 
 /* The ridge's sigma (Q4) on a carpet of texture tex_q8 (symline_field_boundary's
@@ -63,7 +67,9 @@ void symline_i_frame_stats_measure(const symline_image *img, const uint16_t *top
 
 /* The adaptive thresholds (cfg->adaptive) for a pass at `level` folded into
  * f: each only raises the configured one (side_max: replaces it unless
- * side_sigma10 is 100; one sigma higher at level 0). */
+ * side_sigma10 is 100; one sigma higher at level 0). The ridge height needed
+ * is also at least 2.5 of the carpet's grains, halved for each level (a
+ * grid pixel at level L is the mean of 4^L pixels: 2^L times less noise). */
 void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *cfg,
                                 const symline_i_frame_stats *st, uint32_t level);
 

@@ -123,7 +123,11 @@ typedef struct symline_config {
                               mean + bright_sigma10/10 * sigma, -100..100;
                               default 0 (the mean) */
     uint32_t ridge_sigma10; /* adaptive: contrast filter ridge height of at
-                              least ridge_sigma10/10 * sigma, 0..100; default 9 */
+                              least ridge_sigma10/10 * sigma, 0..100; default 9.
+                              Where the field boundary found a carpet (field
+                              drop), also at least 2.5 times its grain (the
+                              mean |difference| of neighbouring pixels on it),
+                              halved per scale: its noise alone */
     int32_t side_sigma10;  /* adaptive, contrast filter: both sides of the ridge
                               must stay at or below mean + side_sigma10/10 *
                               sigma (a line lies on the darker carpet, not on a

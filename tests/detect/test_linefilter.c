@@ -96,10 +96,12 @@ static void statistics_and_adaptive_thresholds(void **state)
     for (i = 0; i < 20u; i++) {
         top[i] = 8u;
     }
+    st.grain_q4 = 99u;
     symline_i_frame_stats_measure(&img, top, hist, &st);
     assert_int_equal(st.mean, 100);
     assert_int_equal(st.sigma_q4, 237);
     assert_int_equal(st.ridge_q4, 237); /* the ridge's sigma: sigma until the carpet lowers it */
+    assert_int_equal(st.grain_q4, 0);   /* no carpet model here: the detector's to set */
     /* No field in the frame: nothing measured. */
     for (i = 0; i < 20u; i++) {
         top[i] = 20u;
@@ -146,6 +148,28 @@ static void statistics_and_adaptive_thresholds(void **state)
     assert_int_equal(f.min_gray, 150);
     assert_int_equal(f.ridge_min, 120);
     assert_int_equal(f.side_max, 255);
+    /* The carpet's noise: a ridge of at least 2.5 grains, halved per level
+     * (8 gray levels of grain: 20, 10, 5), above 0.9 sigma (9) or below it. */
+    cfg.illumination = 0u;
+    cfg.contrast_min = 3u;
+    cfg.side_sigma10 = 30;
+    st.sigma_q4 = 160u;
+    st.ridge_q4 = 160u;
+    st.grain_q4 = 128u;
+    for (i = 0; i < 3u; i++) {
+        static const uint8_t want[3] = {20u, 10u, 9u};
+        symline_i_linefilter_setup(&f, &cfg);
+        symline_i_linefilter_adapt(&f, &cfg, &st, i);
+        assert_int_equal(f.ridge_min, want[i]);
+        assert_int_equal(f.side_max, i == 0u ? 140 : 130); /* the sides keep sigma */
+    }
+    cfg.contrast_min = 30u; /* a configured ridge above the floor stays */
+    symline_i_linefilter_setup(&f, &cfg);
+    symline_i_linefilter_adapt(&f, &cfg, &st, 0u);
+    assert_int_equal(f.ridge_min, 30);
+    st.sigma_q4 = 640u;
+    st.ridge_q4 = 640u;
+    st.grain_q4 = 0u;
     /* Clipped to gray levels. */
     cfg.bright_sigma10 = -100;
     cfg.illumination = 0u;
