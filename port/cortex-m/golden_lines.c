@@ -36,7 +36,11 @@ static symline_intersection items[IX_CAP];
 static uint8_t dark[DARK_BYTES];
 
 /* What a frame goes through before the detection, and its golden file's suffix. */
-enum variant { AS_IS, PAPER, DARK40 };
+enum variant {
+    AS_IS,
+    PAPER,
+    DARK40
+};
 static const char *const SUFFIX[3] = {"", ".paper", ".m40"};
 
 static int run(const char *name, const fw_frame *f, enum variant v)

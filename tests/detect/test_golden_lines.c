@@ -37,7 +37,11 @@ static char *slurp(FILE *f, size_t *len)
 }
 
 /* What a frame goes through before the detection, and its golden file's suffix. */
-enum variant { AS_IS, PAPER, DARK40 };
+enum variant {
+    AS_IS,
+    PAPER,
+    DARK40
+};
 static const char *const SUFFIX[3] = {"", ".paper", ".m40"};
 
 static void check_frame(const char *name, enum variant v)
@@ -146,12 +150,9 @@ static void frame_20250403_paper(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(frame_20190606),
-        cmocka_unit_test(frame_20240719),
-        cmocka_unit_test(frame_20240719_dark40),
-        cmocka_unit_test(frame_20250403),
-        cmocka_unit_test(frame_20250403_dark40),
-        cmocka_unit_test(frame_20250403_paper),
+        cmocka_unit_test(frame_20190606),        cmocka_unit_test(frame_20240719),
+        cmocka_unit_test(frame_20240719_dark40), cmocka_unit_test(frame_20250403),
+        cmocka_unit_test(frame_20250403_dark40), cmocka_unit_test(frame_20250403_paper),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
