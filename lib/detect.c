@@ -232,10 +232,8 @@ SL_NOINLINE static void field_stats(const symline_image *img, const symline_fiel
     if (top != NULL) {
         symline_i_field_rows(field, 0u, img->width, img->width, 0u, top);
         symline_i_frame_stats_measure(img, top, hist, st);
-        st->ridge_q4 =
-            (uint16_t)symline_i_ridge_q4(st->sigma_q4, field->carpet_tex, field->carpet_mean);
-        /* tex Q8 of the mean gray value: grain_q4 <= 255 x 255 / 16 */
-        st->grain_q4 = (uint16_t)((uint32_t)field->carpet_tex * field->carpet_mean / 16u);
+        st->grain_q8 = (uint16_t)((uint32_t)field->carpet_tex * field->carpet_mean);
+        st->ridge_q4 = (uint16_t)symline_i_ridge_q4(st->sigma_q4, st->grain_q8);
         if (st->mean != 0u || st->sigma_q4 != 0u) {
             return;
         }

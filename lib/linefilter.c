@@ -131,7 +131,7 @@ SL_NOINLINE void symline_i_frame_stats_measure(const symline_image *img, const u
     /* sigma = 1.4826 MAD for normal noise, Q4: MAD * 23.7. */
     st->sigma_q4 = (uint16_t)((mad * 2372u + 50u) / 100u); /* <= 255 x 23.72 */
     st->ridge_q4 = st->sigma_q4;
-    st->grain_q4 = 0u; /* the caller's, where it has a carpet model */
+    st->grain_q8 = 0u; /* the caller's, where it has a carpet model */
 }
 
 /* A sigma10 / 10 * sigma_q4 / 16 multiple of sigma: the divisor 160. */
@@ -163,8 +163,9 @@ void symline_i_linefilter_adapt(symline_i_linefilter *f, const symline_config *c
     /* The carpet's noise alone: a pixel stands above both sides by a grain
      * or two often, by 2.5 seldom (on a dim noisy carpet the sigma's
      * threshold lets thousands of such points through to the tracer, which
-     * drops them as too short). 2.5 grains are 5/2 grain_q4 / 16 gray levels. */
-    const uint32_t noise = (5u * st->grain_q4) >> (5u + level);
+     * drops them as too short). 2.5 grains, of the grain in sixteenths of a
+     * gray level: 5/2 (grain_q8 / 16) / 16 gray levels. */
+    const uint32_t noise = (5u * (st->grain_q8 / 16u)) >> (5u + level);
     const uint32_t bright = sigma_gray(mean, cfg->bright_sigma10, sigma_q4);
     if (noise > ridge) {
         ridge = noise;

@@ -32,22 +32,22 @@ typedef struct symline_i_frame_stats {
     uint16_t ridge_q4; /* the sigma the ridge threshold scales: sigma_q4, or
                           less on a carpet whose spread is not its grain
                           (detect.c), gray levels, Q4 */
-    uint16_t grain_q4; /* the carpet's grain: the mean |difference| of
+    uint16_t grain_q8; /* the carpet's grain: the mean |difference| of
                           neighbouring pixels on it (symline_field_boundary's
-                          carpet_tex times carpet_mean), gray levels, Q4; 0
-                          without a carpet model */
+                          carpet_tex, Q8 of its gray value, times carpet_mean),
+                          gray levels, Q8, <= 255 x 255; 0 without a carpet
+                          model */
 } symline_i_frame_stats;
 
-/* The ridge's sigma (Q4) on a carpet of texture tex_q8 (symline_field_boundary's
- * carpet_tex) and gray value mean, whose spread is sigma_q4. Sun and shadow
- * split a carpet into two gray levels, and then their spread, not the carpet's
- * grain, sets sigma: lines in the brighter part stand less than the ridge
- * threshold above it. The ridge's sigma comes down towards five grains (the
- * texture times the gray value), never below 0.8 sigma. tex_q8, mean <= 255:
- * every product fits 32 bits. */
-static inline uint32_t symline_i_ridge_q4(uint32_t sigma_q4, uint32_t tex_q8, uint32_t mean)
+/* The ridge's sigma (Q4) on a carpet of grain grain_q8 (symline_i_frame_stats),
+ * whose spread is sigma_q4. Sun and shadow split a carpet into two gray
+ * levels, and then their spread, not the carpet's grain, sets sigma: lines in
+ * the brighter part stand less than the ridge threshold above it. The ridge's
+ * sigma comes down towards five grains, never below 0.8 sigma. grain_q8 <=
+ * 255 x 255: every product fits 32 bits. */
+static inline uint32_t symline_i_ridge_q4(uint32_t sigma_q4, uint32_t grain_q8)
 {
-    const uint32_t grains = 5u * tex_q8 * mean / 16u; /* 5 x tex / 256 x mean x 16 */
+    const uint32_t grains = 5u * grain_q8 / 16u; /* 5 grains, Q8 to Q4 */
     const uint32_t low = sigma_q4 * 4u / 5u;
     const uint32_t r = grains > low ? grains : low;
     return r < sigma_q4 ? r : sigma_q4;

@@ -96,12 +96,12 @@ static void statistics_and_adaptive_thresholds(void **state)
     for (i = 0; i < 20u; i++) {
         top[i] = 8u;
     }
-    st.grain_q4 = 99u;
+    st.grain_q8 = 99u;
     symline_i_frame_stats_measure(&img, top, hist, &st);
     assert_int_equal(st.mean, 100);
     assert_int_equal(st.sigma_q4, 237);
     assert_int_equal(st.ridge_q4, 237); /* the ridge's sigma: sigma until the carpet lowers it */
-    assert_int_equal(st.grain_q4, 0);   /* no carpet model here: the detector's to set */
+    assert_int_equal(st.grain_q8, 0);   /* no carpet model here: the detector's to set */
     /* No field in the frame: nothing measured. */
     for (i = 0; i < 20u; i++) {
         top[i] = 20u;
@@ -155,7 +155,7 @@ static void statistics_and_adaptive_thresholds(void **state)
     cfg.side_sigma10 = 30;
     st.sigma_q4 = 160u;
     st.ridge_q4 = 160u;
-    st.grain_q4 = 128u;
+    st.grain_q8 = 2048u;
     for (i = 0; i < 3u; i++) {
         static const uint8_t want[3] = {20u, 10u, 9u};
         symline_i_linefilter_setup(&f, &cfg);
@@ -169,7 +169,7 @@ static void statistics_and_adaptive_thresholds(void **state)
     assert_int_equal(f.ridge_min, 30);
     st.sigma_q4 = 640u;
     st.ridge_q4 = 640u;
-    st.grain_q4 = 0u;
+    st.grain_q8 = 0u;
     /* Clipped to gray levels. */
     cfg.bright_sigma10 = -100;
     cfg.illumination = 0u;
@@ -187,18 +187,18 @@ static void ridge_sigma_from_grain(void **state)
     uint32_t s, t, m;
     (void)state;
     /* Grain 32 / 256 x 128 = 16 gray levels (Q4 256), five grains Q4 1280. */
-    assert_int_equal(symline_i_ridge_q4(1400u, 32u, 128u), 1280u); /* between the bounds */
-    assert_int_equal(symline_i_ridge_q4(1000u, 32u, 128u), 1000u); /* never above sigma */
-    assert_int_equal(symline_i_ridge_q4(4000u, 32u, 128u), 3200u); /* never below 0.8 sigma */
-    assert_int_equal(symline_i_ridge_q4(0u, 255u, 255u), 0u);
-    assert_int_equal(symline_i_ridge_q4(6048u, 0u, 0u), 4838u); /* the largest sigma, no grain */
+    assert_int_equal(symline_i_ridge_q4(1400u, 32u * 128u), 1280u); /* between the bounds */
+    assert_int_equal(symline_i_ridge_q4(1000u, 32u * 128u), 1000u); /* never above sigma */
+    assert_int_equal(symline_i_ridge_q4(4000u, 32u * 128u), 3200u); /* never below 0.8 sigma */
+    assert_int_equal(symline_i_ridge_q4(0u, 255u * 255u), 0u);
+    assert_int_equal(symline_i_ridge_q4(6048u, 0u), 4838u); /* the largest sigma, no grain */
     /* Over every sigma a frame can have and a grid of carpets: within the bounds,
      * and falling towards 0.8 sigma as the grain shrinks. */
     for (s = 0u; s <= 6048u; s += 7u) {
         for (m = 0u; m < 256u; m += 15u) {
             uint32_t prev = s;
             for (t = 255u; t < 256u; t -= 5u) {
-                const uint32_t r = symline_i_ridge_q4(s, t, m);
+                const uint32_t r = symline_i_ridge_q4(s, t * m);
                 assert_true(r <= s && r >= s * 4u / 5u && r <= prev);
                 prev = r;
             }
