@@ -26,6 +26,9 @@ typedef struct symline_i_pass {
     const uint16_t *field; /* NULL, or the first grid row each column keeps below
                               the field boundary (w entries, fieldboundary.h) */
     symline_i_linefilter filter;
+#if SL_FOR_SPEED_DEEP
+    symline_point *cache_end; /* where cache is not SL_CACHE_OFF: the storage's end */
+#endif
 } symline_i_pass;
 
 /*

@@ -402,6 +402,9 @@ SL_NOINLINE static symline_status collect(symline_i_run *d, symline_i_pass *p, u
     if (SL_FOR_SPEED_DEEP) {
         p->cache = cache_plan(d, p);
     }
+#if SL_FOR_SPEED_DEEP
+    p->cache_end = point_at(d->r, d->r->point_cap); /* (read only with a cache) */
+#endif
     st = symline_i_collect(d->img, p, ws, (size_t)(end - ws), pts, d->r->point_cap - d->npts, n,
                            row_start, &row_start[p->h + 1u]);
     if (row_start[p->h + 1u] != 0u) {

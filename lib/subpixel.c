@@ -4,8 +4,9 @@
  *
  * Only the points of reported pieces are refined, each from the gray values
  * of its grid around it across the line (E at the point and its two
- * neighbours, recomputed from the frame: the pass keeps no energies, and no
- * buffer keeps the stack short), so the cost follows the number of points, not
+ * neighbours, recomputed from the frame, or from the pass's grid rows where
+ * they are cached: the pass keeps no energies, and no buffer keeps the stack
+ * short), so the cost follows the number of points, not
  * the frame size. Integer only: E values, then one 32-bit division.
  */
 #include "subpixel.h"
@@ -221,12 +222,14 @@ static inline uint32_t sq(uint32_t l, uint32_t r)
 #define SL_SUB_LATER INT8_MIN
 
 /* The offsets of points q[0, n) with m = 3 (the default radius) at level 0
- * or 1 (most points), to save time (SL_FOR_SPEED): away from the border, E
+ * or 1 (most points; at every level where the grid rows are cached,
+ * offsets_cached()), to save time (SL_FOR_SPEED): away from the border, E
  * at i-1, i and i+1 from the nine gray values around i in straight-line
- * code; vert and level constants. A point near the border or on a run of
- * equal E is marked SL_SUB_LATER. Returns how many were. */
-static inline uint32_t offsets_m3(const symline_image *img, uint32_t n_across, int vert,
-                                  uint32_t level, symline_point *q, uint32_t n)
+ * code; vert and level constants. A point with i below lo, near the far
+ * border or on a run of equal E is marked SL_SUB_LATER. Returns how many
+ * were. img: the frame, or a pass's grid itself at level 0. */
+static inline uint32_t offsets_m3(const symline_image *img, uint32_t lo, uint32_t n_across,
+                                  int vert, uint32_t level, symline_point *q, uint32_t n)
 {
     const ptrdiff_t st = vert ? (ptrdiff_t)1 << level : (ptrdiff_t)img->stride << level;
     const size_t sd = img->stride;
@@ -235,7 +238,7 @@ static inline uint32_t offsets_m3(const symline_image *img, uint32_t n_across, i
         /* g + j * st: the block of index i + j. */
         const uint8_t *g = img->data + ((size_t)q[k].y << level) * sd + ((size_t)q[k].x << level);
         const uint32_t i = vert ? q[k].x : q[k].y;
-        if (i >= 4u && i + 4u < n_across) {
+        if (i >= lo && i + 4u < n_across) {
             const uint32_t m4 = grid_px(g - 4 * st, sd, level), m3 = grid_px(g - 3 * st, sd, level);
             const uint32_t m2 = grid_px(g - 2 * st, sd, level), m1 = grid_px(g - st, sd, level);
             const uint32_t c0 = grid_px(g, sd, level), p1 = grid_px(g + st, sd, level);
@@ -260,16 +263,61 @@ static inline uint32_t offsets_m3(const symline_image *img, uint32_t n_across, i
     return later;
 }
 
-/* offsets_m3() with the pass's axis and level as constants. Out of line:
- * its frame is gone when offset_at() runs (the stack budget). */
+#if SL_FOR_SPEED_DEEP
+/* offsets_m3() at a coarse scale from its rows in the grid row cache
+ * (linepoints.h), the pass's grid as a frame of its own: they hold the box
+ * means the frame would give, so a point reads nine bytes instead of nine
+ * blocks of the frame. The cache holds the rows from head[level] on (those
+ * the pass decided its points in, and the rows across the line it read
+ * there); a point whose rows across the line start above them is left for
+ * offset_at(). */
+static uint32_t offsets_cached(const symline_image *img, const symline_i_pass *p, symline_point *q,
+                               uint32_t n)
+{
+    const uint32_t from = symline_i_cache_head(p->cache_end)[p->level];
+    symline_image grid;
+    grid.data = symline_i_cache_rows(p->cache_end, img->width, img->height, p->level,
+                                     SL_CACHE_TOP(p->cache));
+    grid.width = p->w;
+    grid.height = p->h;
+    grid.stride = p->w;
+    if (p->axis == SYMLINE_AXIS_VERTICAL) {
+        return offsets_m3(&grid, 4u, p->w, 1, 0u, q, n);
+    }
+    return offsets_m3(&grid, from + 4u, p->h, 0, 0u, q, n);
+}
+#endif
+
+/* offsets_m3() with the pass's axis and level as constants: at level 0 or
+ * 1 from the frame, at coarser ones (and at level 1) from the cached grid
+ * rows where the pass has them. Out of line: its frame is gone when
+ * offset_at() runs (the stack budget). */
 SL_NOINLINE static uint32_t offsets_fast(const symline_image *img, const symline_i_pass *p,
                                          symline_point *q, uint32_t n)
 {
-    if (p->axis == SYMLINE_AXIS_VERTICAL) {
-        return p->level == 0u ? offsets_m3(img, p->w, 1, 0u, q, n)
-                              : offsets_m3(img, p->w, 1, 1u, q, n);
+#if SL_FOR_SPEED_DEEP
+    if (p->level > 0u && p->cache != SL_CACHE_OFF) {
+        return offsets_cached(img, p, q, n);
     }
-    return p->level == 0u ? offsets_m3(img, p->h, 0, 0u, q, n) : offsets_m3(img, p->h, 0, 1u, q, n);
+#endif
+    if (p->axis == SYMLINE_AXIS_VERTICAL) {
+        return p->level == 0u ? offsets_m3(img, 4u, p->w, 1, 0u, q, n)
+                              : offsets_m3(img, 4u, p->w, 1, 1u, q, n);
+    }
+    return p->level == 0u ? offsets_m3(img, 4u, p->h, 0, 0u, q, n)
+                          : offsets_m3(img, 4u, p->h, 0, 1u, q, n);
+}
+
+/* Whether offsets_fast() serves the pass: m = 3 at level 0 or 1, or at any
+ * level from the grid row cache (SL_FOR_SPEED_DEEP). */
+static bool offsets_fast_serves(const symline_i_pass *p)
+{
+#if SL_FOR_SPEED_DEEP
+    if (p->m == 3u && p->cache != SL_CACHE_OFF) {
+        return true;
+    }
+#endif
+    return SL_FOR_SPEED && p->level <= 1u && p->m == 3u;
 }
 
 void symline_i_subpixel(const symline_image *img, const symline_i_pass *p, symline_point *q,
@@ -278,7 +326,7 @@ void symline_i_subpixel(const symline_image *img, const symline_i_pass *p, symli
     const int vert = p->axis == SYMLINE_AXIS_VERTICAL;
     symline_i_across a;
     uint32_t k = 0u;
-    if (SL_FOR_SPEED && p->level <= 1u && p->m == 3u) {
+    if (offsets_fast_serves(p)) {
         /* Only the points marked SL_SUB_LATER are left: from the first of
          * them on, every point as below (the same offsets again; a second
          * test per point would make the frame larger). */

@@ -25,7 +25,9 @@
  * Sets fx, fy of the pass's grid points q[0..n-1]: the offset across the line
  * (fx for the vertical axis, fy for the horizontal one) in 1/128 grid px,
  * -64..64, the other 0. Reads the frame (box means at coarse levels, as the
- * pass computed them); points at the grid's border get offset 0.
+ * pass computed them), or where the pass keeps its grid rows in the grid row
+ * cache (linepoints.h) those, which hold the same values; points at the
+ * grid's border get offset 0.
  */
 void symline_i_subpixel(const symline_image *img, const symline_i_pass *p, symline_point *q,
                         uint32_t n);
