@@ -95,6 +95,9 @@ typedef struct symline_i_fstate {
     uint32_t hm[SL_FIELD_BINS], ht[SL_FIELD_BINS];
     uint32_t nb;   /* grid rows of the model's band */
     uint8_t *band; /* their cells' means and textures, read once */
+#if SL_FOR_SPEED_DEEP
+    int16_t *lanes; /* the column scan's state in lanes (scan_lanes()) */
+#endif
     const symline_field_config *fc;
     const symline_image *img;
 } symline_i_fstate;
@@ -107,6 +110,28 @@ typedef char symline_i_fstate_fits_ws_budget
 static size_t cols_bytes(uint32_t nc)
 {
     return symline_i_align_up((size_t)nc * sizeof(symline_i_fcol));
+}
+
+/* The column scan's lanes (scan_row_lanes()) run over the columns rounded
+ * up to a multiple of this: the compiler's vector loop takes 16 columns a
+ * step (its narrowest values are the cells' bytes), and no column is left
+ * to its scalar remainder. */
+#define SL_FIELD_BLOCK 16u
+
+/* Columns rounded up to whole blocks. */
+static uint32_t lane_cols(uint32_t nc)
+{
+    return (nc + SL_FIELD_BLOCK - 1u) & ~(SL_FIELD_BLOCK - 1u);
+}
+
+/* The column scan's lanes (scan_lanes()): seven 16-bit values per column
+ * of the rounded count (five of state, the row's mean and texture), and the
+ * band's cells read up to a block past their last column. */
+static size_t lanes_bytes(uint32_t nc)
+{
+    return SL_FOR_SPEED_DEEP ? symline_i_align_up((size_t)lane_cols(nc) * 7u * sizeof(int16_t)) +
+                                   (size_t)2u * SL_FIELD_BLOCK + SL_ALIGN
+                             : 0u;
 }
 
 /* The grid of a width x height frame under fc, into f's sizes unless f is
@@ -130,7 +155,7 @@ SL_NOINLINE static size_t field_grid(uint32_t width, uint32_t height,
         f->nb = nb;
     }
     return symline_i_align_up(sizeof(symline_i_fstate)) + cols_bytes(nc) + 2u * (size_t)nb * nc +
-           (size_t)3u * SL_ALIGN;
+           (size_t)3u * SL_ALIGN + lanes_bytes(nc);
 }
 
 size_t symline_field_workspace_size(uint32_t width, uint32_t height, const symline_field_config *fc)
@@ -239,12 +264,127 @@ SL_NOINLINE static void carpet_model(symline_i_fstate *f, symline_field_boundary
     out->carpet_tex = (uint8_t)tb; /* <= 2 * (SL_FIELD_BINS - 1) + 1 */
 }
 
+#if SL_FOR_SPEED_DEEP
+/* The column scan's limits in the lanes' 16 bits. */
+typedef struct symline_i_flimits {
+    int16_t lo, hi, tex_lo, tex_hi, lt, miss, gmax;
+} symline_i_flimits;
+
+/*
+ * One grid row of scan_columns()'s column scan (the same steps, the same
+ * result) over all columns at once: each field of the columns' state an
+ * array (cur, best, ema, gap, then top as unsigned), the branches as masks
+ * and bit operations, so that the compiler runs the columns in 16-bit
+ * vector lanes (the scalar scan took some 40 instructions a cell). The
+ * row's cells cells[2c] (mean), cells[2c+1] (texture), first spread into
+ * mt[] (means, then textures: every lane 16 bits); top: the row's top
+ * pixel; rim_row: its black cells are free. Ranges: cur -16 .. nr, best and
+ * gap 0 .. nr, ema 0 .. 4080 (Q4 gray), limits below 2^15 (scan_columns()
+ * asks nr < 2^14).
+ */
+static void scan_row_lanes(const symline_i_flimits *k, const uint8_t *cells, uint32_t nc,
+                           int16_t *restrict mt, int16_t *restrict cur, int16_t *restrict best,
+                           int16_t *restrict ema, int16_t *restrict gap, uint16_t *restrict top,
+                           uint16_t row_top, bool rim_row)
+{
+    const int16_t lo = k->lo, hi = k->hi, tlo = k->tex_lo, thi = k->tex_hi, lt = k->lt;
+    const int16_t miss = k->miss, gmax = k->gmax, black = (int16_t)SL_FIELD_BLACK;
+    const int16_t rim = (int16_t) - (int16_t)rim_row;
+    int16_t *restrict const tx = mt + nc;
+    size_t c;
+    for (c = 0; c < nc; c++) {
+        mt[c] = cells[2u * c];
+        tx[c] = cells[2u * c + 1u];
+    }
+    for (c = 0; c < nc; c++) {
+        /* conditions as masks of all ones (-1) or 0 */
+        const int16_t m = mt[c], t = tx[c];
+        const int16_t e = ema[c], g = gap[c], b = best[c], u = cur[c];
+        const int16_t dm = (int16_t)((m << 4) - e);
+        const int16_t live = (int16_t) - (g <= gmax);
+        const int16_t tex = (int16_t)(-(t >= tlo) & -(t <= thi));
+        const int16_t carpet =
+            (int16_t)(tex & ((-(dm <= lt) & -(dm >= -lt)) | (-(m >= lo) & -(m <= hi))));
+        const int16_t free = (int16_t)(~carpet & (-(dm > lt) | (rim & -(m < black) & -(b == 0))));
+        const int16_t minus = (int16_t)(tex | -(dm >= -lt)), other = (int16_t) ~(carpet | free);
+        /* carpet 1, free 0, else -1 (minus) or miss */
+        const int16_t v = (int16_t)((carpet & 1) | (other & (minus | (~minus & miss))));
+        const int16_t half = (int16_t)(tex & (dm / 2)); /* dm / 4 = (dm / 2) / 2 */
+        const int16_t ne = (int16_t)(e + ((carpet & (half / 2)) | (~carpet & half)));
+        const int16_t ng = (int16_t)(~carpet & (g - other));
+        const int16_t nu = (int16_t)((u & (int16_t) - (u > 0)) + v);
+        const int16_t up = (int16_t)(live & -(nu > b));
+        /* a column behind a barrier keeps its gap (it stays there) and its
+         * best and top; its cur and ema are never read again */
+        cur[c] = nu;
+        ema[c] = ne;
+        gap[c] = (int16_t)((live & ng) | (~live & g));
+        best[c] = (int16_t)((up & nu) | (~up & b));
+        top[c] = (uint16_t)((up & (int16_t)row_top) | (~up & (int16_t)top[c]));
+    }
+}
+
+/* scan_columns() in lanes (scan_row_lanes()): the columns' best and top to
+ * col[] (their other fields are not read after the scan). */
+SL_NOINLINE static void scan_lanes(const symline_i_fstate *f, symline_i_fcol *col, uint32_t rim)
+{
+    const symline_image *img = f->img;
+    const symline_field_config *fc = f->fc;
+    const uint32_t nc = f->nc, gm = fc->gap_pct == 0u ? 0x7FFFu : f->nr * fc->gap_pct / 100u;
+    const uint32_t nl = lane_cols(nc);
+    int16_t *const cur = f->lanes, *const best = cur + nl, *const ema = best + nl;
+    int16_t *const gap = ema + nl;
+    uint16_t *const top = (uint16_t *)(void *)(gap + nl);
+    int16_t *const mt = (int16_t *)(void *)(top + nl);
+    symline_i_flimits k;
+    uint32_t r, c;
+    for (c = 0; c < 2u * SL_FIELD_BLOCK; c++) {
+        f->band[2u * (size_t)f->nb * nc + c] = 0u; /* read past the last column, never used */
+    }
+    k.lo = (int16_t)f->lo;
+    k.hi = (int16_t)f->hi;
+    k.tex_lo = (int16_t)f->tex_lo;
+    k.tex_hi = (int16_t)(f->tex_hi < 0x7FFFu ? f->tex_hi : 0x7FFFu);
+    k.lt = (int16_t)(fc->local_tol << 4);
+    k.miss = (int16_t)(-(int32_t)fc->miss_cost);
+    k.gmax = (int16_t)gm;
+    for (c = 0; c < nl; c++) {
+        cur[c] = 0;
+        best[c] = 0;
+        ema[c] = (int16_t)(f->mid << 4);
+        gap[c] = 0;
+        top[c] = (uint16_t)img->height; /* no carpet: the bottom */
+    }
+    for (r = 0; r < f->nr; r++) {
+        const int32_t y = (int32_t)img->height - (int32_t)((r + 1u) * f->s);
+        const uint8_t *cells = f->band + 2u * (size_t)r * nc;
+        if (r >= f->nb) {
+            /* every cell, those behind a barrier too: the lanes skip none */
+            cells = f->band;
+            row_cells(f, r, NULL, 0u, f->band);
+        }
+        scan_row_lanes(&k, cells, nl, mt, cur, best, ema, gap, top, (uint16_t)(y < 0 ? 0 : y),
+                       r < rim);
+    }
+    for (c = 0; c < nc; c++) {
+        col[c].best = best[c];
+        col[c].top = top[c];
+    }
+}
+#endif
+
 /* Upward scan of every column: the best-scoring run of carpet; col[].top
  * becomes its top row in pixels (the frame's height: no carpet). Black cells
  * in the lowest rim grid rows, below a column's first carpet cell, are a
  * lens's rim: free, and no part of a barrier (rim 0: none). */
 SL_NOINLINE static void scan_columns(const symline_i_fstate *f, symline_i_fcol *col, uint32_t rim)
 {
+#if SL_FOR_SPEED_DEEP
+    if (f->lanes != NULL && f->nr < 0x4000u) {
+        scan_lanes(f, col, rim);
+        return;
+    }
+#endif
     const symline_image *img = f->img;
     const symline_field_config *fc = f->fc;
     uint32_t r, c;
@@ -454,8 +594,10 @@ SL_NOINLINE static void hull(const symline_i_fstate *f, symline_i_fcol *col,
     out->count = k;
 }
 
-void symline_i_field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,
-                         size_t ws_size, symline_field_boundary *out)
+/* symline_i_field_run(); lanes: the column scan in lanes where the build
+ * has them (SL_FOR_SPEED_DEEP). */
+static void field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,
+                      size_t ws_size, symline_field_boundary *out, bool lanes)
 {
     uint8_t *cur = ws, *const end = ws + ws_size;
     symline_i_fstate *f = (symline_i_fstate *)symline_i_carve(&cur, end, sizeof(symline_i_fstate));
@@ -465,10 +607,22 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
     }
     (void)field_grid(img->width, img->height, fc, f);
     col = (symline_i_fcol *)symline_i_carve(&cur, end, (size_t)f->nc * sizeof(symline_i_fcol));
-    f->band = (uint8_t *)symline_i_carve(&cur, end, 2u * (size_t)f->nb * f->nc);
+    f->band = (uint8_t *)symline_i_carve(
+        &cur, end,
+        2u * (size_t)f->nb * f->nc + (SL_FOR_SPEED_DEEP ? (size_t)2u * SL_FIELD_BLOCK : 0u));
     if (col == NULL || f->band == NULL) {
         return;
     }
+#if SL_FOR_SPEED_DEEP
+    f->lanes =
+        (int16_t *)symline_i_carve(&cur, end, (size_t)lane_cols(f->nc) * 7u * sizeof(int16_t));
+    if (f->lanes == NULL) {
+        return;
+    }
+    f->lanes = lanes ? f->lanes : NULL;
+#else
+    (void)lanes;
+#endif
     out->cell = (uint8_t)f->s;
     f->fc = fc;
     f->img = img;
@@ -519,6 +673,20 @@ void symline_i_field_run(const symline_image *img, const symline_field_config *f
         hull(f, col, out);
     }
 }
+
+void symline_i_field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,
+                         size_t ws_size, symline_field_boundary *out)
+{
+    field_run(img, fc, ws, ws_size, out, true);
+}
+
+#if SL_FOR_SPEED_DEEP
+void symline_i_field_run_scalar(const symline_image *img, const symline_field_config *fc,
+                                uint8_t *ws, size_t ws_size, symline_field_boundary *out)
+{
+    field_run(img, fc, ws, ws_size, out, false);
+}
+#endif
 
 symline_status symline_field_find(const symline_image *img, const symline_field_config *fc,
                                   void *ws, size_t ws_size, symline_field_boundary *out)

@@ -16,6 +16,13 @@
 void symline_i_field_run(const symline_image *img, const symline_field_config *fc, uint8_t *ws,
                          size_t ws_size, symline_field_boundary *out);
 
+#if SL_FOR_SPEED_DEEP
+/* symline_i_field_run() with the column scan cell by cell, as builds without
+ * its lanes (fieldboundary.c) run it: for the test that compares the two. */
+void symline_i_field_run_scalar(const symline_image *img, const symline_field_config *fc,
+                                uint8_t *ws, size_t ws_size, symline_field_boundary *out);
+#endif
+
 /* 1 when every setting of fc is in its range. */
 bool symline_i_field_config_ok(const symline_field_config *fc);
 

@@ -312,11 +312,19 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
     ((size_t)192u +                                                                                \
      (size_t)20u * (((size_t)(width) + 31u) / 32u) * (((size_t)(height) + 31u) / 32u))
 /* The field boundary's search (symline/field.h) with cells of the automatic
- * size or larger: 8 px, 16 px from 1024 px wide on. */
+ * size or larger: 8 px, 16 px from 1024 px wide on; on 64-bit targets also
+ * its column scan's lanes. */
 #define SYMLINE_DETECT_WS_FIELD_(width, height)                                                    \
     ((size_t)640u + 3u * ((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u) * 8u +            \
      2u * ((size_t)(height) / SYMLINE_DETECT_WS_CELL_(width) + 1u) *                               \
-         ((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u))
+         ((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u) +                                 \
+     SYMLINE_DETECT_WS_LANES_((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u))
+#if UINTPTR_MAX > 0xFFFFFFFFu
+/* 14 bytes per grid column, rounded up to 16 columns, and 40 */
+#define SYMLINE_DETECT_WS_LANES_(cols) ((size_t)14u * ((size_t)(cols) + 15u) + 40u)
+#else
+#define SYMLINE_DETECT_WS_LANES_(cols) ((size_t)0u)
+#endif
 #define SYMLINE_DETECT_WS_CELL_(width) ((size_t)(width) >= 1024u ? 16u : 8u)
 /* The coarser scales (2x downsampled and beyond), when the configuration and
  * the frame have them (detect.c: the number of scales). */
