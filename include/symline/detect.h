@@ -287,7 +287,9 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
  * boundary's mode and the other fields do not raise it; config.field.cell 0,
  * the default, or at least the automatic cell: 8 px, 16 px from 1024 px wide
  * on), on every target; a few hundred bytes more than
- * the query, a little more when only the vertical axis runs. a_distance is
+ * the query, a little more when only the vertical axis runs, and on 64-bit
+ * targets up to 14 B per grid column and 250 B more (the field boundary's
+ * lanes, which a library built for size does not use). a_distance is
  * the A point distance the filter uses: 0 with the contrast filter (the
  * default); with the paper filter its config.a_distance, or the radius when
  * that is 0. levels as in the config (0 = auto). Arguments are evaluated more

@@ -48,10 +48,14 @@ static void check_bound(uint32_t w, uint32_t h, const symline_config *c)
         fail();
     }
     /* Never below; and where the horizontal axis runs (the bound's case), a few hundred
-     * bytes over at most, plus an eighth where the scales differ from its worst case. */
+     * bytes over at most, plus an eighth where the scales differ from its worst case,
+     * plus on 64-bit targets the field boundary's lanes, which a library built for size
+     * does not use. */
     if (bound < exact ||
         (c->axes != SYMLINE_AXES_VERTICAL &&
-         bound - exact > SYMLINE_DETECT_WS_FIXED + 8u * (2u * c->radius + 1u) + exact / 8u)) {
+         bound - exact >
+             SYMLINE_DETECT_WS_FIXED + 8u * (2u * c->radius + 1u) + exact / 8u +
+                 SYMLINE_DETECT_WS_LANES_((size_t)w / SYMLINE_DETECT_WS_CELL_(w) + 1u))) {
         fprintf(stderr, "%ux%u radius %u a %u axes %d levels %u filter %d: exact %zu, bound %zu\n",
                 w, h, c->radius, filter_a(c), (int)c->axes, c->levels, (int)c->filter, exact,
                 bound);
