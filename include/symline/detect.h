@@ -288,7 +288,7 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
  * the default, or at least the automatic cell: 8 px, 16 px from 1024 px wide
  * on), on every target; a few hundred bytes more than
  * the query, a little more when only the vertical axis runs, and on 64-bit
- * targets up to 14 B per grid column and 250 B more (the field boundary's
+ * targets up to 14 B per grid column and 290 B more (the field boundary's
  * lanes, which a library built for size does not use). a_distance is
  * the A point distance the filter uses: 0 with the contrast filter (the
  * default); with the paper filter its config.a_distance, or the radius when
@@ -322,8 +322,9 @@ size_t symline_detect_workspace_size(uint32_t width, uint32_t height, const syml
          ((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u) +                                 \
      SYMLINE_DETECT_WS_LANES_((size_t)(width) / SYMLINE_DETECT_WS_CELL_(width) + 1u))
 #if UINTPTR_MAX > 0xFFFFFFFFu
-/* 14 bytes per grid column, rounded up to 16 columns, and 40 */
-#define SYMLINE_DETECT_WS_LANES_(cols) ((size_t)14u * ((size_t)(cols) + 15u) + 40u)
+/* 14 bytes per grid column, rounded up to 16 columns, and 80 (the cells
+ * read past the band's end, alignment) */
+#define SYMLINE_DETECT_WS_LANES_(cols) ((size_t)14u * ((size_t)(cols) + 15u) + 80u)
 #else
 #define SYMLINE_DETECT_WS_LANES_(cols) ((size_t)0u)
 #endif
