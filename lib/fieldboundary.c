@@ -264,6 +264,21 @@ SL_NOINLINE static void carpet_model(symline_i_fstate *f, symline_field_boundary
     out->carpet_tex = (uint8_t)tb; /* <= 2 * (SL_FIELD_BINS - 1) + 1 */
 }
 
+/* The column scan's barrier: a column's scan ends after more non-carpet
+ * cells in a row than this (gap_pct 0: never). */
+static uint32_t gap_limit(const symline_i_fstate *f)
+{
+    return f->fc->gap_pct == 0u ? 0xFFFFFFFFu : f->nr * f->fc->gap_pct / 100u;
+}
+
+/* The top row of grid row r's cells, pixels (0 for the partial row at the
+ * frame's top). */
+static int32_t row_top(const symline_i_fstate *f, uint32_t r)
+{
+    const int32_t y = (int32_t)f->img->height - (int32_t)((r + 1u) * f->s);
+    return y < 0 ? 0 : y;
+}
+
 #if SL_FOR_SPEED_DEEP
 /* The column scan's limits in the lanes' 16 bits. */
 typedef struct symline_i_flimits {
@@ -330,7 +345,7 @@ SL_NOINLINE static void scan_lanes(const symline_i_fstate *f, symline_i_fcol *co
 {
     const symline_image *img = f->img;
     const symline_field_config *fc = f->fc;
-    const uint32_t nc = f->nc, gm = fc->gap_pct == 0u ? 0x7FFFu : f->nr * fc->gap_pct / 100u;
+    const uint32_t nc = f->nc, gl = gap_limit(f), gm = gl < 0x7FFFu ? gl : 0x7FFFu;
     const uint32_t nl = lane_cols(nc);
     int16_t *const cur = f->lanes, *const best = cur + nl, *const ema = best + nl;
     int16_t *const gap = ema + nl;
@@ -356,14 +371,13 @@ SL_NOINLINE static void scan_lanes(const symline_i_fstate *f, symline_i_fcol *co
         top[c] = (uint16_t)img->height; /* no carpet: the bottom */
     }
     for (r = 0; r < f->nr; r++) {
-        const int32_t y = (int32_t)img->height - (int32_t)((r + 1u) * f->s);
         const uint8_t *cells = f->band + 2u * (size_t)r * nc;
         if (r >= f->nb) {
             /* every cell, those behind a barrier too: the lanes skip none */
             cells = f->band;
             row_cells(f, r, NULL, 0u, f->band);
         }
-        scan_row_lanes(&k, cells, nl, mt, cur, best, ema, gap, top, (uint16_t)(y < 0 ? 0 : y),
+        scan_row_lanes(&k, cells, nl, mt, cur, best, ema, gap, top, (uint16_t)row_top(f, r),
                        r < rim);
     }
     for (c = 0; c < nc; c++) {
@@ -390,7 +404,7 @@ SL_NOINLINE static void scan_columns(const symline_i_fstate *f, symline_i_fcol *
     uint32_t r, c;
     const int32_t miss = -(int32_t)fc->miss_cost;
     const int32_t lt = (int32_t)(fc->local_tol << 4);
-    const uint32_t gmax = fc->gap_pct == 0u ? 0xFFFFFFFFu : f->nr * fc->gap_pct / 100u;
+    const uint32_t gmax = gap_limit(f);
     for (c = 0; c < f->nc; c++) {
         col[c].cur = 0;
         col[c].best = 0;
@@ -399,9 +413,7 @@ SL_NOINLINE static void scan_columns(const symline_i_fstate *f, symline_i_fcol *
         col[c].gap = 0u;
     }
     for (r = 0; r < f->nr; r++) {
-        /* The top row of row r's cells, pixels. */
-        const int32_t y = (int32_t)img->height - (int32_t)((r + 1u) * f->s);
-        const int32_t top = y < 0 ? 0 : y;
+        const int32_t top = row_top(f, r);
         /* The band's cells were kept (to save time, SL_FOR_SPEED); the other
          * rows' are read into the band's first row. */
         const uint8_t *cells = f->band + 2u * (size_t)r * f->nc;
