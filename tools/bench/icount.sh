@@ -5,20 +5,29 @@
 # machine. Reading the frame, allocating and printing JSON cost the same at every
 # repeat count, so one detection is (count(--repeat 11) - count(--repeat 1)) / 10.
 #
-# usage: tools/bench/icount.sh [--build DIR] [--opts "OPTIONS"]... FRAME...
+# usage: tools/bench/icount.sh [--build DIR] [--opts "OPTIONS"]... [--within T]... FRAME...
 #   --build DIR    build directory with bin/symline (default: REPO/build)
 #   --opts "..."   `symline lines` options of one column; repeat for more
 #                  columns (default: one column, the default detection)
+#   --within T     with two frames or more, also count per column the frames
+#                  of at most T instructions per pixel; repeat for more T
 # Prints one row per frame: name, size, then per column the instructions of one
-# detection per pixel (and in millions per frame).
+# detection per pixel (and in millions per frame); with two frames or more,
+# their mean and largest per pixel (and in millions per frame) below.
 set -eu
 
 # shellcheck source=../args.sh
 . "$(dirname "$0")/../args.sh"
 BUILD=$REPO/build
 ARGS_COMMON="build columns"
+WITHIN=
 while [ $# -gt 0 ]; do
     case $1 in
+        --within | --within=*)
+            args_value "$@"
+            case $ARGS_VALUE in '' | .* | *.*.* | *[!0-9.]*) args_error "--within needs a number" ;; esac
+            WITHIN="$WITHIN $ARGS_VALUE"
+            shift "$ARGS_SHIFT" ;;
         --) shift; break ;;
         -*) args_common "$@"; shift "$ARGS_SHIFT" ;;
         *) break ;;
@@ -66,9 +75,33 @@ for frame in "$@"; do
         [ -n "$row" ] || row="| $(basename "$frame") | $(echo "$wh" | awk '{print $1 "x" $2}') |"
         row="$row $(awk -v a="$c1" -v b="$c11" -v px="$px" \
             'BEGIN { d = (b - a) / 10; printf "%.1f (%.2f)", d / px, d / 1e6 }') |"
+        # column, instructions per pixel and per frame, for the summary rows
+        awk -v c="$i" -v a="$c1" -v b="$c11" -v px="$px" \
+            'BEGIN { d = (b - a) / 10; printf "%d %.17g %.17g\n", c, d / px, d }' >> "$TMP/sum"
         i=$((i + 1))
     done
     echo "$row"
 done
+if [ $# -ge 2 ]; then
+    # Means of the exact counts, so they can differ from means of the rounded
+    # rows in the last digit.
+    awk -v ncol="$NOPTS" -v nf="$#" -v within="$WITHIN" '
+        { s[$1] += $2; m[$1] += $3; if ($2 > mx[$1]) { mx[$1] = $2; mm[$1] = $3 }
+          nt = split(within, t, " "); for (k = 1; k <= nt; k++) if ($2 <= t[k] + 0) w[$1, k]++ }
+        END {
+            r1 = "| mean of " nf " frames | |"; r2 = "| largest | |"
+            for (c = 1; c <= ncol; c++) {
+                r1 = r1 sprintf(" %.2f (%.2f) |", s[c] / nf, m[c] / nf / 1e6)
+                r2 = r2 sprintf(" %.1f (%.2f) |", mx[c], mm[c] / 1e6)
+            }
+            print r1; print r2
+            nt = split(within, t, " ")
+            for (k = 1; k <= nt; k++) {
+                r = "| frames within " t[k] " | |"
+                for (c = 1; c <= ncol; c++) r = r sprintf(" %d |", w[c, k] + 0)
+                print r
+            }
+        }' "$TMP/sum"
+fi
 echo
 echo "valgrind --tool=callgrind, $BIN; $(gcc --version | head -n 1)"
