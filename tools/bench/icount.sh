@@ -73,11 +73,10 @@ for frame in "$@"; do
         wh=$(tr ',{}' '\n\n\n' < "$TMP/out.json" | sed -n 's/^ *"\(width\|height\)": *\([0-9]*\).*/\2/p' | head -n 2 | tr '\n' ' ')
         px=$(echo "$wh" | awk '{print $1 * $2}')
         [ -n "$row" ] || row="| $(basename "$frame") | $(echo "$wh" | awk '{print $1 "x" $2}') |"
-        row="$row $(awk -v a="$c1" -v b="$c11" -v px="$px" \
-            'BEGIN { d = (b - a) / 10; printf "%.1f (%.2f)", d / px, d / 1e6 }') |"
-        # column, instructions per pixel and per frame, for the summary rows
-        awk -v c="$i" -v a="$c1" -v b="$c11" -v px="$px" \
-            'BEGIN { d = (b - a) / 10; printf "%d %.17g %.17g\n", c, d / px, d }' >> "$TMP/sum"
+        # the cell, and column, per pixel, per frame exact for the summary rows
+        row="$row $(awk -v a="$c1" -v b="$c11" -v px="$px" -v c="$i" -v sum="$TMP/sum" \
+            'BEGIN { d = (b - a) / 10; printf "%d %.17g %.17g\n", c, d / px, d >> sum
+                     printf "%.1f (%.2f)", d / px, d / 1e6 }') |"
         i=$((i + 1))
     done
     echo "$row"
@@ -86,8 +85,9 @@ if [ $# -ge 2 ]; then
     # Means of the exact counts, so they can differ from means of the rounded
     # rows in the last digit.
     awk -v ncol="$NOPTS" -v nf="$#" -v within="$WITHIN" '
+        BEGIN { nt = split(within, t, " ") }
         { s[$1] += $2; m[$1] += $3; if ($2 > mx[$1]) { mx[$1] = $2; mm[$1] = $3 }
-          nt = split(within, t, " "); for (k = 1; k <= nt; k++) if ($2 <= t[k] + 0) w[$1, k]++ }
+          for (k = 1; k <= nt; k++) if ($2 <= t[k] + 0) w[$1, k]++ }
         END {
             r1 = "| mean of " nf " frames | |"; r2 = "| largest | |"
             for (c = 1; c <= ncol; c++) {
@@ -95,7 +95,6 @@ if [ $# -ge 2 ]; then
                 r2 = r2 sprintf(" %.1f (%.2f) |", mx[c], mm[c] / 1e6)
             }
             print r1; print r2
-            nt = split(within, t, " ")
             for (k = 1; k <= nt; k++) {
                 r = "| frames within " t[k] " | |"
                 for (c = 1; c <= ncol; c++) r = r sprintf(" %d |", w[c, k] + 0)
