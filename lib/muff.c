@@ -148,7 +148,10 @@ symline_status symline_muff_find(uint32_t width, uint32_t height, const symline_
         return SYMLINE_ERR_BUFFER;
     }
     for (k = 0; k < npoints; k++) {
-        if (out->points[k].x >= width || out->points[k].y >= height) {
+        const symline_point *q = &out->points[k];
+        /* offsets beyond -64..63 would put a point's fitted coordinate below 0 */
+        if (q->x >= width || q->y >= height || q->fx < -64 || q->fx > 63 || q->fy < -64 ||
+            q->fy > 63) {
             return SYMLINE_ERR_RANGE;
         }
     }

@@ -94,7 +94,8 @@ size_t symline_muff_workspace_size(uint32_t width, uint32_t height, const symlin
  * overwritten; ws: ws_size bytes, any alignment.
  * Returns SYMLINE_OK, ERR_NULL, ERR_SIZE (also: an accumulator beyond size_t),
  * ERR_CONFIG, ERR_BUFFER (acc or ws
- * too small, npoints > point_cap) or ERR_RANGE (a point outside the frame);
+ * too small, npoints > point_cap) or ERR_RANGE (a point outside the frame, or
+ * a sub-pixel offset fx or fy outside -64..63);
  * on an error *out is unchanged apart from the order of its points.
  */
 symline_status symline_muff_find(uint32_t width, uint32_t height, const symline_muff_config *c,

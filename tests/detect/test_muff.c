@@ -293,6 +293,17 @@ static void test_errors(void **state)
                      SYMLINE_ERR_BUFFER);
     assert_int_equal(symline_muff_find(50, 40, &c, acc, sizeof acc, ws, sizeof ws, 4, &r),
                      SYMLINE_ERR_RANGE);
+    pts[3].x = 0; /* inside the frame, but an offset outside -64..63 */
+    pts[3].fx = -65;
+    assert_int_equal(symline_muff_find(50, 40, &c, acc, sizeof acc, ws, sizeof ws, 4, &r),
+                     SYMLINE_ERR_RANGE);
+    pts[3].fx = -64;
+    pts[3].fy = 64;
+    assert_int_equal(symline_muff_find(50, 40, &c, acc, sizeof acc, ws, sizeof ws, 4, &r),
+                     SYMLINE_ERR_RANGE);
+    pts[3].fy = 63;
+    assert_int_equal(symline_muff_find(50, 40, &c, acc, sizeof acc, ws, sizeof ws, 4, &r),
+                     SYMLINE_OK);
     c.nms_cells = 17;
     assert_int_equal(symline_muff_find(50, 40, &c, acc, sizeof acc, ws, sizeof ws, 3, &r),
                      SYMLINE_ERR_CONFIG);

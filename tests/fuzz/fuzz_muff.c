@@ -4,7 +4,8 @@
  * filter's points (symline_line_points, symline/detect.h). Three entries:
  *  0. symline_muff_find() with fuzzer-chosen frame size, configuration (every
  *     field default, inside, at a limit, past it, or any value), line points
- *     (strokes and stray points, now and then one outside the frame), point
+ *     (strokes and stray points, now and then one outside the frame or with a
+ *     sub-pixel offset beyond -64..63), point
  *     count and capacity, accumulator and workspace sizes (exact, one byte
  *     short, zero, larger), segment capacity and NULL pointers;
  *  1. symline_detect_muff() with a fuzzer-chosen image, detector and finder
@@ -213,7 +214,8 @@ static void entry_find(fz_in *in)
     ws = (nulls & 32u) && (nulls & 0xC0u) == 0xC0u ? NULL : fz_buf(wsn, 0x33);
 
     /* Strokes: n points between two ends (a line the finder should see), and
-     * stray points; now and then one outside the frame (ERR_RANGE). */
+     * stray points; now and then one outside the frame or with an offset
+     * beyond -64..63 (ERR_RANGE). */
     pts = (symline_point *)(void *)o.pts;
     n = 0u;
     while (n < npoints && n < cap) {
@@ -222,10 +224,17 @@ static void entry_find(fz_in *in)
         if (kind == 0u) {
             pts[n].x = (uint16_t)x0;
             pts[n].y = (uint16_t)y0;
-            if (fz_u8(in) == 0xFFu) {
+            const uint32_t odd = fz_u8(in);
+            if (odd == 0xFFu) {
                 pts[n].x = (uint16_t)(w < 65535u ? w : 65535u); /* outside */
             }
-            pts[n].fx = (int8_t)fz_u8(in);
+            /* an offset in -64..63, or now and then beyond it (ERR_RANGE) */
+            {
+                const uint32_t v = fz_u8(in);
+                pts[n].fx = (int8_t)(odd != 0xFEu ? (int32_t)(v % 128u) - 64
+                                     : (v & 1u)   ? 64 + (int32_t)(v >> 2)
+                                                  : -65 - (int32_t)(v >> 2));
+            }
             pts[n].fy = 0;
             n++;
         } else {
@@ -270,7 +279,8 @@ static void entry_find(fz_in *in)
         if (acc != NULL && ws != NULL && o.r.points != NULL && (nulls & 0xC0u) != 0xC0u &&
             !(o.r.segments == NULL && o.r.segment_cap != 0u) && accq > 0u && accn >= accq &&
             wsn >= wsq && npoints <= cap) {
-            /* Everything valid but the points: a point outside the frame. */
+            /* Everything valid but the points: one outside the frame or with
+             * an offset beyond -64..63. */
             if (st != SYMLINE_ERR_RANGE) {
                 abort();
             }
