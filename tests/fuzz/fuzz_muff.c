@@ -224,17 +224,14 @@ static void entry_find(fz_in *in)
         if (kind == 0u) {
             pts[n].x = (uint16_t)x0;
             pts[n].y = (uint16_t)y0;
-            const uint32_t odd = fz_u8(in);
+            const uint32_t odd = fz_u8(in), v = fz_u8(in);
             if (odd == 0xFFu) {
                 pts[n].x = (uint16_t)(w < 65535u ? w : 65535u); /* outside */
             }
             /* an offset in -64..63, or now and then beyond it (ERR_RANGE) */
-            {
-                const uint32_t v = fz_u8(in);
-                pts[n].fx = (int8_t)(odd != 0xFEu ? (int32_t)(v % 128u) - 64
-                                     : (v & 1u)   ? 64 + (int32_t)(v >> 2)
-                                                  : -65 - (int32_t)(v >> 2));
-            }
+            pts[n].fx = (int8_t)(odd != 0xFEu ? (int32_t)(v % 128u) - 64
+                                 : (v & 1u)   ? 64 + (int32_t)(v >> 2)
+                                              : -65 - (int32_t)(v >> 2));
             pts[n].fy = 0;
             n++;
         } else {
